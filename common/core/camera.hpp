@@ -1,0 +1,41 @@
+#pragma once
+// Cameras as pure GLM maths: no input, no GL. The app layer maps mouse and keys onto these calls.
+// Right-handed view space looking down -z; projections map depth to GL's [-1,1] clip range.
+#include <glm/glm.hpp>
+
+namespace shadowlab {
+
+struct OrbitCamera {
+  glm::vec3 target{0.0f};
+  float yaw = 0.6f;        // radians around +y, 0 looks along -z
+  float pitch = 0.45f;     // radians above the horizon, clamped to (-pi/2, pi/2)
+  float distance = 12.0f;  // from target, clamped to [minDistance, maxDistance]
+  float fovY = 0.873f;     // radians (50 degrees)
+  float nearZ = 0.1f, farZ = 200.0f;
+  float minDistance = 0.2f, maxDistance = 1000.0f;
+
+  glm::vec3 position() const;
+  glm::vec3 forward() const;  // unit, from position toward target
+  glm::mat4 view() const;
+  glm::mat4 projection(float aspect) const;
+  void orbit(float dYaw, float dPitch);
+  void zoom(float factor);         // distance *= factor
+  void pan(const glm::vec2& delta); // moves target in the view plane, scaled by distance
+};
+
+struct FlyCamera {
+  glm::vec3 position{0.0f, 2.0f, 8.0f};
+  float yaw = 0.0f;    // radians around +y, 0 looks along -z
+  float pitch = 0.0f;  // clamped to (-pi/2, pi/2)
+  float fovY = 0.873f;
+  float nearZ = 0.1f, farZ = 200.0f;
+
+  glm::vec3 forward() const;
+  glm::vec3 right() const;
+  glm::mat4 view() const;
+  glm::mat4 projection(float aspect) const;
+  void look(float dYaw, float dPitch);
+  void move(const glm::vec3& local);  // x right, y up (world), z forward
+};
+
+}  // namespace shadowlab
