@@ -1,0 +1,126 @@
+#include "core/cli.hpp"
+
+#include <charconv>
+#include <cstdlib>
+
+namespace shadowlab {
+namespace {
+
+struct Flag {
+  const char* name;
+  const char* arg;  // nullptr: a switch
+  const char* help;
+};
+
+constexpr Flag kFlags[] = {
+    {"--headless", nullptr, "render offscreen through EGL, no window (tests, benchmarks, slides)"},
+    {"--size", "WxH", "framebuffer size, default 1280x720"},
+    {"--frames", "N", "render N frames then exit (headless default 3)"},
+    {"--screenshot", "FILE", "write the last frame as PNG"},
+    {"--set", "NAME=VALUE", "set a parameter (repeatable; after --preset)"},
+    {"--preset", "NAME", "start from a named preset (see --list-presets)"},
+    {"--bench", "FILE", "write per-pass GPU and CPU ms of every frame as CSV"},
+    {"--record", "FILE", "record the camera and light path while you move (windowed)"},
+    {"--replay", "FILE", "replay a recorded camera and light path over the frames"},
+    {"--ui-scale", "S", "UI scale for projectors, 0.5 to 4 (Ctrl +/- at run time)"},
+    {"--show-ui", nullptr, "headless: draw the UI into the screenshot"},
+    {"--fullscreen", nullptr, "start fullscreen (F11 toggles)"},
+    {"--strict-gl", nullptr, "fail (exit 3) on any OpenGL error (tests set it)"},
+    {"--list-params", nullptr, "list every parameter with its range, default and purpose"},
+    {"--list-presets", nullptr, "list the presets, one per line"},
+    {"--info", nullptr, "print the lesson's number, title, summary and difficulty as JSON"},
+    {"--help", nullptr, "this text"},
+};
+
+std::string flagList() {
+  std::string s;
+  for (const auto& f : kFlags) s += (s.empty() ? "" : ", ") + std::string(f.name);
+  return s;
+}
+
+int toInt(const std::string& flag, const std::string& v, int lo, int hi) {
+  int out = 0;
+  auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+  if (ec != std::errc() || p != v.data() + v.size() || out < lo || out > hi)
+    throw CliError(flag + ": '" + v + "' is not a whole number in [" + std::to_string(lo) + ", " +
+                   std::to_string(hi) + "]");
+  return out;
+}
+
+}  // namespace
+
+CommandLine parseCommandLine(const std::vector<std::string>& args) {
+  CommandLine cl;
+  bool framesGiven = false;
+  if (const char* s = std::getenv("SHADOWLAB_STRICT_GL")) cl.strictGl = std::string(s) == "1";
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    std::string flag = args[i], value;
+    bool hasInlineValue = false;
+    if (const auto eq = flag.find('='); flag.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = flag.substr(eq + 1);
+      flag = flag.substr(0, eq);
+      hasInlineValue = true;
+    }
+    const Flag* def = nullptr;
+    for (const auto& f : kFlags)
+      if (flag == f.name) def = &f;
+    if (!def) throw CliError("unknown flag '" + args[i] + "'; valid: " + flagList());
+    if (def->arg && !hasInlineValue) {
+      if (i + 1 >= args.size()) throw CliError(flag + " needs a value: " + flag + " " + def->arg);
+      value = args[++i];
+    } else if (!def->arg && hasInlineValue) {
+      throw CliError(flag + " takes no value");
+    }
+    if (flag == "--headless") cl.headless = true;
+    else if (flag == "--size") {
+      const auto x = value.find('x');
+      if (x == std::string::npos) throw CliError("--size: '" + value + "' is not WxH, e.g. 1280x720");
+      cl.width = toInt("--size", value.substr(0, x), 16, 16384);
+      cl.height = toInt("--size", value.substr(x + 1), 16, 16384);
+    } else if (flag == "--frames") {
+      cl.frames = toInt("--frames", value, 1, 100000000);
+      framesGiven = true;
+    } else if (flag == "--screenshot") cl.screenshot = value;
+    else if (flag == "--set") {
+      if (value.find('=') == std::string::npos || value.front() == '=')
+        throw CliError("--set: '" + value + "' is not NAME=VALUE");
+      cl.sets.push_back(value);
+    } else if (flag == "--preset") cl.preset = value;
+    else if (flag == "--bench") cl.bench = value;
+    else if (flag == "--record") cl.record = value;
+    else if (flag == "--replay") cl.replay = value;
+    else if (flag == "--ui-scale") {
+      char* end = nullptr;
+      const float s = std::strtof(value.c_str(), &end);
+      if (end == value.c_str() || *end != '\0' || !(s >= 0.5f && s <= 4.0f))
+        throw CliError("--ui-scale: '" + value + "' is not a number in [0.5, 4]");
+      cl.uiScale = s;
+    } else if (flag == "--show-ui") cl.showUi = true;
+    else if (flag == "--fullscreen") cl.fullscreen = true;
+    else if (flag == "--strict-gl") cl.strictGl = true;
+    else if (flag == "--list-params") cl.listParams = true;
+    else if (flag == "--list-presets") cl.listPresets = true;
+    else if (flag == "--info") cl.info = true;
+    else if (flag == "--help") cl.help = true;
+  }
+  if (cl.headless && !framesGiven) cl.frames = 3;
+  if (!cl.record.empty() && !cl.replay.empty()) throw CliError("--record and --replay exclude each other");
+  return cl;
+}
+
+CommandLine parseCommandLine(int argc, char** argv) {
+  return parseCommandLine(std::vector<std::string>(argv, argv + argc));
+}
+
+std::string commandLineHelp(const std::string& program) {
+  std::string s = "usage: " + program + " [flags]\n";
+  for (const auto& f : kFlags) {
+    std::string left = std::string("  ") + f.name + (f.arg ? std::string(" ") + f.arg : "");
+    if (left.size() < 26) left.resize(26, ' ');
+    s += left + " " + f.help + "\n";
+  }
+  s += "Keys (windowed): F1 help, F11 fullscreen, F12 screenshot, Ctrl +/- UI scale, R reload shaders.\n";
+  return s;
+}
+
+}  // namespace shadowlab

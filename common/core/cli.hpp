@@ -1,0 +1,39 @@
+#pragma once
+// The command line every lesson shares. Parsing is GL-free so it is unit-tested; the app layer
+// (common/app) acts on the result. Any bad flag, parameter, value or preset is a CliError whose
+// message is one line naming it and the valid choices; lessons exit with code 2 on it.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+struct CliError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct CommandLine {
+  bool headless = false;
+  int width = 1280, height = 720;
+  int frames = -1;                 // -1: run until closed (windowed); headless default 3
+  std::string screenshot;          // write the last frame here (PNG)
+  std::vector<std::string> sets;   // "name=value", applied after the preset, in order
+  std::string preset;
+  std::string bench;               // per-pass GPU and CPU ms over the frames, CSV
+  std::string record;              // record the camera/light path to this file (windowed)
+  std::string replay;              // replay a recorded path over the frames
+  float uiScale = 0;               // 0: automatic (from the monitor's content scale)
+  bool showUi = false;             // headless: draw the UI into the screenshot too
+  bool fullscreen = false;
+  bool listParams = false, listPresets = false, help = false, info = false;
+  bool strictGl = false;           // any GL error fails the run (tests); also SHADOWLAB_STRICT_GL=1
+};
+
+// argv[0] is skipped. Throws CliError.
+CommandLine parseCommandLine(const std::vector<std::string>& args);
+CommandLine parseCommandLine(int argc, char** argv);
+// The --help text (flags, with what each does).
+std::string commandLineHelp(const std::string& program);
+
+}  // namespace shadowlab

@@ -1,0 +1,338 @@
+#include "core/params.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace shadowlab {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return s.substr(b, e - b + 1);
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+std::string formatFloat(float v) {
+  std::ostringstream os;
+  os << std::setprecision(6) << v;
+  return os.str();
+}
+
+bool parseFloat(const std::string& text, float& out) {
+  const std::string t = trim(text);
+  if (t.empty()) return false;
+  const char* b = t.data();
+  const char* e = b + t.size();
+  auto [ptr, ec] = std::from_chars(b, e, out);
+  return ec == std::errc() && ptr == e && std::isfinite(out);
+}
+
+bool parseInt(const std::string& text, int& out) {
+  const std::string t = trim(text);
+  if (t.empty()) return false;
+  auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
+  return ec == std::errc() && ptr == t.data() + t.size();
+}
+
+std::string kindName(const Param& p) {
+  switch (p.kind) {
+    case ParamKind::Float: return "float";
+    case ParamKind::Int: return "int";
+    case ParamKind::Bool: return "bool";
+    case ParamKind::Choice: return "choice";
+    case ParamKind::Vec3: return "vec3";
+    case ParamKind::Color: return "color";
+  }
+  return "?";
+}
+
+std::string rangeText(const Param& p) {
+  switch (p.kind) {
+    case ParamKind::Float:
+    case ParamKind::Vec3:
+    case ParamKind::Color: return "[" + formatFloat(p.min) + ", " + formatFloat(p.max) + "]";
+    case ParamKind::Int:
+      return "[" + std::to_string(int(p.min)) + ", " + std::to_string(int(p.max)) + "]";
+    case ParamKind::Bool: return "true|false";
+    case ParamKind::Choice: {
+      std::string s;
+      for (const auto& c : p.choices) s += (s.empty() ? "" : "|") + c;
+      return s;
+    }
+  }
+  return "";
+}
+
+bool validName(const std::string& n) {
+  if (n.empty()) return false;
+  return std::all_of(n.begin(), n.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.';
+  });
+}
+
+}  // namespace
+
+Param& ParamRegistry::insert(Param p) {
+  if (!validName(p.name)) throw ParamError("parameter name '" + p.name + "' must be [a-z0-9_.]+");
+  if (find(p.name)) throw ParamError("parameter '" + p.name + "' is registered twice");
+  params_.push_back(std::move(p));
+  params_.back().defaultValue = get(params_.back().name);
+  return params_.back();
+}
+
+Param& ParamRegistry::add(const std::string& name, float* v, float min, float max, const std::string& why) {
+  return insert({name, why, ParamKind::Float, v, min, max});
+}
+Param& ParamRegistry::add(const std::string& name, int* v, int min, int max, const std::string& why) {
+  return insert({name, why, ParamKind::Int, v, float(min), float(max)});
+}
+Param& ParamRegistry::add(const std::string& name, bool* v, const std::string& why) {
+  return insert({name, why, ParamKind::Bool, v, 0, 1});
+}
+Param& ParamRegistry::add(const std::string& name, glm::vec3* v, float min, float max, const std::string& why) {
+  return insert({name, why, ParamKind::Vec3, v, min, max});
+}
+Param& ParamRegistry::addColor(const std::string& name, glm::vec3* v, const std::string& why) {
+  return insert({name, why, ParamKind::Color, v, 0, 1});
+}
+Param& ParamRegistry::addChoiceRaw(const std::string& name, int* v, std::vector<std::string> choices,
+                                   const std::string& why) {
+  if (choices.empty()) throw ParamError("parameter '" + name + "' has no choices");
+  Param p{name, why, ParamKind::Choice, v, 0, float(choices.size() - 1)};
+  p.choices = std::move(choices);
+  return insert(std::move(p));
+}
+
+const Param* ParamRegistry::find(const std::string& name) const {
+  for (const auto& p : params_)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+std::string ParamRegistry::names() const {
+  std::vector<std::string> n;
+  for (const auto& p : params_) n.push_back(p.name);
+  return join(n);
+}
+
+std::string ParamRegistry::get(const std::string& name) const {
+  const Param* p = find(name);
+  if (!p) throw ParamError("unknown parameter '" + name + "'; valid: " + names());
+  switch (p->kind) {
+    case ParamKind::Float: return formatFloat(*static_cast<float*>(p->target));
+    case ParamKind::Int: return std::to_string(*static_cast<int*>(p->target));
+    case ParamKind::Bool: return *static_cast<bool*>(p->target) ? "true" : "false";
+    case ParamKind::Choice: {
+      const int i = *static_cast<int*>(p->target);
+      return (i >= 0 && i < int(p->choices.size())) ? p->choices[i] : std::to_string(i);
+    }
+    case ParamKind::Vec3:
+    case ParamKind::Color: {
+      const glm::vec3 v = *static_cast<glm::vec3*>(p->target);
+      return formatFloat(v.x) + " " + formatFloat(v.y) + " " + formatFloat(v.z);
+    }
+  }
+  return "";
+}
+
+void ParamRegistry::set(const std::string& name, const std::string& rawValue) {
+  const Param* p = find(name);
+  if (!p) throw ParamError("unknown parameter '" + name + "'; valid: " + names());
+  const std::string value = trim(rawValue);
+  auto bad = [&](const std::string& expected) {
+    return ParamError("bad value '" + value + "' for " + name + " (" + kindName(*p) + "); valid: " + expected);
+  };
+  switch (p->kind) {
+    case ParamKind::Float: {
+      float f;
+      if (!parseFloat(value, f) || f < p->min || f > p->max) throw bad(rangeText(*p));
+      *static_cast<float*>(p->target) = f;
+      break;
+    }
+    case ParamKind::Int: {
+      int i;
+      if (!parseInt(value, i) || i < int(p->min) || i > int(p->max)) throw bad(rangeText(*p));
+      *static_cast<int*>(p->target) = i;
+      break;
+    }
+    case ParamKind::Bool: {
+      bool b;
+      if (value == "true" || value == "1" || value == "on") b = true;
+      else if (value == "false" || value == "0" || value == "off") b = false;
+      else throw bad("true, false, 1, 0, on, off");
+      *static_cast<bool*>(p->target) = b;
+      break;
+    }
+    case ParamKind::Choice: {
+      const auto it = std::find(p->choices.begin(), p->choices.end(), value);
+      if (it == p->choices.end()) throw bad(join(p->choices));
+      *static_cast<int*>(p->target) = int(it - p->choices.begin());
+      break;
+    }
+    case ParamKind::Vec3:
+    case ParamKind::Color: {
+      std::istringstream is(value);
+      std::string a, b, c, extra;
+      is >> a >> b >> c;
+      glm::vec3 v;
+      const bool ok = parseFloat(a, v.x) && parseFloat(b, v.y) && parseFloat(c, v.z) && !(is >> extra);
+      if (!ok || glm::any(glm::lessThan(v, glm::vec3(p->min))) || glm::any(glm::greaterThan(v, glm::vec3(p->max))))
+        throw bad("three numbers in " + rangeText(*p) + ", e.g. '0.5 1 0'");
+      *static_cast<glm::vec3*>(p->target) = v;
+      break;
+    }
+  }
+  ++revision_;
+}
+
+void ParamRegistry::assign(const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos)
+    throw ParamError("'" + assignment + "' is not name=value; parameters: " + names());
+  set(trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
+}
+
+void ParamRegistry::resetDefaults() {
+  for (const auto& p : params_) set(p.name, p.defaultValue);
+}
+
+std::map<std::string, std::string> ParamRegistry::snapshot() const {
+  std::map<std::string, std::string> out;
+  for (const auto& p : params_) out[p.name] = get(p.name);
+  return out;
+}
+
+std::string ParamRegistry::describe() const {
+  std::ostringstream os;
+  for (const auto& p : params_) {
+    os << std::left << std::setw(26) << p.name << ' ' << std::setw(7) << kindName(p) << ' '
+       << std::setw(24) << rangeText(p) << " default " << std::setw(10) << p.defaultValue << "  "
+       << p.why << '\n';
+  }
+  return os.str();
+}
+
+// ---- presets ------------------------------------------------------------------------------------
+
+PresetFile PresetFile::load(const std::string& path) {
+  PresetFile file;
+  file.path = path;
+  std::ifstream in(path);
+  if (!in) return file;
+  std::string line;
+  int lineNo = 0;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue;
+    auto where = [&] { return path + ":" + std::to_string(lineNo) + ": "; };
+    if (t.front() == '[') {
+      if (t.back() != ']') throw ParamError(where() + "preset header '" + t + "' must be [name]");
+      const std::string name = trim(t.substr(1, t.size() - 2));
+      if (name.empty() || !std::all_of(name.begin(), name.end(), [](char c) {
+            return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+          }))
+        throw ParamError(where() + "preset name '" + name + "' must be [a-z0-9_]+");
+      if (file.find(name)) throw ParamError(where() + "preset '" + name + "' is defined twice");
+      file.presets.push_back({name, {}, lineNo});
+      continue;
+    }
+    const auto eq = t.find('=');
+    if (eq == std::string::npos) throw ParamError(where() + "expected 'name = value' or [preset], got '" + t + "'");
+    if (file.presets.empty()) throw ParamError(where() + "'" + t + "' comes before any [preset] header");
+    file.presets.back().values.push_back({trim(t.substr(0, eq)), trim(t.substr(eq + 1))});
+  }
+  return file;
+}
+
+void PresetFile::validate(const ParamRegistry& registry) const {
+  // Apply each preset to a scratch copy of the current values, then restore them.
+  auto& reg = const_cast<ParamRegistry&>(registry);
+  const auto saved = registry.snapshot();
+  std::string error;
+  for (const auto& preset : presets) {
+    // Line numbers: the header plus the position among its values (comments may shift them; the
+    // header line always points at the right preset).
+    int offset = 0;
+    for (const auto& [name, value] : preset.values) {
+      ++offset;
+      try {
+        reg.set(name, value);
+      } catch (const ParamError& e) {
+        error = path + ":" + std::to_string(preset.line + offset) + ": in preset '" + preset.name + "': " + e.what();
+        break;
+      }
+    }
+    if (!error.empty()) break;
+  }
+  for (const auto& [name, value] : saved) reg.set(name, value);
+  if (!error.empty()) throw ParamError(error);
+}
+
+const Preset* PresetFile::find(const std::string& name) const {
+  for (const auto& p : presets)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+std::vector<std::string> PresetFile::names() const {
+  std::vector<std::string> out;
+  for (const auto& p : presets) out.push_back(p.name);
+  return out;
+}
+
+void PresetFile::apply(const std::string& name, ParamRegistry& registry) const {
+  const Preset* preset = find(name);
+  if (!preset) {
+    throw ParamError("unknown preset '" + name + "'" + (path.empty() ? "" : " in " + path) +
+                     "; valid: " + (presets.empty() ? std::string("(none)") : join(names())));
+  }
+  registry.resetDefaults();
+  for (const auto& [param, value] : preset->values) {
+    try {
+      registry.set(param, value);
+    } catch (const ParamError& e) {
+      throw ParamError(path + ": preset '" + name + "': " + e.what());
+    }
+  }
+}
+
+void PresetFile::capture(const std::string& name, const ParamRegistry& registry) {
+  Preset p{name, {}, 0};
+  for (const auto& param : registry.params()) {
+    const std::string v = registry.get(param.name);
+    if (v != param.defaultValue) p.values.push_back({param.name, v});
+  }
+  for (auto& existing : presets) {
+    if (existing.name == name) {
+      p.line = existing.line;
+      existing = std::move(p);
+      return;
+    }
+  }
+  presets.push_back(std::move(p));
+}
+
+void PresetFile::save(const std::string& target) const {
+  std::ofstream out(target);
+  if (!out) throw ParamError("cannot write presets to " + target);
+  out << "# Presets: named snapshots of camera, light and parameters. Values not listed keep their\n"
+         "# defaults. Saved from the lesson's UI; edit freely ([name], then name = value lines).\n";
+  for (const auto& p : presets) {
+    out << "\n[" << p.name << "]\n";
+    for (const auto& [k, v] : p.values) out << k << " = " << v << '\n';
+  }
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,60 @@
+#include <doctest/doctest.h>
+
+#include "core/cli.hpp"
+
+using namespace shadowlab;
+
+static CommandLine parse(std::vector<std::string> args) {
+  args.insert(args.begin(), "lesson");
+  return parseCommandLine(args);
+}
+static std::string errorOf(std::vector<std::string> args) {
+  try {
+    parse(std::move(args));
+  } catch (const CliError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST_CASE("cli: the shared flags parse, with both value styles") {
+  const auto cl = parse({"--headless", "--size", "640x360", "--frames=5", "--screenshot", "a.png",
+                         "--set", "ambient=0.2", "--set=mode=depth", "--preset", "acne", "--bench", "b.csv",
+                         "--ui-scale", "2"});
+  CHECK(cl.headless);
+  CHECK(cl.width == 640);
+  CHECK(cl.height == 360);
+  CHECK(cl.frames == 5);
+  CHECK(cl.screenshot == "a.png");
+  CHECK(cl.sets == std::vector<std::string>{"ambient=0.2", "mode=depth"});
+  CHECK(cl.preset == "acne");
+  CHECK(cl.bench == "b.csv");
+  CHECK(cl.uiScale == 2.0f);
+}
+
+TEST_CASE("cli: headless defaults to a few frames, windowed runs until closed") {
+  CHECK(parse({"--headless"}).frames == 3);
+  CHECK(parse({}).frames == -1);
+  CHECK(parse({}).width == 1280);
+}
+
+TEST_CASE("cli: bad input is one line naming it and the valid choices") {
+  const std::string unknown = errorOf({"--headles"});
+  CHECK(unknown.rfind("unknown flag '--headles'; valid: --headless, --size", 0) == 0);
+  CHECK(unknown.find('\n') == std::string::npos);
+  CHECK(errorOf({"--size", "640"}) == "--size: '640' is not WxH, e.g. 1280x720");
+  CHECK(errorOf({"--size", "0x10"}) == "--size: '0' is not a whole number in [16, 16384]");
+  CHECK(errorOf({"--frames", "-2"}) == "--frames: '-2' is not a whole number in [1, 100000000]");
+  CHECK(errorOf({"--frames"}) == "--frames needs a value: --frames N");
+  CHECK(errorOf({"--set", "ambient"}) == "--set: 'ambient' is not NAME=VALUE");
+  CHECK(errorOf({"--ui-scale", "9"}) == "--ui-scale: '9' is not a number in [0.5, 4]");
+  CHECK(errorOf({"--headless=1"}) == "--headless takes no value");
+  CHECK(errorOf({"--record", "a", "--replay", "b"}) == "--record and --replay exclude each other");
+}
+
+TEST_CASE("cli: help lists every flag") {
+  const std::string help = commandLineHelp("lesson_01");
+  for (const char* flag : {"--headless", "--size", "--frames", "--screenshot", "--set", "--preset", "--bench",
+                           "--list-params", "--list-presets", "--help"})
+    CHECK(help.find(flag) != std::string::npos);
+}
