@@ -1,0 +1,149 @@
+// Deck source -> slides -> HTML. A deck is Markdown: front matter between two `---` lines at the
+// top, then slides separated by lines that are exactly `---` (outside fenced code). Formulas in
+// $...$ and $$...$$ become KaTeX HTML here, at build time, so the browser needs no script for them.
+// Figures `![caption](lesson:NN_name?preset=P)` are collected here and rendered by figures.mjs.
+import { katex, Marked } from './deps.mjs';
+
+export class DeckError extends Error {
+  constructor(file, line, message) {
+    super(`${file}${line ? `:${line}` : ''}: ${message}`);
+  }
+}
+
+const SEPARATOR = /^---[ \t]*$/;
+const FENCE = /^ {0,3}(`{3,}|~{3,})/;
+
+// Front matter: `key: value` lines. Required keys: lesson (NN_name) and title.
+export function parseDeck(source, file) {
+  const lines = source.replace(/\r\n?/g, '\n').split('\n');
+  if (!SEPARATOR.test(lines[0] ?? '')) {
+    throw new DeckError(file, 1, 'a deck starts with front matter: ---, lesson: NN_name, title: ..., ---');
+  }
+  const meta = {};
+  let i = 1;
+  for (; i < lines.length && !SEPARATOR.test(lines[i]); i++) {
+    if (!lines[i].trim() || lines[i].trimStart().startsWith('#')) continue;
+    const m = /^([A-Za-z_][\w-]*)\s*:\s*(.*?)\s*$/.exec(lines[i]);
+    if (!m) throw new DeckError(file, i + 1, `front matter line is not "key: value": ${lines[i]}`);
+    meta[m[1]] = m[2].replace(/^(["'])(.*)\1$/, '$2');
+  }
+  if (i >= lines.length) throw new DeckError(file, 1, 'front matter is not closed by a --- line');
+  for (const key of ['lesson', 'title']) {
+    if (!meta[key]) throw new DeckError(file, 1, `front matter needs "${key}:"`);
+  }
+  if (!/^\d\d_[a-z0-9_]+$/.test(meta.lesson)) {
+    throw new DeckError(file, 1, `lesson "${meta.lesson}" is not a lesson folder name like 01_lighting`);
+  }
+
+  // Slides: split on separator lines that are not inside fenced code.
+  const slides = [];
+  let current = [], startLine = i + 2, fence = null;
+  for (i = i + 1; i < lines.length; i++) {
+    const line = lines[i];
+    const f = FENCE.exec(line);
+    if (f) {
+      if (!fence) fence = f[1][0].repeat(f[1].length);
+      else if (line.trim().startsWith(fence)) fence = null;
+    }
+    if (!fence && SEPARATOR.test(line)) {
+      slides.push({ markdown: current.join('\n'), line: startLine });
+      current = [];
+      startLine = i + 2;
+    } else {
+      current.push(line);
+    }
+  }
+  slides.push({ markdown: current.join('\n'), line: startLine });
+  if (fence) throw new DeckError(file, 0, `unclosed code fence ${fence}`);
+  slides.forEach((s, n) => {
+    if (!s.markdown.trim()) throw new DeckError(file, s.line, `slide ${n + 1} is empty (two --- in a row, or a --- at the end?)`);
+    // Speaker notes: everything after a line starting with "Note:" (reveal.js convention).
+    const notes = /^Notes?:[ \t]*/im.exec(s.markdown);
+    if (notes) {
+      s.notes = s.markdown.slice(notes.index + notes[0].length);
+      s.markdown = s.markdown.slice(0, notes.index);
+    }
+  });
+  return { meta, slides };
+}
+
+export function escapeHtml(s) {
+  return String(s).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]);
+}
+
+// One KaTeX call for every formula. throwOnError:false leaves a .katex-error node in the page
+// (which the page check fails on); the builder also reports it so the author sees it at once.
+function renderMath(tex, displayMode, ctx) {
+  const html = katex.renderToString(tex, { displayMode, throwOnError: false, output: 'htmlAndMathml', strict: 'ignore' });
+  if (html.includes('katex-error')) ctx.mathErrors.push(tex);
+  return html;
+}
+
+// Markdown with math and figures. ctx collects what the slide needs from outside:
+//   ctx.figures   image tokens whose href starts with "lesson:" (href is rewritten later)
+//   ctx.images    other local images to copy next to the deck
+//   ctx.mathErrors formulas KaTeX could not parse
+export function makeMarkdown() {
+  const md = new Marked({ gfm: true, breaks: false });
+  let ctx = null;
+  md.use({
+    extensions: [
+      {
+        name: 'blockMath',
+        level: 'block',
+        start(src) { const m = /^ {0,3}\$\$/m.exec(src); return m ? m.index : undefined; },
+        tokenizer(src) {
+          const m = /^ {0,3}\$\$([\s\S]+?)\$\$[ \t]*(?:\n+|$)/.exec(src);
+          if (m) return { type: 'blockMath', raw: m[0], text: m[1].trim() };
+          return undefined;
+        },
+        renderer(token) { return `<div class="math-display">${renderMath(token.text, true, ctx)}</div>\n`; },
+      },
+      {
+        name: 'inlineMath',
+        level: 'inline',
+        start(src) { const i = src.indexOf('$'); return i < 0 ? undefined : i; },
+        tokenizer(src) {
+          let m = /^\$\$([\s\S]+?)\$\$/.exec(src);
+          if (m) return { type: 'inlineMath', raw: m[0], text: m[1].trim(), display: true };
+          m = /^\$(?![\s$])((?:\\.|[^\\$\n])+?)(?<!\s)\$(?!\d)/.exec(src);
+          if (m) return { type: 'inlineMath', raw: m[0], text: m[1], display: false };
+          return undefined;
+        },
+        renderer(token) { return renderMath(token.text, token.display, ctx); },
+      },
+    ],
+    renderer: {
+      // A paragraph made only of images is a figure row: one image = one figure, two or more =
+      // side by side at equal width (acne | biased).
+      paragraph(token) {
+        const items = token.tokens.filter((t) => !(t.type === 'text' && !t.text.trim()) && t.type !== 'br');
+        if (items.length && items.every((t) => t.type === 'image')) {
+          const figs = items.map((t) => {
+            const caption = t.tokens?.length ? this.parser.parseInline(t.tokens) : escapeHtml(t.text);
+            return `<figure><img src="${escapeHtml(t.href)}" alt="${escapeHtml(t.text)}">` +
+              (t.text.trim() ? `<figcaption>${caption}</figcaption>` : '') + '</figure>';
+          });
+          return `<div class="figrow figrow-${figs.length}">${figs.join('')}</div>\n`;
+        }
+        return `<p>${this.parser.parseInline(token.tokens)}</p>\n`;
+      },
+      image(token) {
+        return `<img src="${escapeHtml(token.href)}" alt="${escapeHtml(token.text)}">`;
+      },
+    },
+  });
+  return {
+    // Lex a slide; returns tokens plus the image tokens the caller must resolve before render().
+    lex(markdown) {
+      const tokens = md.lexer(markdown);
+      const images = [];
+      md.walkTokens(tokens, (t) => { if (t.type === 'image') images.push(t); });
+      return { tokens, images };
+    },
+    render(tokens, slideCtx) {
+      ctx = slideCtx;
+      try { return md.parser(tokens); } finally { ctx = null; }
+    },
+  };
+}
