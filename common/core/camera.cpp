@@ -1,0 +1,78 @@
+#include "core/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace shadowlab {
+
+namespace {
+// Just short of the poles: at exactly +-pi/2 the forward vector is parallel to world up and
+// lookAt has no defined right vector.
+constexpr float kPitchLimit = 1.5707963f - 1e-3f;
+
+float clampPitch(float pitch) { return std::clamp(pitch, -kPitchLimit, kPitchLimit); }
+
+// Unit vector for a yaw around +y (0 looks along -z) and a pitch above the horizon.
+glm::vec3 direction(float yaw, float pitch) {
+  const float cp = std::cos(pitch);
+  return {-std::sin(yaw) * cp, std::sin(pitch), -std::cos(yaw) * cp};
+}
+
+glm::mat4 perspective(float fovY, float aspect, float nearZ, float farZ) {
+  // A zero-height window reports aspect 0; glm would divide by it.
+  return glm::perspective(fovY, std::max(aspect, 1e-6f), nearZ, farZ);
+}
+}  // namespace
+
+// ---- OrbitCamera: the eye sits on a sphere around the target, pitch lifts it above the horizon.
+glm::vec3 OrbitCamera::forward() const { return direction(yaw, -clampPitch(pitch)); }
+
+glm::vec3 OrbitCamera::position() const {
+  return target - std::clamp(distance, minDistance, maxDistance) * forward();
+}
+
+glm::mat4 OrbitCamera::view() const { return glm::lookAt(position(), target, glm::vec3(0, 1, 0)); }
+
+glm::mat4 OrbitCamera::projection(float aspect) const { return perspective(fovY, aspect, nearZ, farZ); }
+
+void OrbitCamera::orbit(float dYaw, float dPitch) {
+  yaw = std::remainder(yaw + dYaw, 6.2831853f);  // keeps yaw small so float precision holds
+  pitch = clampPitch(pitch + dPitch);
+}
+
+void OrbitCamera::zoom(float factor) {
+  if (!(factor > 0.0f)) return;  // a zero or negative factor has no meaning for a distance
+  distance = std::clamp(distance * factor, minDistance, maxDistance);
+}
+
+void OrbitCamera::pan(const glm::vec2& delta) {
+  const glm::vec3 f = forward();
+  const glm::vec3 right = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0)));
+  const glm::vec3 up = glm::cross(right, f);
+  // Scaling by distance makes the same mouse motion move the scene by the same screen fraction.
+  target += (right * delta.x + up * delta.y) * distance;
+}
+
+// ---- FlyCamera: first-person, pitch looks up.
+glm::vec3 FlyCamera::forward() const { return direction(yaw, clampPitch(pitch)); }
+
+glm::vec3 FlyCamera::right() const { return {std::cos(yaw), 0.0f, -std::sin(yaw)}; }
+
+glm::mat4 FlyCamera::view() const {
+  return glm::lookAt(position, position + forward(), glm::vec3(0, 1, 0));
+}
+
+glm::mat4 FlyCamera::projection(float aspect) const { return perspective(fovY, aspect, nearZ, farZ); }
+
+void FlyCamera::look(float dYaw, float dPitch) {
+  yaw = std::remainder(yaw + dYaw, 6.2831853f);
+  pitch = clampPitch(pitch + dPitch);
+}
+
+void FlyCamera::move(const glm::vec3& local) {
+  position += right() * local.x + glm::vec3(0, 1, 0) * local.y + forward() * local.z;
+}
+
+}  // namespace shadowlab
