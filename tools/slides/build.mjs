@@ -173,7 +173,8 @@ async function buildDeck(file, opts, figures, usedFigures) {
     let html = md.render(slide.tokens, ctx);
     if (slide.notes?.trim()) html += `<aside class="notes">${md.render(md.lex(slide.notes).tokens, ctx)}</aside>\n`;
     for (const tex of ctx.mathErrors) mathErrors.push(`${rel}:${slide.line} (slide ${n + 1}): KaTeX cannot parse: ${tex}`);
-    return `<section id="slide-${n + 1}" data-source-line="${slide.line}">\n${html}</section>`;
+    const cls = n === 0 ? ' class="title-slide"' : '';
+    return `<section id="slide-${n + 1}"${cls} data-source-line="${slide.line}">\n${html}</section>`;
   });
   const htmlFile = path.join(opts.out, `${deckName}.html`);
   fs.writeFileSync(htmlFile, deckHtml(deck, sections));
@@ -228,6 +229,9 @@ async function buildPdfs(decks, opts) {
       d.pdfFile = path.join(opts.out, `${d.name}.pdf`);
       await page.pdf({ path: d.pdfFile, preferCSSPageSize: true, printBackground: true });
       await page.close();
+      // One page a slide: more means a slide overflowed onto a second page (content too long).
+      const pages = (fs.readFileSync(d.pdfFile, 'latin1').match(/\/Type\s*\/Page\b(?!s)/g) ?? []).length;
+      if (pages !== d.slides) throw new Error(`${d.file}: the PDF has ${pages} pages for ${d.slides} slides (a slide too long for one page?)`);
     }
   } finally {
     await browser.close();
