@@ -1,0 +1,256 @@
+#include "measure/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace shadowlab::measure {
+
+namespace {
+
+std::string sizeText(const ImageF& i) {
+  return std::to_string(i.width) + "x" + std::to_string(i.height) + "x" + std::to_string(i.channels);
+}
+
+void checkImage(const ImageF& image, const char* what, const char* where) {
+  if (image.width < 0 || image.height < 0 || image.channels < 1 ||
+      image.data.size() != std::size_t(image.width) * image.height * image.channels)
+    throw std::invalid_argument(std::string(where) + ": " + what + " image " + sizeText(image) + " holds " +
+                                std::to_string(image.data.size()) + " values");
+}
+
+void checkPair(const ImageF& technique, const ImageF& reference, const char* where) {
+  checkImage(technique, "technique", where);
+  checkImage(reference, "reference", where);
+  if (technique.width != reference.width || technique.height != reference.height || technique.channels != 1 ||
+      reference.channels != 1)
+    throw std::invalid_argument(std::string(where) + ": technique " + sizeText(technique) + " and reference " +
+                                sizeText(reference) + " must be single-channel images of one size");
+}
+
+double pct(std::size_t part, std::size_t whole) { return whole ? 100.0 * double(part) / double(whole) : 0.0; }
+
+HardShadowErrors compareHardImpl(const ImageF& technique, const ImageF& reference, const std::uint8_t* facing,
+                                 float litThreshold) {
+  const int w = reference.width, h = reference.height;
+  auto isFacing = [&](int x, int y) {
+    std::size_t i = std::size_t(y) * w + x;
+    return facing ? facing[i] != 0 : reference.data[i] >= 0.0f;
+  };
+  // Reference class: lit (1) when >= 0.5; a reference is binary, values < 0 inside an explicit
+  // facing mask count as shadowed.
+  auto refLit = [&](int x, int y) { return reference.data[std::size_t(y) * w + x] >= 0.5f; };
+  HardShadowErrors e;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!isFacing(x, y)) continue;
+      ++e.facingPixels;
+      bool lit = refLit(x, y);
+      bool edge = false;
+      for (int dy = -1; dy <= 1 && !edge; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          int nx = x + dx, ny = y + dy;
+          if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= w || ny >= h || !isFacing(nx, ny)) continue;
+          if (refLit(nx, ny) != lit) { edge = true; break; }
+        }
+      bool techLit = technique.data[std::size_t(y) * w + x] >= litThreshold;
+      bool wrong = techLit != lit;
+      if (wrong) {
+        ++e.misclassified;
+        if (techLit) ++e.leaks; else ++e.falseShadows;
+      }
+      if (edge) ++e.edgePixels;
+      else if (wrong) ++e.edgeTolerantMisclassified;
+    }
+  e.misclassifiedPct = pct(e.misclassified, e.facingPixels);
+  e.leakPct = pct(e.leaks, e.facingPixels);
+  e.falseShadowPct = pct(e.falseShadows, e.facingPixels);
+  e.edgeTolerantPct = pct(e.edgeTolerantMisclassified, e.facingPixels - e.edgePixels);
+  return e;
+}
+
+std::uint8_t lerp8(std::uint8_t a, std::uint8_t b, float t) {
+  return std::uint8_t(std::lround(a + (float(b) - float(a)) * std::clamp(t, 0.0f, 1.0f)));
+}
+Rgb8 mix(Rgb8 a, Rgb8 b, float t) { return {lerp8(a.r, b.r, t), lerp8(a.g, b.g, t), lerp8(a.b, b.b, t)}; }
+
+Image8 blank(int w, int h) {
+  Image8 out;
+  out.width = w;
+  out.height = h;
+  out.channels = 4;
+  out.data.assign(std::size_t(w) * h * 4, 0);
+  return out;
+}
+void put(Image8& image, std::size_t i, Rgb8 c) {
+  image.data[4 * i] = c.r; image.data[4 * i + 1] = c.g; image.data[4 * i + 2] = c.b; image.data[4 * i + 3] = 255;
+}
+
+}  // namespace
+
+HardShadowErrors compareHard(const ImageF& technique, const ImageF& reference, float litThreshold) {
+  checkPair(technique, reference, "compareHard");
+  return compareHardImpl(technique, reference, nullptr, litThreshold);
+}
+
+HardShadowErrors compareHard(const ImageF& technique, const ImageF& reference, const std::vector<std::uint8_t>& facing,
+                             float litThreshold) {
+  checkPair(technique, reference, "compareHard");
+  if (facing.size() != reference.data.size())
+    throw std::invalid_argument("compareHard: facing mask holds " + std::to_string(facing.size()) + " entries for " +
+                                std::to_string(reference.data.size()) + " pixels");
+  return compareHardImpl(technique, reference, facing.data(), litThreshold);
+}
+
+ImageF visibilityFromMask(const Image8& mask, int channel) {
+  if (channel < 0 || channel >= mask.channels)
+    throw std::invalid_argument("visibilityFromMask: channel " + std::to_string(channel) + " of a " +
+                                std::to_string(mask.channels) + "-channel image");
+  if (mask.data.size() != std::size_t(mask.width) * mask.height * mask.channels)
+    throw std::invalid_argument("visibilityFromMask: mask data size " + std::to_string(mask.data.size()) +
+                                " does not match its size");
+  ImageF out;
+  out.width = mask.width;
+  out.height = mask.height;
+  out.data.resize(std::size_t(mask.width) * mask.height);
+  for (std::size_t i = 0; i < out.data.size(); ++i) out.data[i] = mask.data[i * mask.channels + channel] / 255.0f;
+  return out;
+}
+
+SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference) {
+  checkPair(technique, reference, "compareSoft");
+  SoftShadowErrors e;
+  double sum = 0;
+  for (std::size_t i = 0; i < reference.data.size(); ++i) {
+    if (!(reference.data[i] >= 0.0f)) continue;
+    double d = double(technique.data[i]) - double(reference.data[i]);
+    sum += d * d;
+    e.maxAbs = std::max(e.maxAbs, std::abs(d));
+    ++e.pixels;
+  }
+  e.rmse = e.pixels ? std::sqrt(sum / double(e.pixels)) : 0.0;
+  return e;
+}
+
+Image8 hardErrorHeatmap(const ImageF& technique, const ImageF& reference, float litThreshold) {
+  checkPair(technique, reference, "hardErrorHeatmap");
+  Image8 out = blank(reference.width, reference.height);
+  for (std::size_t i = 0; i < reference.data.size(); ++i) {
+    float r = reference.data[i];
+    if (r < -1.5f) continue;  // background
+    if (r < 0.0f) { put(out, i, {50, 50, 50}); continue; }
+    bool refLit = r >= 0.5f, techLit = technique.data[i] >= litThreshold;
+    if (techLit && !refLit) put(out, i, kLeakColor);
+    else if (!techLit && refLit) put(out, i, kFalseShadowColor);
+    else put(out, i, refLit ? Rgb8{200, 200, 200} : Rgb8{110, 110, 110});
+  }
+  return out;
+}
+
+Image8 softErrorHeatmap(const ImageF& technique, const ImageF& reference, float fullScale) {
+  checkPair(technique, reference, "softErrorHeatmap");
+  if (!(fullScale > 0.0f)) throw std::invalid_argument("softErrorHeatmap: fullScale " + std::to_string(fullScale) + " must be > 0");
+  Image8 out = blank(reference.width, reference.height);
+  for (std::size_t i = 0; i < reference.data.size(); ++i) {
+    float r = reference.data[i];
+    if (r < -1.5f) continue;
+    if (r < 0.0f) { put(out, i, {50, 50, 50}); continue; }
+    std::uint8_t g = std::uint8_t(std::lround(90 + 110 * std::clamp(r, 0.0f, 1.0f)));
+    float d = technique.data[i] - r;
+    float t = std::min(std::abs(d) / fullScale, 1.0f);
+    put(out, i, mix({g, g, g}, d > 0 ? kLeakColor : kFalseShadowColor, t));
+  }
+  return out;
+}
+
+float smallestSingularValue(const glm::mat2& J) {
+  double a = J[0][0], b = J[0][1], c = J[1][0], d = J[1][1];
+  double s = a * a + b * b + c * c + d * d;
+  double det = a * d - b * c;
+  double disc = std::sqrt(std::max(0.0, s * s - 4 * det * det));
+  double sigmaMax = std::sqrt((s + disc) / 2);
+  // |det| / sigma_max is sigma_min without the cancellation of (s - disc) / 2.
+  return sigmaMax > 0 ? float(std::abs(det) / sigmaMax) : 0.0f;
+}
+
+float aliasingFactor(const glm::mat2& J) {
+  float sigma = smallestSingularValue(J);
+  if (std::isnan(sigma)) return std::numeric_limits<float>::quiet_NaN();
+  return sigma > 0.0f ? 1.0f / sigma : std::numeric_limits<float>::infinity();
+}
+
+ImageF aliasingFactors(const ImageF& perPixel) {
+  checkImage(perPixel, "per-pixel", "aliasingFactors");
+  if (perPixel.channels != 1 && perPixel.channels != 4)
+    throw std::invalid_argument("aliasingFactors: " + std::to_string(perPixel.channels) +
+                                " channels; need 1 (m) or 4 (du/dx, dv/dx, du/dy, dv/dy)");
+  if (perPixel.channels == 1) return perPixel;
+  ImageF out;
+  out.width = perPixel.width;
+  out.height = perPixel.height;
+  out.data.resize(std::size_t(perPixel.width) * perPixel.height);
+  for (std::size_t i = 0; i < out.data.size(); ++i) {
+    const float* j = &perPixel.data[4 * i];
+    bool nan = std::isnan(j[0]) || std::isnan(j[1]) || std::isnan(j[2]) || std::isnan(j[3]);
+    out.data[i] = nan ? std::numeric_limits<float>::quiet_NaN()
+                      : aliasingFactor(glm::mat2(glm::vec2(j[0], j[1]), glm::vec2(j[2], j[3])));
+  }
+  return out;
+}
+
+AliasingStats aliasingStats(const ImageF& perPixel, float cap) {
+  if (!(cap >= 1.0f)) throw std::invalid_argument("aliasingStats: cap " + std::to_string(cap) + " must be >= 1");
+  ImageF m = aliasingFactors(perPixel);
+  std::vector<float> values;
+  values.reserve(m.data.size());
+  for (float v : m.data)
+    if (!std::isnan(v)) values.push_back(std::min(v, cap));
+  AliasingStats s;
+  s.pixels = values.size();
+  if (values.empty()) return s;
+  double sum = 0, sum2 = 0;
+  std::size_t above = 0;
+  for (float v : values) {
+    sum += v;
+    sum2 += double(v) * v;
+    above += v > 1.0f;
+  }
+  s.mean = sum / double(values.size());
+  s.rms = std::sqrt(sum2 / double(values.size()));
+  s.shareAbove1 = double(above) / double(values.size());
+  std::size_t rank = std::size_t(std::ceil(0.95 * double(values.size())));
+  rank = std::clamp<std::size_t>(rank, 1, values.size());
+  std::nth_element(values.begin(), values.begin() + (rank - 1), values.end());
+  s.p95 = values[rank - 1];
+  s.max = *std::max_element(values.begin(), values.end());
+  return s;
+}
+
+Rgb8 aliasingColor(float m, float maxM) {
+  if (std::isnan(m)) return {0, 0, 0};
+  float range = std::log2(std::max(maxM, 2.0f));
+  float t = m > 0.0f ? std::log2(m) / range : -1.0f;  // -1 .. 1 over [1/maxM, maxM]
+  if (m <= 1.0f) return mix({0, 70, 30}, {120, 225, 120}, 1.0f + std::max(t, -1.0f));
+  t = std::min(t, 1.0f);
+  if (t < 0.5f) return mix({255, 235, 0}, {255, 140, 0}, t * 2);
+  return mix({255, 140, 0}, {210, 0, 0}, t * 2 - 1);
+}
+
+Image8 aliasingHeatmap(const ImageF& perPixel, float maxM) {
+  ImageF m = aliasingFactors(perPixel);
+  Image8 out = blank(m.width, m.height);
+  for (std::size_t i = 0; i < m.data.size(); ++i)
+    if (!std::isnan(m.data[i])) put(out, i, aliasingColor(m.data[i], maxM));
+  return out;
+}
+
+std::vector<float> aliasingLegendTicks(float maxM) {
+  int top = std::max(1, int(std::ceil(std::log2(std::max(maxM, 2.0f)))));
+  std::vector<float> ticks;
+  for (int k = -top; k <= top; ++k) ticks.push_back(std::ldexp(1.0f, k));
+  return ticks;
+}
+
+}  // namespace shadowlab::measure

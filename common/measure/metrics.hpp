@@ -1,0 +1,87 @@
+#pragma once
+// Error and aliasing figures of a shadow technique against the ground truth (ground_truth.hpp).
+// All images are top row first and pixel-aligned with the reference; sizes must match.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/image.hpp"
+
+namespace shadowlab::measure {
+
+struct Rgb8 {
+  std::uint8_t r = 0, g = 0, b = 0;
+  bool operator==(const Rgb8&) const = default;
+};
+
+// ---- Hard shadows ------------------------------------------------------------------------------
+// Counted over the pixels that face the light (reference >= 0, i.e. not kNotFacing/kBackground,
+// or the explicit facing mask). A technique pixel is lit when its value >= litThreshold.
+//   leak:         technique lit, reference shadowed (light where there should be shadow)
+//   false shadow: technique shadowed, reference lit
+// The edge-tolerant figure ignores pixels within 1 pixel (8-neighbourhood) of a reference shadow
+// boundary, i.e. facing pixels with a facing neighbour of the other reference class.
+struct HardShadowErrors {
+  std::size_t facingPixels = 0;
+  std::size_t misclassified = 0, leaks = 0, falseShadows = 0;
+  std::size_t edgePixels = 0;                 // facing pixels excluded by the edge tolerance
+  std::size_t edgeTolerantMisclassified = 0;  // misclassified among the rest
+  double misclassifiedPct = 0, leakPct = 0, falseShadowPct = 0;  // of facingPixels
+  double edgeTolerantPct = 0;  // of facingPixels - edgePixels
+};
+HardShadowErrors compareHard(const ImageF& technique, const ImageF& reference, float litThreshold = 0.5f);
+// `facing`: one byte per pixel, non-zero where the pixel faces the light (overrides the reference's
+// own marks; reference values < 0 inside it count as shadowed).
+HardShadowErrors compareHard(const ImageF& technique, const ImageF& reference,
+                             const std::vector<std::uint8_t>& facing, float litThreshold = 0.5f);
+// A technique's 8-bit lit mask (channel `channel`, 255 lit) as a visibility image in [0,1].
+ImageF visibilityFromMask(const Image8& mask, int channel = 0);
+
+// ---- Soft shadows ------------------------------------------------------------------------------
+struct SoftShadowErrors {
+  std::size_t pixels = 0;  // facing pixels compared
+  double rmse = 0;         // visibility units, [0,1]
+  double maxAbs = 0;
+};
+SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference);
+
+// ---- Heatmaps (RGBA, alpha 255; 0 for background) ----------------------------------------------
+inline constexpr Rgb8 kLeakColor{255, 48, 32};         // lit, should be shadowed
+inline constexpr Rgb8 kFalseShadowColor{40, 110, 255}; // shadowed, should be lit
+// Agreement is grey: lit 200, shadowed 110; not facing 50; background transparent black.
+Image8 hardErrorHeatmap(const ImageF& technique, const ImageF& reference, float litThreshold = 0.5f);
+// Signed soft error: too bright toward kLeakColor, too dark toward kFalseShadowColor, saturating at
+// |error| = fullScale; a zero error shows the reference's visibility in grey.
+Image8 softErrorHeatmap(const ImageF& technique, const ImageF& reference, float fullScale = 0.25f);
+
+// ---- Aliasing ----------------------------------------------------------------------------------
+// J maps a step of one screen pixel to shadow-map texels: J[0] = d(texel)/dx, J[1] = d(texel)/dy
+// (GLM columns; in GLSL  mat2(dFdx(uv * size), dFdy(uv * size))). A texel then covers 1/sigma screen
+// pixels along each singular direction, so the worst-stretched texel covers m = 1 / sigma_min(J)
+// pixels; m <= 1 is alias-free. Singular J: +infinity.
+float aliasingFactor(const glm::mat2& J);
+float smallestSingularValue(const glm::mat2& J);
+
+struct AliasingStats {
+  std::size_t pixels = 0;  // pixels counted (finite inputs; NaN marks background)
+  double mean = 0, rms = 0, p95 = 0, max = 0;
+  double shareAbove1 = 0;  // fraction in [0,1] of pixels with m > 1
+};
+// `perPixel`: 1 channel of m values, or 4 channels (du/dx, dv/dx, du/dy, dv/dy) of J. NaN in any
+// channel skips the pixel. m is capped at `cap` (a singular J would otherwise make the mean
+// infinite). p95 is the nearest-rank percentile: the ceil(0.95 n)-th smallest value.
+AliasingStats aliasingStats(const ImageF& perPixel, float cap = 1024.0f);
+// Per-pixel m from a 4-channel J image (NaN stays NaN), or a copy of a 1-channel m image.
+ImageF aliasingFactors(const ImageF& perPixel);
+
+// m colour ramp on a log2 scale: m <= 1 in greens (darker toward m -> 0, 1/maxM and below the
+// darkest), m > 1 from yellow (just above 1) through orange to red at maxM and beyond. NaN: black.
+Rgb8 aliasingColor(float m, float maxM = 16.0f);
+Image8 aliasingHeatmap(const ImageF& perPixel, float maxM = 16.0f);
+// The values to label on a legend for aliasingHeatmap: 1/maxM, ..., 1/2, 1, 2, ..., maxM (powers of
+// two; maxM rounded up to one).
+std::vector<float> aliasingLegendTicks(float maxM = 16.0f);
+
+}  // namespace shadowlab::measure
