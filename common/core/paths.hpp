@@ -1,0 +1,17 @@
+#pragma once
+// Where the toolkit finds its data at run time. The source tree is fixed at configure time
+// (SHADOWLAB_SOURCE_ROOT), but an installed or relocated copy — or a test — can point elsewhere
+// with the SHADOWLAB_ROOT environment variable, which is read on every call so a change takes
+// effect without restarting.
+#include <string>
+
+namespace shadowlab {
+
+// SHADOWLAB_ROOT if set and non-empty, else the configure-time source tree.
+std::string sourceRoot();
+// sourceRoot() + "/shaders": the include directory for every GLSL program.
+std::string shaderRoot();
+// sourceRoot() + "/textures".
+std::string textureRoot();
+
+}  // namespace shadowlab
