@@ -1,0 +1,53 @@
+#pragma once
+// Recorded camera and light paths: a lesson records keyframes while the user moves, a benchmark
+// replays them so every technique sees the same frames.
+//
+// Text format (one keyframe a line, whitespace-separated, '#' starts a comment):
+//   shadowlab-path 1
+//   key <time> <camera position xyz> <camera target xyz> <light position xyz> <light direction xyz>
+// Times in seconds, strictly increasing. The light direction is the direction light travels
+// (Light::direction) and must not be zero; it is normalised on load.
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace shadowlab::measure {
+
+struct PathKey {
+  double time = 0.0;
+  glm::vec3 cameraPosition{0.0f, 2.0f, 8.0f};
+  glm::vec3 cameraTarget{0.0f};
+  glm::vec3 lightPosition{0.0f, 8.0f, 0.0f};
+  glm::vec3 lightDirection{0.0f, -1.0f, 0.0f};
+  bool operator==(const PathKey&) const = default;
+};
+
+class CameraLightPath {
+public:
+  // Appends a key; throws std::invalid_argument unless its time is after the last key's and the
+  // light direction is non-zero (naming the values).
+  void add(const PathKey& key);
+  const std::vector<PathKey>& keys() const { return keys_; }
+  bool empty() const { return keys_.empty(); }
+  double duration() const { return keys_.empty() ? 0.0 : keys_.back().time - keys_.front().time; }
+
+  // The pose at `time`: positions and target interpolated linearly between neighbouring keys, the
+  // light direction along the great arc (slerp); clamped to the first/last key outside the path.
+  // Throws std::logic_error on an empty path.
+  PathKey sample(double time) const;
+  // `frames` poses evenly spaced from the first to the last key (both included; 1 frame: the first).
+  std::vector<PathKey> resample(int frames) const;
+
+  void write(std::ostream& out) const;
+  void save(const std::string& path) const;  // throws std::runtime_error naming the path
+  // Parse errors throw std::runtime_error as "<name>:<line>: <what>".
+  static CameraLightPath read(std::istream& in, const std::string& name);
+  static CameraLightPath load(const std::string& path);
+
+private:
+  std::vector<PathKey> keys_;
+};
+
+}  // namespace shadowlab::measure
