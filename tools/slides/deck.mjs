@@ -126,7 +126,10 @@ export function makeMarkdown() {
           });
           return `<div class="figrow figrow-${figs.length}">${figs.join('')}</div>\n`;
         }
-        return `<p>${this.parser.parseInline(token.tokens)}</p>\n`;
+        // A paragraph that is only a citation, "(seeds 004, illumination with visibility)", is set
+        // small under the formula it cites.
+        const cls = /^\(seeds? \d{3}[^\n]*\)$/.test(token.text.trim()) ? ' class="cite"' : '';
+        return `<p${cls}>${this.parser.parseInline(token.tokens)}</p>\n`;
       },
       image(token) {
         return `<img src="${escapeHtml(token.href)}" alt="${escapeHtml(token.text)}">`;

@@ -4,6 +4,8 @@
 //   - any request leaving the page's own origin (pages must work offline: no CDN at view time),
 //   - any <img> that did not load (naturalWidth 0),
 //   - any KaTeX error node (.katex-error: a formula that did not parse),
+//   - in a reveal.js deck: a slide whose content overflows the slide (cut off in the room and in the
+//     PDF), a formula or code block wider than its slide,
 //   - with --expect-slides N: a reveal.js deck whose slide count is not N.
 // Usage: node tools/web/check-page.mjs PAGE.html|URL [--expect-slides N] [--timeout-ms MS]
 // Exit 0 and one "ok" line when clean; exit 1 with one line per problem, each naming the page.
@@ -104,6 +106,31 @@ export async function checkPage(browser, target, { expectSlides = null, timeoutM
       };
     });
     problems.push(...summary.problems);
+    // A reveal.js slide is a fixed-size page: content below or beside it is cut off in the room and
+    // in the PDF. Visit every slide and measure it (hidden slides have no layout).
+    if (summary.reveal) {
+      problems.push(...await page.evaluate(async () => {
+        const R = window.Reveal, { width, height } = R.getConfig();
+        const out = [];
+        const slides = R.getSlides();
+        for (let n = 0; n < slides.length; n++) {
+          const s = slides[n];
+          const { h, v } = R.getIndices(s);
+          R.slide(h, v);
+          await new Promise((r) => requestAnimationFrame(() => r()));
+          const tall = s.scrollHeight - height, wide = s.scrollWidth - width;
+          if (tall > 2) out.push(`slide ${n + 1} overflows the ${height}px slide height by ${tall}px (content is cut off)`);
+          if (wide > 2) out.push(`slide ${n + 1} overflows the ${width}px slide width by ${wide}px`);
+          for (const el of s.querySelectorAll('.math-display, pre')) {
+            if (el.scrollWidth > el.clientWidth + 2) {
+              out.push(`slide ${n + 1}: ${el.matches('pre') ? 'code block' : 'formula'} wider than the slide by ${el.scrollWidth - el.clientWidth}px: ${el.textContent.trim().slice(0, 60)}`);
+            }
+          }
+        }
+        R.slide(0, 0);
+        return out;
+      }));
+    }
     if (expectSlides !== null) {
       if (!summary.reveal) problems.push(`--expect-slides ${expectSlides} but the page is not a reveal.js deck`);
       else if (summary.slides !== expectSlides) problems.push(`${summary.slides} slides, expected ${expectSlides} (from the source)`);
