@@ -1,0 +1,137 @@
+#include "psm/enclosing_cone.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "psm/conventions.hpp"
+
+namespace shadowlab::psm {
+
+namespace {
+
+struct Ball {
+  glm::dvec3 c{0.0};
+  double r2 = -1.0;  // squared radius; < 0: empty
+};
+
+// Relative slack: cones from a far light are ~1e-9 rad wide, so an absolute slack would swamp
+// them; the measured half-angle afterwards makes containment exact anyway.
+bool contains(const Ball& b, const glm::dvec3& p) {
+  const glm::dvec3 d = p - b.c;
+  return glm::dot(d, d) <= b.r2 * (1.0 + 1e-10) + 1e-30;
+}
+
+Ball ball2(const glm::dvec3& a, const glm::dvec3& b) {
+  const glm::dvec3 c = 0.5 * (a + b);
+  const glm::dvec3 d = a - c;
+  return {c, glm::dot(d, d)};
+}
+
+// Smallest ball with a, b, c on its boundary: the circumcircle's centre in their plane.
+Ball ball3(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const glm::dvec3 ab = b - a, ac = c - a;
+  const glm::dvec3 n = glm::cross(ab, ac);
+  const double n2 = glm::dot(n, n);
+  if (n2 < 1e-30) {
+    // Two of the points coincide: the ball over the farthest pair.
+    Ball best = ball2(a, b);
+    Ball alt = ball2(a, c);
+    if (alt.r2 > best.r2) best = alt;
+    alt = ball2(b, c);
+    if (alt.r2 > best.r2) best = alt;
+    return best;
+  }
+  const glm::dvec3 off = (glm::dot(ac, ac) * glm::cross(n, ab) + glm::dot(ab, ab) * glm::cross(ac, n)) / (2.0 * n2);
+  return {a + off, glm::dot(off, off)};
+}
+
+std::uint64_t next(std::uint64_t& s) {
+  s ^= s << 13;
+  s ^= s >> 7;
+  s ^= s << 17;
+  return s;
+}
+
+Cone coneFromAxis(const glm::dvec3& axis, std::span<const glm::dvec3> units) {
+  Cone cone;
+  cone.axis = axis;
+  double minCos = 1.0;
+  for (const auto& u : units) minCos = std::min(minCos, glm::dot(axis, u));
+  cone.halfAngle = std::acos(std::clamp(minCos, -1.0, 1.0));
+  cone.valid = cone.halfAngle < std::numbers::pi / 2.0 - 1e-9;
+  return cone;
+}
+
+glm::dvec3 unitChecked(const glm::dvec3& v, std::size_t i) {
+  if (!isFinite(v)) throw std::invalid_argument("direction " + std::to_string(i) + " is not finite");
+  const double len = glm::length(v);
+  if (!(len > 0.0)) throw std::invalid_argument("direction " + std::to_string(i) + " is the zero vector");
+  return v / len;
+}
+
+}  // namespace
+
+Cone smallestEnclosingCone(std::span<glm::dvec3> p) {
+  const std::size_t n = p.size();
+  if (n == 0) return Cone{};
+  for (std::size_t i = 0; i < n; ++i) p[i] = unitChecked(p[i], i);
+  std::uint64_t s = 0x9E3779B97F4A7C15ull ^ n;
+  for (std::size_t i = n - 1; i > 0; --i) std::swap(p[i], p[next(s) % (i + 1)]);
+
+  // Welzl with 0..3 boundary points, as loops. A 4th boundary point only arises when the points
+  // are not in an open hemisphere (4 points on the unit sphere span the sphere itself); then the
+  // ball through 3 points is kept and the hemisphere test below reports the failure.
+  Ball b{p[0], 0.0};
+  for (std::size_t i = 1; i < n; ++i) {
+    if (contains(b, p[i])) continue;
+    b = Ball{p[i], 0.0};
+    for (std::size_t j = 0; j < i; ++j) {
+      if (contains(b, p[j])) continue;
+      b = ball2(p[i], p[j]);
+      for (std::size_t k = 0; k < j; ++k) {
+        if (contains(b, p[k])) continue;
+        b = ball3(p[i], p[j], p[k]);
+      }
+    }
+  }
+  const double cl = glm::length(b.c);
+  if (!(cl > 1e-9)) {
+    Cone c = coneFromAxis(p[0], p);
+    c.valid = false;
+    return c;
+  }
+  // The half-angle is measured, not derived from the radius, so the cone holds every input.
+  return coneFromAxis(b.c / cl, p);
+}
+
+Cone smallestEnclosingConeBruteForce(std::span<const glm::dvec3> dirs) {
+  const std::size_t n = dirs.size();
+  if (n == 0) return Cone{};
+  std::vector<glm::dvec3> u(n);
+  for (std::size_t i = 0; i < n; ++i) u[i] = unitChecked(dirs[i], i);
+  Cone best;
+  best.halfAngle = 1e300;
+  auto consider = [&](const glm::dvec3& axisRaw) {
+    const double len = glm::length(axisRaw);
+    if (!(len > 1e-12)) return;
+    for (double sign : {1.0, -1.0}) {
+      const Cone c = coneFromAxis(sign * axisRaw / len, u);
+      if (c.halfAngle < best.halfAngle) best = c;
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    consider(u[i]);
+    for (std::size_t j = i + 1; j < n; ++j) {
+      consider(u[i] + u[j]);
+      for (std::size_t k = j + 1; k < n; ++k) consider(glm::cross(u[j] - u[i], u[k] - u[i]));
+    }
+  }
+  return best;
+}
+
+}  // namespace shadowlab::psm
