@@ -178,7 +178,7 @@ Mesh makeSphere(float radius, int slices, int stacks) {
       // the slice they cap so the texture does not swirl.
       if (j == 0 || j == stacks) {
         dir = {0.0f, j == 0 ? 1.0f : -1.0f, 0.0f};
-        u = (float(i) + 0.5f) / float(slices);
+        u = std::min((float(i) + 0.5f) / float(slices), 1.0f);
       }
       dir = glm::normalize(dir);
       push(mesh, radius * dir, dir, {u, float(j) / float(stacks)});
