@@ -97,7 +97,12 @@ const cdn = deck('external', `# Bad\n\n<link rel="stylesheet" href="https://cdn.
 const cdnCheck = node(CHECK, [cdn.html, '--expect-slides', '1']);
 expect('check-page fails on a request leaving the page', cdnCheck.code === 1 && /external request/.test(cdnCheck.output), cdnCheck.output);
 
-// 9. The builder's own output (HTML, CSS, vendor files) refers to nothing on the network.
+// 9. A slide whose content does not fit: cut off in the room and in the PDF.
+const tall = deck('overflow', `# Too long\n\n${Array.from({ length: 30 }, (_, i) => `- line ${i + 1}`).join('\n')}\n`);
+const tallCheck = node(CHECK, [tall.html, '--expect-slides', '1']);
+expect('check-page fails on a slide that overflows', tallCheck.code === 1 && /slide 1 overflows/.test(tallCheck.output), tallCheck.output);
+
+// 10. The builder's own output (HTML, CSS, vendor files) refers to nothing on the network.
 const offenders = [];
 (function scan(dir) {
   for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
