@@ -58,6 +58,8 @@ set_tests_properties(slides.build PROPERTIES LABELS slides FIXTURES_SETUP slides
 foreach(deck IN LISTS SLIDE_DECKS)
   get_filename_component(name ${deck} NAME_WE)
   slides_count_in(${deck} expected)
+  # The expected count is read at configure time: re-configure (on the next build) when a deck changes.
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${deck})
   add_test(NAME slides.check.${name}
     COMMAND ${NODE} ${CMAKE_SOURCE_DIR}/tools/web/check-page.mjs ${SLIDES_OUT}/${name}.html --expect-slides ${expected}
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})

@@ -58,7 +58,7 @@ const good = `# Clean\n\n$I = k_a I_a + \\sum_i V_i$\n\n---\n## Figure\n\n${figu
 const clean = deck('clean', good);
 expect('clean deck builds', clean.build.code === 0, clean.build.output);
 const cleanCheck = node(CHECK, [clean.html, '--expect-slides', '2']);
-expect('clean deck passes check-page', cleanCheck.code === 0, cleanCheck.output);
+expect('clean deck passes check-page', cleanCheck.code === 0 && /check-page: ok .*\(2 slides, 1 images, 1 formulas\)/.test(cleanCheck.output), cleanCheck.output);
 
 // 2. Wrong slide count.
 const count = node(CHECK, [clean.html, '--expect-slides', '3']);

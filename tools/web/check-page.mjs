@@ -12,7 +12,7 @@
 // Chromium: $SHADOWLAB_CHROMIUM or /usr/bin/chromium (Debian's package; playwright-core drives it).
 import fs from 'node:fs';
 import path from 'node:path';
-import { pathToFileURL } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 import { chromium } from 'playwright-core';
 
 export const CHROMIUM = process.env.SHADOWLAB_CHROMIUM || '/usr/bin/chromium';
@@ -183,6 +183,7 @@ async function main(argv) {
   }
 }
 
-if (process.argv[1] && path.resolve(process.argv[1]) === path.resolve(new URL(import.meta.url).pathname)) {
+// Run as a script (also through a symlinked path: Node gives import.meta.url the real path).
+if (process.argv[1] && fs.realpathSync(process.argv[1]) === fileURLToPath(import.meta.url)) {
   process.exitCode = await main(process.argv.slice(2));
 }
