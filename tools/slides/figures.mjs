@@ -24,7 +24,7 @@ export function parseFigureUrl(url) {
     const value = eq < 0 ? '' : decodeURIComponent(part.slice(eq + 1));
     if (key === 'preset') spec.preset = value;
     else if (key === 'set') {
-      if (!/^[^=\s]+=\S*$/.test(value)) throw new FigureError(`figure "${url}": set=${value} is not name=value`);
+      if (!/^[^=\s]+=./.test(value)) throw new FigureError(`figure "${url}": set=${value} is not name=value`);
       spec.sets.push(value);
     } else if (key === 'size') {
       if (!/^\d{2,5}x\d{2,5}$/.test(value)) throw new FigureError(`figure "${url}": size=${value} is not WxH`);
