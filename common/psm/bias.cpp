@@ -1,5 +1,6 @@
 #include "psm/bias.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -24,6 +25,9 @@ glm::dmat4 texelOffsetMatrix(const glm::dmat4& M, const glm::dvec2& size) {
 
 double texelWorldSize(const glm::dmat4& K, const glm::dvec3& p) {
   const glm::dvec4 d = K * glm::dvec4(p, 1.0);
+  // w <= 0: the one-texel step crossed the camera's plane at infinity (a texel at the far end of
+  // a PSM with a huge Zf/Zn): the texel is unbounded in world space.
+  if (!(1.0 + d.w > 0.0)) return std::numeric_limits<double>::infinity();
   const glm::dvec3 shifted = (p + glm::dvec3(d)) / (1.0 + d.w);
   return glm::length(shifted - p);
 }
@@ -33,13 +37,17 @@ double texelWorldSizePaper(const glm::dmat4& K, const glm::dvec3& p) {
   return glm::dot(d, d);
 }
 
-glm::dvec3 biasedWorldPoint(const glm::dvec3& p, const glm::dvec3& dirFromLight, double a, double b, double texelSize) {
-  if (!(a >= 0.0) || !(b >= 0.0)) throw std::invalid_argument("bias coefficients a, b must be >= 0");
-  if (!std::isfinite(texelSize) || texelSize < 0.0)
+glm::dvec3 biasedWorldPoint(const glm::dvec3& p, const glm::dvec3& dirFromLight, double a, double b, double texelSize,
+                            double maxOffset) {
+  if (!(a >= 0.0) || !(b >= 0.0) || !std::isfinite(a) || !std::isfinite(b))
+    throw std::invalid_argument("bias coefficients a, b must be finite and >= 0");
+  if (std::isnan(texelSize) || texelSize < 0.0)
     throw std::invalid_argument("texelSize = " + std::to_string(texelSize) + " is invalid");
+  if (!(maxOffset >= 0.0)) throw std::invalid_argument("maxOffset = " + std::to_string(maxOffset) + " must be >= 0");
   const double len = glm::length(dirFromLight);
   if (!(len > 0.0) || !std::isfinite(len)) throw std::invalid_argument("dirFromLight must be a finite non-zero vector");
-  return p + (dirFromLight / len) * (a + b * texelSize);
+  const double offset = std::min(a + b * texelSize, maxOffset);  // inf texel -> maxOffset
+  return p + (dirFromLight / len) * offset;
 }
 
 glm::dvec3 directionFromLight(const glm::dvec4& light, const glm::dvec3& p) {

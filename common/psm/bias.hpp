@@ -8,6 +8,8 @@
 // texel is c = (2/Sx, 2/Sy, 0) in clip units (the paper's texture space [0,1] has 1/Sx); the paper
 // squares the length, we keep it a length so a + b L_texel stays a distance; and the shifted point
 // is divided by its w (M is projective), which the paper's one-matrix form leaves out.
+#include <limits>
+
 #include <glm/glm.hpp>
 
 namespace shadowlab::psm {
@@ -17,14 +19,18 @@ namespace shadowlab::psm {
 // map size below 1.
 glm::dmat4 texelOffsetMatrix(const glm::dmat4& worldToClip, const glm::dvec2& mapSize);
 
-// |P' - P| with P' = (P + d.xyz) / (1 + d.w), d = K (P, 1): the world size of one texel at P.
+// |P' - P| with P' = (P + d.xyz) / (1 + d.w), d = K (P, 1): the world size of one texel at P
+// (+inf when 1 + d.w <= 0: the step crossed the camera's plane at infinity).
 double texelWorldSize(const glm::dmat4& texelOffset, const glm::dvec3& p);
 
 // The paper's cheaper form: |d.xyz|^2 (exact only for affine M, and an area, not a length).
 double texelWorldSizePaper(const glm::dmat4& texelOffset, const glm::dvec3& p);
 
-// P + dirFromLight (a + b texelSize); dirFromLight is normalised here. a, b >= 0.
-glm::dvec3 biasedWorldPoint(const glm::dvec3& p, const glm::dvec3& dirFromLight, double a, double b, double texelSize);
+// P + dirFromLight min(a + b texelSize, maxOffset); dirFromLight is normalised here; a, b >= 0.
+// maxOffset keeps the world shift bounded where the texel is huge or infinite (the far end of a
+// PSM at Zf/Zn = 1e6, where one texel step crosses the plane at infinity).
+glm::dvec3 biasedWorldPoint(const glm::dvec3& p, const glm::dvec3& dirFromLight, double a, double b, double texelSize,
+                            double maxOffset = std::numeric_limits<double>::infinity());
 
 // The unit direction light travels at p: (p - position) for a point light (w = 1), the light's
 // travel direction for a directional light given as (-direction, 0).

@@ -42,7 +42,9 @@ glm::dvec3 cubeFaceNormal(int face) {
 
 bool cubeFaceVisible(int face, const PostProjectiveLight& light) {
   const glm::dvec3 n = cubeFaceNormal(face);
-  if (light.kind == PostLightKind::Direction) return glm::dot(n, light.direction) >= 0.0;
+  // A direction grazing a face (|n.D| tiny, e.g. rounding of an axis-aligned light) would give
+  // that face an ill-conditioned oblique projection; rays then leave through the other faces.
+  if (light.kind == PostLightKind::Direction) return glm::dot(n, light.direction) >= -1e-9;
   return glm::dot(n, light.position) >= 1.0;
 }
 

@@ -60,9 +60,10 @@ std::uint64_t next(std::uint64_t& s) {
 Cone coneFromAxis(const glm::dvec3& axis, std::span<const glm::dvec3> units) {
   Cone cone;
   cone.axis = axis;
-  double minCos = 1.0;
-  for (const auto& u : units) minCos = std::min(minCos, glm::dot(axis, u));
-  cone.halfAngle = std::acos(std::clamp(minCos, -1.0, 1.0));
+  // atan2(|a x u|, a.u): acos loses half the digits for the narrow cones of far lights.
+  double worst = 0.0;
+  for (const auto& u : units) worst = std::max(worst, std::atan2(glm::length(glm::cross(axis, u)), glm::dot(axis, u)));
+  cone.halfAngle = worst;
   cone.valid = cone.halfAngle < std::numbers::pi / 2.0 - 1e-9;
   return cone;
 }
