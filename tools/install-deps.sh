@@ -1,8 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian/Ubuntu packages shadowlab builds and tests with, and only the missing ones.
 # Prints what it installs. Uses sudo when not root. Safe to run on every `make`.
-#   tools/install-deps.sh            build + test packages
-#   tools/install-deps.sh --slides   also what `make slides` needs (Chromium, Node.js/npm)
 set -euo pipefail
 
 packages=(
@@ -11,8 +9,8 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libgles-dev
   libembree-dev libtinyobjloader-dev nlohmann-json3-dev
   glslang-tools xvfb xauth
+  chromium nodejs npm  # slides and HTML reports, tested in headless Chromium
 )
-if [[ "${1:-}" == "--slides" ]]; then packages+=(chromium nodejs npm); fi
 
 if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
   echo "install-deps: no apt-get here; install these yourself (see vcpkg.json): ${packages[*]}" >&2
@@ -24,11 +22,10 @@ for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
   [[ "$status" == "install ok installed" ]] || missing+=("$p")
 done
-# nodejs ships npm on some distributions; a working npm is what matters.
-if [[ " ${missing[*]} " == *" npm "* ]] && command -v npm >/dev/null; then
-  missing=("${missing[@]/npm}")
+# A working node and npm is what matters, wherever they came from (nodesource, nvm, Debian).
+if command -v node >/dev/null && command -v npm >/dev/null; then
+  missing=($(printf '%s\n' "${missing[@]}" | grep -vx -e nodejs -e npm || true))
 fi
-missing=($(printf '%s\n' "${missing[@]}" | grep -v '^$' || true))
 [[ ${#missing[@]} -eq 0 ]] && exit 0
 
 sudo=""

@@ -1,0 +1,379 @@
+// The loop every lesson runs in: command line, context, presets, input, timing, UI, screenshots,
+// benchmark CSV and the GL-error verdict. Lessons only see the hooks in lesson.hpp.
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+
+#include "app/context.hpp"
+#include "app/lesson.hpp"
+#include "app/ui.hpp"
+#include "core/cli.hpp"
+#include "core/image.hpp"
+#include "core/paths.hpp"
+#include "gl/caps.hpp"
+#include "gl/debug.hpp"
+#include "gl/gl.hpp"
+#include "gl/program.hpp"
+#include "gl/texture.hpp"
+
+namespace shadowlab {
+namespace {
+
+double nowSeconds() {
+  using namespace std::chrono;
+  return duration<double>(steady_clock::now().time_since_epoch()).count();
+}
+
+std::string jsonEscape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') { out += "\\n"; continue; }
+    out += c;
+  }
+  return out;
+}
+
+// Mouse and keys onto the camera and the framework's toggles. Input handling lives here, apart
+// from the camera maths (core/camera), which stays pure and unit-tested.
+struct Input {
+  double lastX = 0, lastY = 0;
+  bool haveLast = false;
+  float scroll = 0;
+  bool help = false;
+  bool screenshot = false;
+  bool reload = false;
+  int uiScaleSteps = 0;
+  bool toggleFullscreen = false;
+  std::vector<int> pressed;  // plain key presses, for parameter hotkeys
+};
+Input* g_input = nullptr;
+
+void onScroll(GLFWwindow* w, double x, double y) {
+  if (g_input) g_input->scroll += float(y);
+}
+
+void onKey(GLFWwindow* w, int key, int scancode, int action, int mods) {
+  if (!g_input || action != GLFW_PRESS) return;
+  const bool ctrl = mods & GLFW_MOD_CONTROL;
+  if (key == GLFW_KEY_F1) g_input->help = !g_input->help;
+  else if (key == GLFW_KEY_F11) g_input->toggleFullscreen = true;
+  else if (key == GLFW_KEY_F12) g_input->screenshot = true;
+  else if (ctrl && (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD)) ++g_input->uiScaleSteps;
+  else if (ctrl && (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT)) --g_input->uiScaleSteps;
+  else if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
+  else if (!ctrl) g_input->pressed.push_back(key);
+}
+
+std::string keyName(int key) {
+  if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) return std::string(1, char('0' + key - GLFW_KEY_0));
+  if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) return std::string(1, char('A' + key - GLFW_KEY_A));
+  return "";
+}
+
+// A hotkey toggles a bool or steps a choice to its next value.
+bool applyHotkey(ParamRegistry& params, const std::string& key) {
+  for (const auto& p : params.params()) {
+    if (p.hotkey != key) continue;
+    if (p.kind == ParamKind::Bool) params.set(p.name, params.get(p.name) == "true" ? "false" : "true");
+    else if (p.kind == ParamKind::Choice) {
+      const int i = *static_cast<int*>(p.target);
+      params.set(p.name, p.choices[(i + 1) % p.choices.size()]);
+    }
+    return true;
+  }
+  return false;
+}
+
+std::string screenshotName(const LessonInfo& info) {
+  std::time_t t = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", std::localtime(&t));
+  return "out/screenshots/" + info.name + "_" + stamp + ".png";
+}
+
+void saveScreenshot(const std::string& path, unsigned fbo, int w, int h) {
+  const std::filesystem::path p(path);
+  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+  savePng(path, gl::readPixels(fbo, w, h));
+}
+
+std::vector<std::string> shaderErrors() {
+  std::vector<std::string> errors;
+  for (const gl::Program* p : gl::livePrograms())
+    if (!p->error().empty()) errors.push_back(p->error());
+  return errors;
+}
+
+struct BenchLog {
+  std::ofstream out;
+  std::vector<int> seen;  // samples already written, per pass
+  void write(int frame, double frameMs, const gl::GpuTimers& timers) {
+    seen.resize(timers.passes().size(), 0);
+    for (std::size_t i = 0; i < timers.passes().size(); ++i) {
+      const auto& p = timers.passes()[i];
+      if (p.samples == seen[i]) continue;  // nothing new resolved for this pass
+      seen[i] = p.samples;
+      out << frame << ',' << p.name << ',' << p.lastGpuMs << ',' << p.lastCpuMs << ',' << frameMs << '\n';
+    }
+  }
+};
+
+}  // namespace
+
+void declareCamera(ParamRegistry& params, OrbitCamera& c) {
+  params.add("camera.yaw", &c.yaw, -1000.0f, 1000.0f, "orbit angle around +y (radians)").hidden = true;
+  params.add("camera.pitch", &c.pitch, -1.57f, 1.57f, "angle above the horizon (radians)").hidden = true;
+  params.add("camera.distance", &c.distance, 0.01f, 10000.0f, "distance from the target").hidden = true;
+  params.add("camera.target", &c.target, -10000.0f, 10000.0f, "the point the camera orbits").hidden = true;
+  params.add("camera.fov", &c.fovY, 0.1f, 3.0f, "vertical field of view (radians)").hidden = true;
+  params.add("camera.near", &c.nearZ, 1e-4f, 100.0f, "near plane distance").hidden = true;
+  params.add("camera.far", &c.farZ, 0.1f, 1e7f, "far plane distance").hidden = true;
+}
+
+int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, char** argv) {
+  // Declaration order matters: the lesson (and its GL objects) is destroyed before the context.
+  std::unique_ptr<Context> context;
+  std::unique_ptr<Lesson> owned = make();
+  Lesson& lesson = *owned;
+  const LessonInfo info = lesson.info();
+  CommandLine cl;
+  ParamRegistry params;
+  PresetFile presets;
+  try {
+    cl = parseCommandLine(argc, argv);
+    declareCamera(params, lesson.camera);
+    lesson.declare(params);
+    presets = PresetFile::load(sourceRoot() + "/lessons/" + info.name + "/presets.txt");
+    presets.validate(params);
+    if (cl.help) {
+      std::cout << info.number << " " << info.title << ": " << info.summary << "\n\n" << commandLineHelp(argv[0]);
+      return 0;
+    }
+    if (cl.info) {
+      std::cout << "{\"number\":\"" << info.number << "\",\"name\":\"" << info.name << "\",\"title\":\""
+                << jsonEscape(info.title) << "\",\"summary\":\"" << jsonEscape(info.summary)
+                << "\",\"difficulty\":" << info.difficulty << "}\n";
+      return 0;
+    }
+    if (cl.listParams) {
+      std::cout << params.describe();
+      return 0;
+    }
+    if (cl.listPresets) {
+      for (const auto& n : presets.names()) std::cout << n << '\n';
+      return 0;
+    }
+    if (!cl.preset.empty()) presets.apply(cl.preset, params);
+    for (const auto& s : cl.sets) params.assign(s);
+  } catch (const std::exception& e) {  // CliError, ParamError
+    std::cerr << info.name << ": " << e.what() << '\n';
+    return 2;
+  }
+
+  try {
+    ContextOptions options{cl.width, cl.height, info.number + " " + info.title, true, cl.fullscreen};
+    if (!cl.headless && !displayAvailable()) {
+      std::cerr << info.name << ": no display (DISPLAY / WAYLAND_DISPLAY unset); use --headless\n";
+      return 1;
+    }
+    context = cl.headless ? createHeadlessContext(options) : createWindowContext(options);
+  } catch (const std::exception& e) {
+    std::cerr << info.name << ": " << e.what() << '\n';
+    return 1;
+  }
+  gl::installDebugOutput();
+  const gl::Caps& caps = gl::caps();
+
+  Input input;
+  g_input = &input;
+  if (GLFWwindow* w = context->window()) {
+    glfwSetScrollCallback(w, onScroll);
+    glfwSetKeyCallback(w, onKey);
+  }
+  Ui ui;
+  const bool uiVisible = !cl.headless || cl.showUi;
+  if (uiVisible) ui.init(*context, cl.uiScale > 0 ? cl.uiScale : context->contentScale());
+  if (GLFWwindow* w = context->window()) {  // chain ImGui's callbacks after ours
+    glfwSetScrollCallback(w, onScroll);
+    glfwSetKeyCallback(w, onKey);
+  }
+
+  std::string initError;
+  auto tryInit = [&] {
+    try {
+      lesson.init();
+      initError.clear();
+    } catch (const std::exception& e) {
+      initError = e.what();
+    }
+  };
+  tryInit();
+  if (cl.headless) {
+    std::vector<std::string> errors = shaderErrors();
+    if (!initError.empty()) errors.insert(errors.begin(), initError);
+    if (!errors.empty()) {
+      for (const auto& e : errors) std::cerr << info.name << ": " << e << '\n';
+      return 1;
+    }
+  }
+
+  BenchLog bench;
+  if (!cl.bench.empty()) {
+    bench.out.open(cl.bench);
+    if (!bench.out) {
+      std::cerr << info.name << ": cannot write --bench file " << cl.bench << '\n';
+      return 1;
+    }
+    bench.out << "frame,pass,gpu_ms,cpu_ms,frame_cpu_ms\n";
+  }
+
+  int width = context->width(), height = context->height();
+  lesson.resize(width, height);
+  bool helpOpen = false;
+  std::string status;
+  double frameMsAvg = 0;
+  double time = 0;
+  double last = nowSeconds();
+  for (int frame = 0; cl.frames < 0 || frame < cl.frames; ++frame) {
+    if (context->shouldClose()) break;
+    context->pollEvents();
+    const double start = nowSeconds();
+    const double dt = cl.headless ? 1.0 / 60.0 : std::min(start - last, 0.1);
+    last = start;
+    time += dt;
+
+    // ---- input -----------------------------------------------------------------------------
+    if (GLFWwindow* w = context->window()) {
+      double x, y;
+      glfwGetCursorPos(w, &x, &y);
+      if (input.haveLast && !ui.wantsMouse()) {
+        const float dx = float(x - input.lastX), dy = float(y - input.lastY);
+        if (glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS) lesson.camera.orbit(-dx * 0.005f, dy * 0.005f);
+        if (glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS) lesson.camera.pan({-dx, dy});
+        if (input.scroll != 0) lesson.camera.zoom(std::pow(0.9f, input.scroll));
+      }
+      input.scroll = 0;
+      input.lastX = x;
+      input.lastY = y;
+      input.haveLast = true;
+      if (input.uiScaleSteps != 0) {
+        ui.setScale(ui.scale() * std::pow(1.15f, float(input.uiScaleSteps)));
+        input.uiScaleSteps = 0;
+      }
+      if (input.toggleFullscreen) {
+        context->setFullscreen(!context->fullscreen());
+        input.toggleFullscreen = false;
+      }
+      helpOpen = input.help;
+      if (!ui.wantsKeyboard()) {
+        for (int key : input.pressed) {
+          if (key == GLFW_KEY_R) {
+            for (gl::Program* p : gl::livePrograms()) p->build();
+            if (!initError.empty()) tryInit();
+            status = "reloaded shaders";
+          } else {
+            applyHotkey(params, keyName(key));
+          }
+        }
+      }
+      input.pressed.clear();
+    }
+    for (gl::Program* p : gl::livePrograms()) p->reloadIfChanged();
+
+    if (context->width() != width || context->height() != height) {
+      width = context->width();
+      height = context->height();
+      if (width > 0 && height > 0) lesson.resize(width, height);
+    }
+    if (width == 0 || height == 0) {  // minimised
+      context->present();
+      continue;
+    }
+
+    // ---- the lesson ------------------------------------------------------------------------
+    FrameInfo fi{frame, time, dt, width, height, context->framebuffer()};
+    std::vector<std::string> errors = shaderErrors();
+    if (!initError.empty()) errors.insert(errors.begin(), initError);
+    bool programsReady = true;
+    for (const gl::Program* p : gl::livePrograms()) programsReady = programsReady && p->valid();
+    glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
+    glViewport(0, 0, width, height);
+    if (initError.empty() && programsReady) {
+      try {
+        lesson.update(fi);
+        lesson.render(fi);
+      } catch (const std::exception& e) {
+        // A file that cannot be read, a scene that cannot be built: headless runs fail with the
+        // message; a window keeps running and shows it until a reload (R) succeeds.
+        if (cl.headless) {
+          std::cerr << info.name << ": " << e.what() << '\n';
+          return 1;
+        }
+        initError = e.what();
+      }
+    }
+    if (!initError.empty() || !programsReady) {
+      // Nothing valid to draw with: a dark red frame, and the error in the header.
+      glClearColor(0.25f, 0.05f, 0.05f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+    lesson.timers.collect();
+
+    if (uiVisible) {
+      glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
+      glViewport(0, 0, width, height);
+      ui.newFrame(dt);
+      ui.header({&info, caps.summary(), frameMsAvg, &lesson.timers.passes(), &lesson.counters, errors, status});
+      ui.paramPanel(params, presets, status);
+      lesson.gui();
+      ui.help(info, params, &helpOpen);
+      input.help = helpOpen;
+      ui.render();
+    }
+
+    if (input.screenshot) {
+      const std::string path = screenshotName(info);
+      saveScreenshot(path, fi.framebuffer, width, height);
+      status = "saved " + path;
+      input.screenshot = false;
+    }
+    if (!caps.khrDebug) gl::checkErrors("end of frame");
+    const double frameMs = (nowSeconds() - start) * 1000.0;
+    frameMsAvg = frameMsAvg == 0 ? frameMs : 0.9 * frameMsAvg + 0.1 * frameMs;
+    if (bench.out.is_open()) bench.write(frame, frameMs, lesson.timers);
+
+    const bool lastFrame = cl.frames > 0 && frame + 1 == cl.frames;
+    if (lastFrame && !cl.screenshot.empty()) {
+      try {
+        saveScreenshot(cl.screenshot, fi.framebuffer, width, height);
+      } catch (const std::exception& e) {
+        std::cerr << info.name << ": " << e.what() << '\n';
+        return 1;
+      }
+    }
+    context->present();
+  }
+  // Let outstanding timer queries resolve so the benchmark has every frame.
+  glFinish();
+  lesson.timers.collect();
+  if (bench.out.is_open()) bench.write(cl.frames, 0, lesson.timers);
+  gl::checkErrors("exit");
+  const int glErrors = gl::errorCount();
+  if (uiVisible) ui.shutdown();
+  owned.reset();
+  g_input = nullptr;
+  if (glErrors > 0) {
+    std::cerr << info.name << ": " << glErrors << " OpenGL error(s); first: " << gl::errorMessages().front() << '\n';
+    if (cl.strictGl) return 3;
+  }
+  return 0;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,77 @@
+#pragma once
+// The Lesson base: a lesson is a class with a few hooks; the framework (app.cpp) owns the loop, the
+// context, the UI header, the command line, presets, timers and the camera.
+//
+//   declare(params)  register every field of the lesson's Params (once; drives UI/CLI/presets)
+//   init()           create GL resources (the context is current); throw to report a missing file
+//   resize(w, h)     the framebuffer changed size
+//   update(frame)    advance animation (dt in seconds)
+//   render(frame)    draw into frame.framebuffer, timing each pass with scope("name")
+//   gui()            the lesson's own ImGui widgets (the parameter panel is automatic)
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/camera.hpp"
+#include "core/params.hpp"
+#include "gl/timer.hpp"
+
+namespace shadowlab {
+
+struct LessonInfo {
+  std::string number;   // "01"
+  std::string name;     // "01_lighting": folder under lessons/ and shaders/
+  std::string title;    // "Lighting"
+  std::string summary;  // one line for the launcher
+  int difficulty = 1;   // 1 (intro) to 5
+  std::string help;     // F1 overlay: controls and what to try (several lines)
+};
+
+struct FrameInfo {
+  int index = 0;
+  double time = 0, dt = 0;  // seconds; headless runs use a fixed dt so frames are reproducible
+  int width = 0, height = 0;
+  unsigned framebuffer = 0;  // draw here (not necessarily 0)
+};
+
+// Counters of skipped or spent work that the header shows next to the timings
+// ("culled casters 12 / 40", "shadow triangles 120k").
+struct Counter {
+  std::string name;
+  std::string value;
+};
+
+class Lesson {
+ public:
+  virtual ~Lesson() = default;
+  virtual LessonInfo info() const = 0;
+  virtual void declare(ParamRegistry& params) = 0;
+  virtual void init() = 0;
+  virtual void resize(int width, int height) {}
+  virtual void update(const FrameInfo& frame) {}
+  virtual void render(const FrameInfo& frame) = 0;
+  virtual void gui() {}
+
+  // Set up by the framework before init(); lessons use them freely.
+  OrbitCamera camera;
+  gl::GpuTimers timers;
+  std::vector<Counter> counters;  // refilled by the lesson each frame
+
+  gl::TimerScope scope(const std::string& pass) { return gl::TimerScope(timers, pass); }
+};
+
+// Runs a lesson with the shared command line. Returns the process exit code:
+// 0 ok, 1 runtime failure (missing file, shader error headless), 2 bad command line or parameter,
+// 3 GL errors seen with --strict-gl. The framework owns the lesson so that its GL objects are
+// released while the context still exists:  int main(int c, char** v) { return runLesson<MyLesson>(c, v); }
+int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, char** argv);
+template <class L>
+int runLesson(int argc, char** argv) {
+  return runLesson([] { return std::unique_ptr<Lesson>(new L()); }, argc, argv);
+}
+
+// The camera's pose as hidden parameters (camera.yaw, ...), so presets snapshot it.
+void declareCamera(ParamRegistry& params, OrbitCamera& camera);
+
+}  // namespace shadowlab

@@ -1,0 +1,212 @@
+#include "app/ui.hpp"
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace shadowlab {
+namespace {
+ImGuiStyle g_baseStyle;
+}
+
+void Ui::init(Context& context, float scale) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini littering the working directory
+  ImGui::StyleColorsDark();
+  g_baseStyle = ImGui::GetStyle();
+  headless_ = context.headless();
+  if (!headless_) ImGui_ImplGlfw_InitForOpenGL(context.window(), true);
+  ImGui_ImplOpenGL3_Init("#version 410 core");
+  initialised_ = true;
+  setScale(scale);
+}
+
+void Ui::shutdown() {
+  if (!initialised_) return;
+  ImGui_ImplOpenGL3_Shutdown();
+  if (!headless_) ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  initialised_ = false;
+}
+
+void Ui::setScale(float scale) {
+  scale_ = std::clamp(scale, 0.5f, 4.0f);
+  ImGuiStyle& style = ImGui::GetStyle();
+  style = g_baseStyle;
+  style.ScaleAllSizes(scale_);
+  ImGui::GetIO().FontGlobalScale = scale_;
+}
+
+void Ui::newFrame(double dt) {
+  ImGui_ImplOpenGL3_NewFrame();
+  if (!headless_) ImGui_ImplGlfw_NewFrame();
+  ImGuiIO& io = ImGui::GetIO();
+  io.DeltaTime = float(std::max(dt, 1e-4));
+  ImGui::NewFrame();
+}
+
+void Ui::render() {
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+bool Ui::wantsMouse() const { return initialised_ && ImGui::GetIO().WantCaptureMouse; }
+bool Ui::wantsKeyboard() const { return initialised_ && ImGui::GetIO().WantCaptureKeyboard; }
+
+void Ui::header(const HeaderData& d) {
+  ImGui::SetNextWindowPos(ImVec2(8 * scale_, 8 * scale_), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
+  ImGui::Begin("shadowlab", nullptr, flags);
+  if (d.info) ImGui::Text("%s  %s", d.info->number.c_str(), d.info->title.c_str());
+  ImGui::TextDisabled("%s", d.gpu.c_str());
+  ImGui::Text("%.2f ms  (%.0f fps)", d.frameMs, d.frameMs > 0 ? 1000.0 / d.frameMs : 0.0);
+  if (d.passes && !d.passes->empty() && ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn("pass");
+    ImGui::TableSetupColumn("GPU ms");
+    ImGui::TableSetupColumn("CPU ms");
+    ImGui::TableHeadersRow();
+    for (const auto& p : *d.passes) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(p.name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", p.gpuMs);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", p.cpuMs);
+    }
+    ImGui::EndTable();
+  }
+  if (d.counters)
+    for (const auto& c : *d.counters) ImGui::Text("%s: %s", c.name.c_str(), c.value.c_str());
+  for (const auto& e : d.errors) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 50.0f);
+    ImGui::TextUnformatted(e.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+  }
+  if (!d.status.empty()) ImGui::TextDisabled("%s", d.status.c_str());
+  ImGui::TextDisabled("F1 help");
+  ImGui::End();
+}
+
+void Ui::help(const LessonInfo& info, const ParamRegistry& params, bool* open) {
+  if (!*open) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->Size.x * 0.5f, vp->Size.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  ImGui::Begin("Help (F1)", open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::Text("%s  %s", info.number.c_str(), info.title.c_str());
+  ImGui::TextWrapped("%s", info.summary.c_str());
+  ImGui::Separator();
+  ImGui::TextUnformatted(info.help.c_str());
+  ImGui::Separator();
+  ImGui::TextUnformatted(
+      "Mouse: left drag orbit, right drag pan, wheel zoom\n"
+      "F1 help   F11 fullscreen   F12 screenshot   Ctrl +/- UI scale   R reload shaders   Esc quit");
+  bool any = false;
+  for (const auto& p : params.params()) {
+    if (p.hotkey.empty()) continue;
+    if (!any) ImGui::Separator();
+    any = true;
+    ImGui::Text("%-3s %s", p.hotkey.c_str(), p.name.c_str());
+  }
+  ImGui::End();
+}
+
+bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status) {
+  bool changed = false;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->Size.x - 8 * scale_, 8 * scale_), ImGuiCond_Appearing, ImVec2(1, 0));
+  ImGui::SetNextWindowSize(ImVec2(360 * scale_, 0), ImGuiCond_Appearing);
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  ImGui::Begin("Parameters", nullptr, ImGuiWindowFlags_NoSavedSettings);
+
+  // Presets: load one, or save the current state under a name.
+  const auto names = presets.names();
+  if (ImGui::BeginCombo("preset", presetIndex_ >= 0 && presetIndex_ < int(names.size()) ? names[presetIndex_].c_str() : "(choose)")) {
+    for (int i = 0; i < int(names.size()); ++i) {
+      if (ImGui::Selectable(names[i].c_str(), i == presetIndex_)) {
+        presetIndex_ = i;
+        try {
+          presets.apply(names[i], params);
+          status = "preset " + names[i];
+        } catch (const ParamError& e) {
+          status = e.what();
+        }
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::InputText("##name", presetName_, sizeof presetName_);
+  ImGui::SameLine();
+  if (ImGui::Button("save preset")) {
+    try {
+      presets.capture(presetName_, params);
+      presets.save(presets.path);
+      status = "saved preset '" + std::string(presetName_) + "' to " + presets.path;
+    } catch (const ParamError& e) {
+      status = e.what();
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("defaults")) {
+    params.resetDefaults();
+    changed = true;
+  }
+  ImGui::Separator();
+
+  std::string group;
+  bool open = true;
+  for (const Param& p : params.params()) {
+    if (p.hidden) continue;
+    const auto dot = p.name.find('.');
+    const std::string g = dot == std::string::npos ? "" : p.name.substr(0, dot);
+    if (g != group) {
+      group = g;
+      open = g.empty() || ImGui::CollapsingHeader(g.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+    }
+    if (!open) continue;
+    const char* label = p.name.c_str() + (dot == std::string::npos ? 0 : dot + 1);
+    ImGui::PushID(p.name.c_str());
+    bool edited = false;
+    switch (p.kind) {
+      case ParamKind::Float: edited = ImGui::SliderFloat(label, static_cast<float*>(p.target), p.min, p.max); break;
+      case ParamKind::Int: edited = ImGui::SliderInt(label, static_cast<int*>(p.target), int(p.min), int(p.max)); break;
+      case ParamKind::Bool: edited = ImGui::Checkbox(label, static_cast<bool*>(p.target)); break;
+      case ParamKind::Choice: {
+        int* v = static_cast<int*>(p.target);
+        if (ImGui::BeginCombo(label, p.choices[std::clamp(*v, 0, int(p.choices.size()) - 1)].c_str())) {
+          for (int i = 0; i < int(p.choices.size()); ++i)
+            if (ImGui::Selectable(p.choices[i].c_str(), i == *v)) {
+              *v = i;
+              edited = true;
+            }
+          ImGui::EndCombo();
+        }
+        break;
+      }
+      case ParamKind::Vec3: edited = ImGui::SliderFloat3(label, static_cast<float*>(p.target), p.min, p.max); break;
+      case ParamKind::Color: edited = ImGui::ColorEdit3(label, static_cast<float*>(p.target)); break;
+    }
+    if (ImGui::IsItemHovered() && !p.why.empty()) ImGui::SetTooltip("%s%s%s", p.why.c_str(),
+        p.hotkey.empty() ? "" : "\nhotkey: ", p.hotkey.c_str());
+    if (edited) {
+      params.touch();
+      changed = true;
+    }
+    ImGui::PopID();
+  }
+  ImGui::End();
+  return changed;
+}
+
+}  // namespace shadowlab

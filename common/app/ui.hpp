@@ -1,0 +1,48 @@
+#pragma once
+// The framework's ImGui layer: the header panel every lesson shares (title, GPU and GL version,
+// ms and fps, per-pass GPU ms, counters, shader errors), the F1 help overlay, the automatic
+// parameter panel with presets, and the UI scale for projectors.
+#include <string>
+#include <vector>
+
+#include "app/context.hpp"
+#include "app/lesson.hpp"
+#include "core/params.hpp"
+
+namespace shadowlab {
+
+class Ui {
+ public:
+  void init(Context& context, float scale);
+  void shutdown();
+  void newFrame(double dt);
+  void render();  // draws into the currently bound framebuffer
+  bool wantsMouse() const;
+  bool wantsKeyboard() const;
+
+  void setScale(float scale);
+  float scale() const { return scale_; }
+
+  struct HeaderData {
+    const LessonInfo* info = nullptr;
+    std::string gpu;          // renderer and GL version
+    double frameMs = 0;       // CPU frame time, averaged
+    const std::vector<gl::PassTiming>* passes = nullptr;
+    const std::vector<Counter>* counters = nullptr;
+    std::vector<std::string> errors;  // shader and file errors, file:line first
+    std::string status;       // transient message ("saved screenshot to ...")
+  };
+  void header(const HeaderData& data);
+  void help(const LessonInfo& info, const ParamRegistry& params, bool* open);
+  // Returns true when a parameter changed.
+  bool paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status);
+
+ private:
+  bool initialised_ = false;
+  bool headless_ = false;
+  float scale_ = 1.0f;
+  char presetName_[64] = "my_preset";
+  int presetIndex_ = -1;
+};
+
+}  // namespace shadowlab

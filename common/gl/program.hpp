@@ -1,0 +1,63 @@
+#pragma once
+// Shader programs loaded from the source tree (shaders/, root fixed at configure time, SHADOWLAB_ROOT
+// overrides), with #include and #line (core/shader_source), and hot reload: when a file changes the
+// program is rebuilt; if that fails the last good program stays in use and error() says why, with
+// file:line, for the UI header.
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/shader_source.hpp"
+#include "gl/objects.hpp"
+
+namespace shadowlab::gl {
+
+class Program {
+ public:
+  Program() = default;
+  // `files` are relative to the shader root, e.g. {"01_lighting/scene.vert", "01_lighting/scene.frag"};
+  // the stage comes from the extension. `defines` are inserted after #version ("#define NAME 1").
+  Program(std::string label, std::vector<std::string> files, std::vector<std::string> defines = {});
+  ~Program();
+  // Registered by address for the UI's error list and reload-all: not copyable or movable.
+  Program(const Program&) = delete;
+  Program& operator=(const Program&) = delete;
+
+  // Compiles and links. On failure the previous program (if any) is kept and error() is set;
+  // returns whether the new build succeeded.
+  bool build();
+  // Polls the files (cheaply, at most every 250 ms) and rebuilds when one changed.
+  bool reloadIfChanged();
+  bool valid() const { return bool(program_); }
+  const std::string& error() const { return error_; }
+  const std::string& label() const { return label_; }
+  GLuint id() const { return program_.id(); }
+
+  void use() const { glUseProgram(program_.id()); }
+  GLint location(const char* name) const;  // cached; -1 when the uniform is unused
+  void set(const char* name, float v) const;
+  void set(const char* name, int v) const;
+  void set(const char* name, bool v) const { set(name, int(v)); }
+  void set(const char* name, const glm::vec2& v) const;
+  void set(const char* name, const glm::vec3& v) const;
+  void set(const char* name, const glm::vec4& v) const;
+  void set(const char* name, const glm::mat3& v) const;
+  void set(const char* name, const glm::mat4& v) const;
+
+ private:
+  std::string label_;
+  std::vector<std::string> files_;
+  std::vector<std::string> defines_;
+  std::vector<ShaderSource> sources_;
+  ProgramHandle program_;
+  std::string error_;
+  double lastPoll_ = 0;
+  mutable std::unordered_map<std::string, GLint> locations_;
+};
+
+// Every live Program, so the framework can list shader errors in the header and reload all.
+const std::vector<Program*>& livePrograms();
+
+}  // namespace shadowlab::gl

@@ -1,0 +1,60 @@
+#include "gl/texture.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/paths.hpp"
+#include "gl/caps.hpp"
+
+namespace shadowlab::gl {
+
+Texture uploadTexture(const Image8& image, const std::string& label, bool mipmaps) {
+  static constexpr GLenum kFormats[] = {0, GL_RED, GL_RG, GL_RGB, GL_RGBA};
+  static constexpr GLenum kInternal[] = {0, GL_R8, GL_RG8, GL_SRGB8, GL_SRGB8_ALPHA8};
+  Texture tex = makeTexture(GL_TEXTURE_2D, label);
+  glBindTexture(GL_TEXTURE_2D, tex.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  // Files are top row first; GL's t = 0 is the bottom row. Upload flipped so uv (0,0) is the
+  // image's bottom-left, as every modelling tool assumes.
+  std::vector<std::uint8_t> flipped(image.data.size());
+  const std::size_t row = std::size_t(image.width) * image.channels;
+  for (int y = 0; y < image.height; ++y)
+    std::memcpy(&flipped[std::size_t(image.height - 1 - y) * row], &image.data[std::size_t(y) * row], row);
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(kInternal[image.channels]), image.width, image.height, 0,
+               kFormats[image.channels], GL_UNSIGNED_BYTE, flipped.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  if (mipmaps) {
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    if (caps().anisotropic)
+      glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(8.0f, caps().maxAnisotropy));
+  } else {
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return tex;
+}
+
+Texture loadTexture(const std::string& name) {
+  return uploadTexture(loadImage(textureRoot() + "/" + name, 4), "texture:" + name);
+}
+
+Image8 readPixels(GLuint fbo, int width, int height) {
+  Image8 img;
+  img.width = width;
+  img.height = height;
+  img.channels = 4;
+  img.data.resize(std::size_t(width) * height * 4);
+  std::vector<std::uint8_t> raw(img.data.size());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
+  const std::size_t row = std::size_t(width) * 4;
+  for (int y = 0; y < height; ++y)
+    std::memcpy(&img.data[std::size_t(y) * row], &raw[std::size_t(height - 1 - y) * row], row);
+  return img;
+}
+
+}  // namespace shadowlab::gl

@@ -1,0 +1,19 @@
+#pragma once
+// Textures from files under textures/ (stb_image through core/image) or from CPU images, and
+// framebuffer read-backs into CPU images.
+#include <string>
+
+#include "core/image.hpp"
+#include "gl/objects.hpp"
+
+namespace shadowlab::gl {
+
+// Loads textures/<name> with a full mip chain, trilinear filtering and repeat wrapping (anisotropic
+// 8x when the extension is there). Throws std::runtime_error naming the path when it cannot be read.
+Texture loadTexture(const std::string& name);
+Texture uploadTexture(const Image8& image, const std::string& label, bool mipmaps = true);
+
+// Reads the colour attachment 0 of `fbo` (0: the default framebuffer) into a top-row-first image.
+Image8 readPixels(GLuint fbo, int width, int height);
+
+}  // namespace shadowlab::gl

@@ -1,0 +1,64 @@
+#pragma once
+// Per-pass timing without stalls: each named pass gets a ring of timestamp query pairs; a result is
+// read only when the GPU says it is available (a few frames later), so the CPU never waits.
+// CPU time of the same scope is measured alongside. Both are averaged over a sliding window.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "gl/objects.hpp"
+
+namespace shadowlab::gl {
+
+struct PassTiming {
+  std::string name;
+  double gpuMs = 0, cpuMs = 0;         // averaged over the window
+  double lastGpuMs = 0, lastCpuMs = 0;  // the latest resolved sample
+  int samples = 0;
+};
+
+class GpuTimers {
+ public:
+  static constexpr int kRing = 6;      // frames in flight before a query pair is reused
+  static constexpr int kWindow = 30;   // frames in the average
+
+  void begin(const std::string& pass);
+  void end();
+  // Once a frame, after the passes: collects every result that is ready.
+  void collect();
+  const std::vector<PassTiming>& passes() const { return timings_; }
+  const PassTiming* find(const std::string& pass) const;
+  double totalGpuMs() const;
+
+ private:
+  struct Slot {
+    Query start, stop;
+    bool pending = false;
+    double cpuMs = 0;
+  };
+  struct Pass {
+    std::string name;
+    std::array<Slot, kRing> ring;
+    int next = 0;
+    std::vector<double> gpuHistory, cpuHistory;
+  };
+  Pass& pass(const std::string& name);
+  std::vector<Pass> passes_;
+  std::vector<PassTiming> timings_;
+  int open_ = -1;
+  double openCpuStart_ = 0;
+};
+
+// Times a scope: `auto t = timers.scope("shadow map");`
+class TimerScope {
+ public:
+  TimerScope(GpuTimers& t, const std::string& pass) : timers_(t) { timers_.begin(pass); }
+  ~TimerScope() { timers_.end(); }
+  TimerScope(const TimerScope&) = delete;
+  TimerScope& operator=(const TimerScope&) = delete;
+
+ private:
+  GpuTimers& timers_;
+};
+
+}  // namespace shadowlab::gl

@@ -1,0 +1,277 @@
+// Lesson 01: lighting. The lecture's illumination model with the visibility term V_i (seeds 004):
+//
+//   I = ka Ia + sum_i V_i f_att,i I_i [kd (N.L_i) + ks (R_i.V)^pow]
+//
+// Three lights of the three kinds (directional, point, spot), Phong or Blinn-Phong highlights,
+// attenuation, texture modulate, light gizmos. V_i is fixed at 1 here: every pixel that faces a
+// light is lit, which is exactly what the rest of the course sets out to correct.
+//
+// Controls: left drag orbit, right drag pan, wheel zoom; V cycles the view, B toggles Blinn,
+// T textures, G gizmos, A animates the point light; F1 help.
+// Exercises (exercises.hpp): the lighting term, the NDC-to-texture matrix, attenuation, the spot
+// cone. `--set impl=student` shades every vertex on the CPU with your functions.
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app/lesson.hpp"
+#include "core/lighting.hpp"
+#include "core/mesh_gen.hpp"
+#include "core/scene_gen.hpp"
+#include "exercises.hpp"
+#include "gl/mesh_gpu.hpp"
+#include "gl/program.hpp"
+
+using namespace shadowlab;
+
+namespace {
+
+enum class View { Lit, Normals, Albedo, NdcRemap };
+enum class Impl { Reference, Student };
+enum class Shading { PerPixelGpu, PerVertexCpu };
+
+struct Params {
+  int scene = 0;                      // which procedural scene (showcase: shapes on a plane)
+  int triangles = 100000;             // scene size: shading cost grows with it
+  View view = View::Lit;              // debug views: what the shader sees
+  Impl impl = Impl::Reference;        // student: your exercises.cpp drives the shading
+  Shading shading = Shading::PerPixelGpu;  // per-vertex CPU shading shows Gouraud's artefacts
+  float ambient = 0.08f;              // ka Ia: the light that reaches everywhere
+  float specular = 0.35f;             // ks: strength of the highlight
+  float shininess = 48.0f;            // pow: size of the highlight (larger is smaller)
+  bool blinn = true;                  // (N.H)^pow instead of the lecture's (R.V)^pow
+  bool textures = true;               // modulate: texture colour times material colour
+  bool gizmos = true;                 // draw where the lights are
+  bool animate = false;               // move the point light around the scene
+  Light lights[3];
+};
+
+constexpr int kLightCount = 3;
+
+}  // namespace
+
+class LightingLesson : public Lesson {
+ public:
+  LessonInfo info() const override {
+    return {"01", "01_lighting", "Lighting",
+            "The illumination model with the visibility term V_i: ambient, diffuse, specular, attenuation, three kinds of light.",
+            1,
+            "Orbit around the scene and move the lights (Parameters panel).\n"
+            "Try: turn lights on one at a time; compare Phong (B off) and Blinn highlights;\n"
+            "raise light1.attenuation's quadratic term; set view=normals and view=ndc_remap.\n"
+            "Notice: nothing casts a shadow. V_i = 1 everywhere: that is what lessons 02+ fix."};
+  }
+
+  void declare(ParamRegistry& r) override {
+    camera.target = {0, 0.8f, 0};
+    r.addChoice("scene", &p_.scene, sceneNames(), "procedural scene (deterministic from its seed)");
+    r.add("triangles", &p_.triangles, 10000, 1000000, "scene size in triangles: the cost of every pass");
+    r.addChoice("view", &p_.view, {"lit", "normals", "albedo", "ndc_remap"}, "what the fragment shader outputs").hotkey = "V";
+    r.addChoice("impl", &p_.impl, {"reference", "student"}, "whose exercise code shades (student: CPU per vertex)");
+    r.addChoice("shading", &p_.shading, {"pixel_gpu", "vertex_cpu"}, "per-pixel on the GPU, or per-vertex on the CPU (Gouraud)");
+    r.add("ambient", &p_.ambient, 0, 1, "ka Ia: light that reaches everywhere, even where V_i = 0");
+    r.add("specular", &p_.specular, 0, 1, "ks: how strong the highlight is");
+    r.add("shininess", &p_.shininess, 1, 256, "the exponent pow: how tight the highlight is");
+    r.add("blinn", &p_.blinn, "Blinn's (N.H)^pow instead of the lecture's (R.V)^pow").hotkey = "B";
+    r.add("textures", &p_.textures, "modulate: texture colour times material colour").hotkey = "T";
+    r.add("gizmos", &p_.gizmos, "draw the lights").hotkey = "G";
+    r.add("animate", &p_.animate, "orbit the point light around the scene").hotkey = "A";
+
+    Light& sun = p_.lights[0];
+    sun = {LightKind::Directional};
+    sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
+    sun.color = {1.0f, 0.95f, 0.85f};
+    sun.intensity = 0.7f;
+    Light& bulb = p_.lights[1];
+    bulb = {LightKind::Point, {3.0f, 3.0f, 2.0f}};
+    bulb.color = {1.0f, 0.6f, 0.3f};
+    bulb.intensity = 2.0f;
+    bulb.attenuation = {1.0f, 0.1f, 0.05f};
+    Light& spot = p_.lights[2];
+    spot = {LightKind::Spot, {-3.0f, 5.0f, 3.0f}};
+    spot.direction = glm::normalize(glm::vec3(0.5f, -1.0f, -0.5f));
+    spot.color = {0.4f, 0.6f, 1.0f};
+    spot.intensity = 3.0f;
+    spot.attenuation = {1.0f, 0.05f, 0.02f};
+    spot.enabled = false;
+    for (int i = 0; i < kLightCount; ++i) {
+      const std::string n = "light" + std::to_string(i) + ".";
+      Light& l = p_.lights[i];
+      r.add(n + "enabled", &l.enabled, "switch this light on or off").hotkey = std::to_string(i + 1);
+      r.addChoice(n + "kind", &l.kind, {"point", "spot", "directional"}, "point, spot (a cone) or directional (the sun)");
+      r.add(n + "position", &l.position, -50, 50, "where a point or spot light is");
+      r.add(n + "direction", &l.direction, -1, 1, "spot axis, or the direction sunlight travels");
+      r.addColor(n + "color", &l.color, "I_i: the light's colour");
+      r.add(n + "intensity", &l.intensity, 0, 20, "I_i: the light's strength");
+      r.add(n + "attenuation", &l.attenuation, 0, 10, "c0 c1 c2 of f_att = 1 / (c0 + c1 d + c2 d^2)");
+      r.add(n + "spot_inner", &l.spotInner, 0.01f, 1.5f, "half-angle of the spot's full-strength core (radians)");
+      r.add(n + "spot_outer", &l.spotOuter, 0.01f, 1.5f, "half-angle where the spot fades to zero (radians)");
+    }
+  }
+
+  void init() override {
+    sceneProgram_.build();
+    unlit_.build();
+    gizmo_ = gl::uploadMesh(makeSphere(0.12f, 16, 8), "light gizmo");
+    loadScene();
+  }
+
+  void update(const FrameInfo& f) override {
+    if (p_.scene != builtScene_ || p_.triangles != builtTriangles_) loadScene();
+    if (p_.animate) {
+      const float a = float(f.time) * 0.6f;
+      p_.lights[1].position = {4.0f * std::cos(a), p_.lights[1].position.y, 4.0f * std::sin(a)};
+    }
+  }
+
+  void render(const FrameInfo& f) override {
+    const glm::mat4 viewProj = camera.projection(float(f.width) / float(f.height)) * camera.view();
+    const bool cpu = p_.impl == Impl::Student || p_.shading == Shading::PerVertexCpu;
+    counters = {{"triangles", std::to_string(scene.triangleCount())},
+                {"shading", cpu ? (p_.impl == Impl::Student ? "CPU per vertex, student code" : "CPU per vertex") : "GPU per pixel"}};
+
+    // ==== 1. CPU shading (only for vertex_cpu or impl=student) ====================================
+    if (cpu) {
+      auto t = scope("cpu shading");
+      shadeVerticesOnCpu();
+    }
+
+    // ==== 2. the scene, lit by the illumination model =============================================
+    {
+      auto t = scope("scene");
+      glEnable(GL_DEPTH_TEST);
+      glEnable(GL_CULL_FACE);
+      glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      sceneProgram_.use();
+      sceneProgram_.set("uViewProj", viewProj);
+      sceneProgram_.set("uEye", camera.position());
+      sceneProgram_.set("uAmbient", glm::vec3(p_.ambient));
+      sceneProgram_.set("uBlinn", p_.blinn);
+      sceneProgram_.set("uView", cpu && p_.view == View::Lit ? 4 : int(p_.view));
+      sceneProgram_.set("uNdcToTexture", p_.impl == Impl::Student ? ex01::ndcToTexture() : lighting::ndcToTexture());
+      sceneProgram_.set("uTexture", 0);
+      setLightUniforms();
+      for (std::size_t i = 0; i < scene.objects.size(); ++i) drawObject(i);
+    }
+
+    // ==== 3. light gizmos ===========================================================================
+    if (p_.gizmos) {
+      auto t = scope("gizmos");
+      unlit_.use();
+      for (const Light& l : p_.lights) {
+        if (!l.enabled) continue;
+        const glm::vec3 at = l.kind == LightKind::Directional ? camera.target - 6.0f * l.direction : l.position;
+        unlit_.set("uMvp", viewProj * glm::translate(glm::mat4(1), at));
+        unlit_.set("uColor", glm::vec4(glm::min(l.color * 1.5f, glm::vec3(1)), 1));
+        gizmo_.draw();
+      }
+    }
+  }
+
+ private:
+  void loadScene() {
+    scene = makeScene(sceneNames()[p_.scene], 1, std::size_t(p_.triangles));
+    gpu_ = gl::uploadScene(scene, "scene");
+    colors_.clear();
+    builtScene_ = p_.scene;
+    builtTriangles_ = p_.triangles;
+  }
+
+  void setLightUniforms() {
+    sceneProgram_.set("uLightCount", kLightCount);
+    for (int i = 0; i < kLightCount; ++i) {
+      const Light& l = p_.lights[i];
+      const std::string n = "uLights[" + std::to_string(i) + "].";
+      sceneProgram_.set((n + "kind").c_str(), int(l.kind));
+      sceneProgram_.set((n + "enabled").c_str(), l.enabled);
+      sceneProgram_.set((n + "position").c_str(), l.position);
+      sceneProgram_.set((n + "direction").c_str(), glm::normalize(l.direction));
+      sceneProgram_.set((n + "color").c_str(), l.color * l.intensity);
+      sceneProgram_.set((n + "attenuation").c_str(), l.attenuation);
+      sceneProgram_.set((n + "cosInner").c_str(), std::cos(l.spotInner));
+      sceneProgram_.set((n + "cosOuter").c_str(), std::cos(l.spotOuter));
+    }
+  }
+
+  void drawObject(std::size_t i) {
+    const SceneObject& o = scene.objects[i];
+    const Material& m = scene.materials[o.material];
+    sceneProgram_.set("uModel", o.model);
+    sceneProgram_.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(o.model)));
+    sceneProgram_.set("uAlbedo", m.albedo);
+    sceneProgram_.set("uSpecular", p_.specular);
+    sceneProgram_.set("uShininess", p_.shininess);
+    sceneProgram_.set("uTwoSided", m.twoSided);
+    const GLuint tex = gpu_.materialTextures[o.material].id();
+    sceneProgram_.set("uUseTexture", p_.textures && tex != 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
+    const gl::GpuMesh& mesh = gpu_.meshes[o.mesh];
+    glBindVertexArray(mesh.vao.id());
+    if (i < colors_.size()) {  // CPU-shaded colours for this object at attribute 3
+      glBindBuffer(GL_ARRAY_BUFFER, colors_[i].id());
+      glEnableVertexAttribArray(3);
+      glVertexAttribPointer(3, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    } else {
+      glDisableVertexAttribArray(3);
+      glVertexAttrib3f(3, 0, 0, 0);
+    }
+    mesh.draw();
+    glDisableVertexAttribArray(3);
+  }
+
+  // The same model as the shader, evaluated per vertex with the chosen implementation: with
+  // impl=student every term comes from the student's exercises.cpp.
+  void shadeVerticesOnCpu() {
+    const bool student = p_.impl == Impl::Student;
+    const glm::vec3 eye = camera.position();
+    while (colors_.size() < scene.objects.size()) colors_.push_back(gl::makeBuffer(GL_ARRAY_BUFFER, "cpu colours"));
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+      const SceneObject& o = scene.objects[i];
+      const Mesh& mesh = scene.meshes[o.mesh];
+      const Material& m = scene.materials[o.material];
+      const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.model));
+      scratch_.resize(mesh.positions.size());
+      for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        const glm::vec3 p = glm::vec3(o.model * glm::vec4(mesh.positions[v], 1));
+        glm::vec3 N = glm::normalize(normalMatrix * mesh.normals[v]);
+        const glm::vec3 V = glm::normalize(eye - p);
+        if (m.twoSided && glm::dot(N, V) < 0) N = -N;
+        glm::vec3 c = glm::vec3(p_.ambient) * m.albedo;
+        for (const Light& l : p_.lights) {
+          if (!l.enabled) continue;
+          const glm::vec3 L = l.toLight(p);
+          float fatt = 1.0f, cone = 1.0f;
+          if (l.kind != LightKind::Directional) {
+            const float d = l.distanceTo(p);
+            fatt = student ? ex01::attenuation(l.attenuation, d) : lighting::attenuation(l.attenuation, d);
+          }
+          if (l.kind == LightKind::Spot) {
+            const float cosAngle = glm::dot(glm::normalize(l.direction), -L);
+            cone = student ? ex01::spotFactor(cosAngle, l.spotInner, l.spotOuter) : lighting::spotFactor(cosAngle, l.spotInner, l.spotOuter);
+          }
+          const glm::vec3 I = l.color * l.intensity * cone;
+          c += student ? ex01::lightContribution(N, L, V, I, fatt, 1.0f, m.albedo, p_.specular, p_.shininess)
+                       : (p_.blinn ? lighting::lightContributionBlinn : lighting::lightContribution)(
+                             N, L, V, I, fatt, 1.0f, m.albedo, p_.specular, p_.shininess);
+        }
+        scratch_[v] = c;  // the shader modulates it by the texture
+      }
+      glBindBuffer(GL_ARRAY_BUFFER, colors_[i].id());
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(scratch_.size() * sizeof(glm::vec3)), scratch_.data(), GL_STREAM_DRAW);
+    }
+  }
+
+  Params p_;
+  Scene scene;
+  gl::GpuScene gpu_;
+  gl::Program sceneProgram_{"01 scene", {"01_lighting/scene.vert", "01_lighting/scene.frag"}};
+  gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};
+  gl::GpuMesh gizmo_;
+  std::vector<gl::Buffer> colors_;    // per object, CPU-shaded vertex colours
+  std::vector<glm::vec3> scratch_;
+  int builtScene_ = -1, builtTriangles_ = -1;
+};
+
+int main(int argc, char** argv) { return runLesson<LightingLesson>(argc, argv); }

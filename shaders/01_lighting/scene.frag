@@ -1,0 +1,47 @@
+#version 410 core
+#include "common/lighting.glsl"
+
+in vec3 vWorldPos;
+in vec3 vNormal;
+in vec2 vUv;
+in vec3 vColor;
+in vec4 vClip;
+
+uniform Light uLights[MAX_LIGHTS];
+uniform int uLightCount;
+uniform vec3 uEye;
+uniform vec3 uAmbient;        // ka Ia
+uniform vec3 uAlbedo;         // kd
+uniform float uSpecular;      // ks
+uniform float uShininess;     // pow
+uniform bool uBlinn;
+uniform bool uUseTexture;
+uniform sampler2D uTexture;
+uniform bool uTwoSided;
+uniform int uView;            // 0 lit, 1 normals, 2 albedo, 3 ndc remap, 4 vertex colour (CPU)
+uniform mat4 uNdcToTexture;   // exercise 01.2, used by the ndc view
+
+out vec4 fragColor;
+
+void main() {
+  vec3 N = normalize(vNormal);
+  vec3 V = normalize(uEye - vWorldPos);
+  if (uTwoSided && dot(N, V) < 0.0) N = -N;  // leaf cards are lit from the side we see
+  vec3 kd = uAlbedo;
+  if (uUseTexture) kd *= texture(uTexture, vUv).rgb;  // "modulate": texture times material
+
+  if (uView == 1) { fragColor = vec4(N * 0.5 + 0.5, 1.0); return; }
+  if (uView == 2) { fragColor = vec4(toDisplay(kd), 1.0); return; }
+  if (uView == 3) { fragColor = vec4((uNdcToTexture * vec4(vClip.xyz / vClip.w, 1.0)).xyz, 1.0); return; }
+  if (uView == 4) { fragColor = vec4(toDisplay(vColor * (uUseTexture ? texture(uTexture, vUv).rgb : vec3(1.0))), 1.0); return; }
+
+  // ---- the illumination model, V_i = 1 for every light (lesson 01: no shadows yet) ----
+  vec3 color = uAmbient * kd;
+  for (int i = 0; i < uLightCount; ++i) {
+    vec3 L = toLight(uLights[i], vWorldPos);
+    float visibility = 1.0;  // V_i: the rest of the course is about computing this
+    color += lightContribution(N, L, V, incidentRadiance(uLights[i], vWorldPos), visibility, kd,
+                               uSpecular, uShininess, uBlinn);
+  }
+  fragColor = vec4(toDisplay(color), 1.0);
+}

@@ -1,0 +1,59 @@
+# GPU tests through headless EGL (Mesa's llvmpipe on CI): the GL layer itself (gpu_tests) and every
+# lesson program run as users run it (lesson_check). Label gpu. Any GL error fails: lessons run
+# with SHADOWLAB_STRICT_GL=1 (exit 3 on a GL error), and gpu_tests checks errorCount() per case.
+if(SHADOWLAB_UNIT_ONLY)
+  return()
+endif()
+
+file(GLOB GPU_TEST_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/gpu/test_*.cpp)
+add_executable(gpu_tests ${GPU_TEST_SOURCES})
+target_link_libraries(gpu_tests PRIVATE shadowlab_test_main shadowlab_app)
+doctest_discover_tests(gpu_tests PROPERTIES LABELS gpu)
+
+add_executable(lesson_check ${CMAKE_CURRENT_SOURCE_DIR}/gpu/lesson_check.cpp)
+target_link_libraries(lesson_check PRIVATE shadowlab_core)
+
+find_program(XVFB_RUN xvfb-run)
+set(shots ${CMAKE_BINARY_DIR}/test-screenshots)
+file(MAKE_DIRECTORY ${shots})
+foreach(lesson IN LISTS SHADOWLAB_LESSONS)
+  string(REGEX REPLACE "^lesson_" "" name ${lesson})
+  set(bin $<TARGET_FILE:${lesson}>)
+  add_test(NAME gpu.${name}.headless COMMAND lesson_check ${bin} --png ${shots}/${name}.png
+           -- --headless --frames 5 --screenshot ${shots}/${name}.png)
+  add_test(NAME gpu.${name}.presets COMMAND lesson_check ${bin} --all-presets --png ${shots}/${name}_preset.png
+           -- --headless --frames 2 --size 640x360 --screenshot ${shots}/${name}_preset.png)
+  add_test(NAME gpu.${name}.ui COMMAND lesson_check ${bin} --png ${shots}/${name}_ui.png
+           -- --headless --frames 3 --show-ui --screenshot ${shots}/${name}_ui.png)
+  add_test(NAME gpu.${name}.bench COMMAND lesson_check ${bin}
+           -- --headless --frames 10 --size 320x180 --bench ${shots}/${name}_bench.csv)
+  set_tests_properties(gpu.${name}.headless gpu.${name}.presets gpu.${name}.ui gpu.${name}.bench PROPERTIES LABELS gpu)
+  # Bad input: one-line errors naming the value and the choices (exit 2), missing files named (exit 1).
+  add_test(NAME cli.${name}.unknown_flag COMMAND lesson_check ${bin} --expect-exit 2
+           --expect-stderr "unknown flag '--frobnicate'; valid: --headless" -- --frobnicate)
+  add_test(NAME cli.${name}.unknown_param COMMAND lesson_check ${bin} --expect-exit 2
+           --expect-stderr "unknown parameter 'nonsense'; valid: " -- --headless --set nonsense=1)
+  add_test(NAME cli.${name}.unknown_preset COMMAND lesson_check ${bin} --expect-exit 2
+           --expect-stderr "unknown preset 'no_such_preset'" -- --headless --preset no_such_preset)
+  add_test(NAME cli.${name}.list_params COMMAND lesson_check ${bin} -- --list-params)
+  add_test(NAME cli.${name}.help COMMAND lesson_check ${bin} -- --help)
+  set_tests_properties(cli.${name}.unknown_flag cli.${name}.unknown_param cli.${name}.unknown_preset
+                       cli.${name}.list_params cli.${name}.help PROPERTIES LABELS gpu)
+  if(XVFB_RUN)
+    add_test(NAME gpu.${name}.window COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x720x24"
+             $<TARGET_FILE:lesson_check> ${bin} --png ${shots}/${name}_window.png
+             -- --frames 10 --screenshot ${shots}/${name}_window.png)
+    set_tests_properties(gpu.${name}.window PROPERTIES LABELS gpu)
+  endif()
+endforeach()
+
+# Missing files: lesson 01's shader and a texture, removed from a copy of the tree.
+if(TARGET lesson_01_lighting)
+  add_test(NAME gpu.01_lighting.missing_shader COMMAND lesson_check $<TARGET_FILE:lesson_01_lighting>
+           --without shaders/01_lighting/scene.frag --expect-exit 1 --expect-stderr "shaders/01_lighting/scene.frag"
+           -- --headless --frames 1)
+  add_test(NAME gpu.01_lighting.missing_texture COMMAND lesson_check $<TARGET_FILE:lesson_01_lighting>
+           --without textures/checker.png --expect-exit 1 --expect-stderr "textures/checker.png"
+           -- --headless --frames 1)
+  set_tests_properties(gpu.01_lighting.missing_shader gpu.01_lighting.missing_texture PROPERTIES LABELS gpu)
+endif()

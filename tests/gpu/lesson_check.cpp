@@ -1,0 +1,160 @@
+// Runs a lesson program the way a student, a grader or CI does and checks the outcome.
+//   lesson_check LESSON_BINARY [--expect-exit N] [--expect-stderr TEXT] [--png FILE]
+//                [--root DIR] [--all-presets] -- ARGS...
+// --png: the file must be a valid PNG that is not blank (not one uniform colour).
+// --root: run with SHADOWLAB_ROOT=DIR (a doctored source tree: a missing shader or texture).
+// --without REL: run against a copy of the source tree (SHADOWLAB_SOURCE_ROOT) with REL removed,
+//   to prove a missing shader or texture is reported by name and never crashes.
+// --all-presets: run once per preset (from --list-presets), each with --preset NAME added.
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <fcntl.h>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/image.hpp"
+
+extern char** environ;
+namespace fs = std::filesystem;
+
+namespace {
+struct Result {
+  int exit = -1;
+  std::string out, err;
+};
+
+Result run(const std::vector<std::string>& args, const std::string& root) {
+  const fs::path dir = fs::temp_directory_path() / ("lesson_check_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const std::string outPath = (dir / "out").string(), errPath = (dir / "err").string();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e)
+    if (std::string(*e).rfind("SHADOWLAB_ROOT=", 0) != 0) env.push_back(*e);
+  if (!root.empty()) env.push_back("SHADOWLAB_ROOT=" + root);
+  env.push_back("SHADOWLAB_STRICT_GL=1");  // any GL error fails the run (exit 3)
+  std::vector<char*> envp, argv;
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  Result r;
+  pid_t pid;
+  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) == 0) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    r.exit = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  posix_spawn_file_actions_destroy(&actions);
+  auto slurp = [](const std::string& p) { std::ifstream in(p); std::stringstream s; s << in.rdbuf(); return s.str(); };
+  r.out = slurp(outPath);
+  r.err = slurp(errPath);
+  fs::remove_all(dir);
+  return r;
+}
+
+bool checkPng(const std::string& path) {
+  try {
+    const shadowlab::Image8 img = shadowlab::loadImage(path, 4);
+    if (shadowlab::isUniform(img)) {
+      std::cerr << "FAIL: " << path << " is blank (one colour)\n";
+      return false;
+    }
+    std::cout << "ok: " << path << " is a " << img.width << "x" << img.height << " PNG with content\n";
+    return true;
+  } catch (const std::exception& e) {
+    std::cerr << "FAIL: " << e.what() << '\n';
+    return false;
+  }
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::cerr << "usage: lesson_check LESSON [--expect-exit N] [--expect-stderr TEXT] [--png FILE] [--root DIR] [--all-presets] -- ARGS\n";
+    return 2;
+  }
+  const std::string lesson = argv[1];
+  int expectExit = 0;
+  std::string expectStderr, png, root;
+  bool allPresets = false;
+  std::vector<std::string> extra;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--") {
+      for (++i; i < argc; ++i) extra.push_back(argv[i]);
+    } else if (a == "--expect-exit" && i + 1 < argc) expectExit = std::atoi(argv[++i]);
+    else if (a == "--expect-stderr" && i + 1 < argc) expectStderr = argv[++i];
+    else if (a == "--png" && i + 1 < argc) png = argv[++i];
+    else if (a == "--root" && i + 1 < argc) root = argv[++i];
+    else if (a == "--all-presets") allPresets = true;
+    else if (a == "--without" && i + 1 < argc) {
+      // A doctored copy of the data the lessons read: shaders, textures, lesson presets.
+      const fs::path copy = fs::temp_directory_path() / ("lesson_check_root_" + std::to_string(getpid()));
+      fs::remove_all(copy);
+      for (const char* dir : {"shaders", "textures", "lessons"})
+        fs::copy(fs::path(SHADOWLAB_SOURCE_ROOT) / dir, copy / dir, fs::copy_options::recursive);
+      if (!fs::remove(copy / argv[++i])) {
+        std::cerr << "lesson_check: --without " << argv[i] << ": no such file in the source tree\n";
+        return 2;
+      }
+      root = copy.string();
+    }
+    else {
+      std::cerr << "lesson_check: unknown argument '" << a << "'\n";
+      return 2;
+    }
+  }
+  std::vector<std::string> presets = {""};
+  if (allPresets) {
+    const Result list = run({lesson, "--list-presets"}, root);
+    std::istringstream names(list.out);
+    presets.clear();
+    for (std::string n; std::getline(names, n);)
+      if (!n.empty()) presets.push_back(n);
+    if (presets.empty()) {
+      std::cerr << "FAIL: " << lesson << " lists no presets\n";
+      return 1;
+    }
+  }
+  int failures = 0;
+  for (const auto& preset : presets) {
+    std::vector<std::string> args = {lesson};
+    args.insert(args.end(), extra.begin(), extra.end());
+    if (!preset.empty()) args.insert(args.end(), {"--preset", preset});
+    const Result r = run(args, root);
+    const std::string what = preset.empty() ? lesson : lesson + " --preset " + preset;
+    if (r.exit != expectExit) {
+      std::cerr << "FAIL: " << what << " exited " << r.exit << ", expected " << expectExit << "\nstderr:\n" << r.err;
+      ++failures;
+      continue;
+    }
+    if (!expectStderr.empty() && r.err.find(expectStderr) == std::string::npos) {
+      std::cerr << "FAIL: " << what << " stderr lacks '" << expectStderr << "':\n" << r.err;
+      ++failures;
+      continue;
+    }
+    if (!expectStderr.empty() && std::count(r.err.begin(), r.err.end(), '\n') > 1) {
+      std::cerr << "FAIL: " << what << " error is not one line:\n" << r.err;
+      ++failures;
+      continue;
+    }
+    if (!png.empty() && !checkPng(png)) ++failures;
+    std::cout << "ok: " << what << " exit " << r.exit << (r.err.empty() ? "" : ", stderr: " + r.err) << '\n';
+  }
+  if (root.find("lesson_check_root_") != std::string::npos) fs::remove_all(root);
+  return failures == 0 ? 0 : 1;
+}

@@ -1,0 +1,151 @@
+// The GL layer on a real (headless EGL) context: capabilities, error detection, hot reload that
+// keeps the last good program, render targets and read-back, timer queries.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "app/context.hpp"
+#include "core/mesh.hpp"
+#include "gl/caps.hpp"
+#include "gl/debug.hpp"
+#include "gl/mesh_gpu.hpp"
+#include "gl/program.hpp"
+#include "gl/texture.hpp"
+#include "gl/timer.hpp"
+
+using namespace shadowlab;
+namespace fs = std::filesystem;
+
+namespace {
+Context& context() {
+  static std::unique_ptr<Context> ctx = [] {
+    auto c = createHeadlessContext({64, 64, "gpu_tests", true, false});
+    gl::installDebugOutput();
+    return c;
+  }();
+  return *ctx;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p) << text;
+  // Make the new write time visible even on coarse file-system clocks.
+  fs::last_write_time(p, fs::last_write_time(p) + std::chrono::seconds(1));
+}
+
+const char* kVert = "#version 410 core\nlayout(location = 0) in vec3 aPosition;\nvoid main() { gl_Position = vec4(aPosition, 1.0); }\n";
+const char* kFrag = "#version 410 core\nout vec4 c;\nuniform vec4 uColor;\nvoid main() { c = uColor; }\n";
+}  // namespace
+
+TEST_CASE("gl: the headless context is OpenGL 4.1 core or newer, with a framebuffer") {
+  Context& c = context();
+  CHECK(gl::caps().atLeast(4, 1));
+  CHECK(c.headless());
+  CHECK(c.framebuffer() != 0u);
+  CHECK(c.width() == 64);
+  MESSAGE(c.platform() << ": " << gl::caps().summary());
+}
+
+TEST_CASE("gl: a GL error is caught and counted") {
+  context();
+  const int before = gl::errorCount();
+  glEnable(0x1234);  // GL_INVALID_ENUM
+  gl::checkErrors("deliberate");
+  CHECK(gl::errorCount() == before + 1);
+}
+
+TEST_CASE("gl: hot reload keeps the last good program and names file and line of the error") {
+  context();
+  const fs::path root = fs::temp_directory_path() / "shadowlab_reload_test";
+  fs::remove_all(root);
+  write(root / "shaders/t/a.vert", kVert);
+  write(root / "shaders/t/a.frag", kFrag);
+  setenv("SHADOWLAB_ROOT", root.c_str(), 1);
+  const int errorsBefore = gl::errorCount();
+  {
+    gl::Program program("reload test", {"t/a.vert", "t/a.frag"});
+    REQUIRE(program.build());
+    const GLuint good = program.id();
+    CHECK(program.error().empty());
+
+    write(root / "shaders/t/a.frag", "#version 410 core\nout vec4 c;\nvoid main() {\n  c = vec4(1.0) +;\n}\n");
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));  // past the poll interval
+    CHECK_FALSE(program.reloadIfChanged());
+    CHECK(program.valid());
+    CHECK(program.id() == good);  // the last good program is still the one in use
+    CHECK(program.error().find((root / "shaders/t/a.frag").string() + ":4:") != std::string::npos);
+
+    write(root / "shaders/t/a.frag", kFrag);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    CHECK(program.reloadIfChanged());
+    CHECK(program.error().empty());
+  }
+  {
+    gl::Program missing("missing", {"t/a.vert", "t/none.frag"});
+    CHECK_FALSE(missing.build());
+    CHECK_FALSE(missing.valid());
+    CHECK(missing.error().find("t/none.frag") != std::string::npos);
+  }
+  unsetenv("SHADOWLAB_ROOT");
+  fs::remove_all(root);
+  CHECK(gl::errorCount() == errorsBefore);
+}
+
+TEST_CASE("gl: render target, a draw, and a top-row-first read-back") {
+  context();
+  const int errorsBefore = gl::errorCount();
+  const fs::path root = fs::temp_directory_path() / "shadowlab_draw_test";
+  write(root / "shaders/t/a.vert", kVert);
+  write(root / "shaders/t/a.frag", kFrag);
+  setenv("SHADOWLAB_ROOT", root.c_str(), 1);
+  gl::Program program("draw test", {"t/a.vert", "t/a.frag"});
+  REQUIRE(program.build());
+  unsetenv("SHADOWLAB_ROOT");
+
+  gl::RenderTarget rt = gl::makeRenderTarget(8, 8, "test target");
+  glBindFramebuffer(GL_FRAMEBUFFER, rt.fbo.id());
+  glViewport(0, 0, 8, 8);
+  glClearColor(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // A triangle covering the top half of the viewport (y > 0 in NDC).
+  Mesh tri;
+  tri.positions = {{-1, 0, 0}, {3, 0, 0}, {-1, 3, 0}};
+  tri.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  tri.uvs = {{0, 0}, {0, 0}, {0, 0}};
+  tri.indices = {0, 1, 2};
+  gl::GpuMesh mesh = gl::uploadMesh(tri, "test triangle");
+  program.use();
+  program.set("uColor", glm::vec4(1, 0, 0, 1));
+  glDisable(GL_DEPTH_TEST);
+  mesh.draw();
+  const Image8 img = gl::readPixels(rt.fbo.id(), 8, 8);
+  CHECK(img.at(4, 0)[0] == 255);  // top row: red triangle
+  CHECK(img.at(4, 0)[2] == 0);
+  CHECK(img.at(4, 7)[0] == 0);    // bottom row: blue clear colour
+  CHECK(img.at(4, 7)[2] == 255);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  fs::remove_all(root);
+  CHECK(gl::errorCount() == errorsBefore);
+}
+
+TEST_CASE("gl: timer queries resolve without stalling, per named pass") {
+  glBindFramebuffer(GL_FRAMEBUFFER, context().framebuffer());
+  gl::GpuTimers timers;
+  for (int frame = 0; frame < 3; ++frame) {
+    {
+      gl::TimerScope a(timers, "clear");
+      glClear(GL_COLOR_BUFFER_BIT);
+    }
+    timers.collect();
+  }
+  glFinish();
+  timers.collect();
+  REQUIRE(timers.find("clear"));
+  CHECK(timers.find("clear")->samples == 3);
+  CHECK(timers.find("clear")->gpuMs >= 0.0);
+  CHECK_THROWS_AS(timers.end(), std::logic_error);
+}

@@ -1,0 +1,57 @@
+# Exercise graders. For every lessons/NN_name/exercises.cpp with tests/grading/exNN_tests.cpp:
+#   grade_exNN            the tests against the student's exercises.cpp; ctest label exNN
+#                         (students: ctest --test-dir build/default -L exNN; `make grade LESSON=NN`
+#                         also writes out/grades/exNN.json and exNN.xml)
+#   grade_exNN_reference  the same tests against the reference in common/ (exNN_reference.cpp)
+# and the proof that each grader is valid (label validity, part of `make test`):
+#   validity.exNN.reference  every case passes on the reference
+#   validity.exNN.stubs      every exercise has a failing case on the untouched stubs
+# The stub check needs the stubs untouched: their SHA-256 is recorded in grading/pristine.sha256.
+# A student who edited exercises.cpp gets the check left out (with a message); CI configures with
+# SHADOWLAB_REQUIRE_PRISTINE_STUBS=ON so a changed stub without an updated hash fails loudly.
+file(GLOB EXERCISE_STUBS CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/lessons/*/exercises.cpp)
+set(PRISTINE_FILE ${CMAKE_CURRENT_SOURCE_DIR}/grading/pristine.sha256)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PRISTINE_FILE})
+set(PRISTINE_TEXT "")
+if(EXISTS ${PRISTINE_FILE})
+  file(READ ${PRISTINE_FILE} PRISTINE_TEXT)
+endif()
+
+foreach(stub IN LISTS EXERCISE_STUBS)
+  get_filename_component(lesson_dir ${stub} DIRECTORY)
+  get_filename_component(lesson ${lesson_dir} NAME)
+  string(SUBSTRING ${lesson} 0 2 nn)
+  set(tests ${CMAKE_CURRENT_SOURCE_DIR}/grading/ex${nn}_tests.cpp)
+  set(reference ${CMAKE_CURRENT_SOURCE_DIR}/grading/ex${nn}_reference.cpp)
+  if(NOT EXISTS ${tests} OR NOT EXISTS ${reference})
+    message(FATAL_ERROR "lessons/${lesson}/exercises.cpp has no grader: write tests/grading/ex${nn}_tests.cpp and ex${nn}_reference.cpp")
+  endif()
+
+  add_executable(grade_ex${nn} ${tests} ${stub})
+  add_executable(grade_ex${nn}_reference ${tests} ${reference})
+  # Link only the layers the reference forwards to, so a grader builds as soon as its layer does.
+  file(STRINGS ${reference} uses_psm REGEX "#include \"psm/")
+  foreach(target grade_ex${nn} grade_ex${nn}_reference)
+    target_include_directories(${target} PRIVATE ${lesson_dir})
+    target_link_libraries(${target} PRIVATE shadowlab_test_main shadowlab_core)
+    if(uses_psm)
+      target_link_libraries(${target} PRIVATE shadowlab_psm)
+    endif()
+  endforeach()
+  doctest_discover_tests(grade_ex${nn} PROPERTIES LABELS ex${nn})
+
+  add_test(NAME validity.ex${nn}.reference COMMAND grade_ex${nn}_reference)
+  set_tests_properties(validity.ex${nn}.reference PROPERTIES LABELS validity)
+
+  file(SHA256 ${stub} stub_hash)
+  file(RELATIVE_PATH stub_rel ${CMAKE_SOURCE_DIR} ${stub})
+  string(FIND "${PRISTINE_TEXT}" "${stub_hash}  ${stub_rel}" found)
+  if(found GREATER -1)
+    add_test(NAME validity.ex${nn}.stubs COMMAND grade_ex${nn} --expect-every-exercise-fails)
+    set_tests_properties(validity.ex${nn}.stubs PROPERTIES LABELS validity)
+  elseif(SHADOWLAB_REQUIRE_PRISTINE_STUBS)
+    message(FATAL_ERROR "${stub_rel} differs from its recorded pristine hash; if the stubs changed on purpose, run `make stub-hashes`")
+  else()
+    message(STATUS "${stub_rel} was edited: validity.ex${nn}.stubs left out (it runs on a clean checkout in CI)")
+  endif()
+endforeach()

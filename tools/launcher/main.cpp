@@ -1,0 +1,236 @@
+// shadowlab: the course launcher.
+//   shadowlab              with a display: a window listing every lesson; Start runs the chosen one
+//                          without one: the tour (below)
+//   shadowlab --tour DIR   every lesson rendered headless at its defaults and at each preset into
+//                          DIR (one PNG each) plus DIR/index.html with the lesson titles
+// Lessons describe themselves (`lesson --info`, `--list-presets`), so nothing here is duplicated.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <nlohmann/json.hpp>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/context.hpp"
+#include "gl/gl.hpp"
+#include "lesson_list.hpp"
+
+extern char** environ;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct LessonEntry {
+  std::string program;  // full path
+  std::string number, name, title, summary;
+  int difficulty = 1;
+  std::vector<std::string> presets;
+};
+
+std::string capture(const std::string& command, int& status) {
+  std::string out;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) {
+    status = -1;
+    return out;
+  }
+  std::array<char, 512> buf;
+  while (fgets(buf.data(), int(buf.size()), pipe)) out += buf.data();
+  status = pclose(pipe);
+  return out;
+}
+
+std::vector<LessonEntry> discoverLessons(const fs::path& binDir) {
+  std::vector<LessonEntry> lessons;
+  for (const char* name : kLessonPrograms) {
+    if (!*name) continue;
+    LessonEntry e;
+    e.program = (binDir / name).string();
+    int status = 0;
+    const std::string info = capture("'" + e.program + "' --info", status);
+    if (status != 0) {
+      std::cerr << "shadowlab: " << e.program << " --info failed (exit " << status << ")\n";
+      continue;
+    }
+    const auto j = nlohmann::json::parse(info);
+    e.number = j.at("number");
+    e.name = j.at("name");
+    e.title = j.at("title");
+    e.summary = j.at("summary");
+    e.difficulty = j.at("difficulty");
+    std::string line;
+    std::istringstream presets(capture("'" + e.program + "' --list-presets", status));
+    while (std::getline(presets, line))
+      if (!line.empty()) e.presets.push_back(line);
+    lessons.push_back(std::move(e));
+  }
+  return lessons;
+}
+
+int runProgram(const std::vector<std::string>& args, bool wait) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  if (!wait) return 0;
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string htmlEscape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
+  }
+  return out;
+}
+
+int tour(const std::vector<LessonEntry>& lessons, const fs::path& dir) {
+  fs::create_directories(dir);
+  std::ofstream html(dir / "index.html");
+  html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>shadowlab tour</title><style>"
+          "body{font-family:sans-serif;background:#111;color:#ddd;margin:2em}figure{display:inline-block;margin:.5em}"
+          "img{width:384px;border:1px solid #444}figcaption{font-size:.9em;color:#aaa}</style></head><body>"
+          "<h1>shadowlab: every lesson at its defaults and presets</h1>\n";
+  int failures = 0, images = 0;
+  for (const auto& l : lessons) {
+    html << "<h2>" << htmlEscape(l.number + " " + l.title) << "</h2><p>" << htmlEscape(l.summary) << "</p>\n";
+    std::vector<std::string> shots = {""};
+    shots.insert(shots.end(), l.presets.begin(), l.presets.end());
+    for (const auto& preset : shots) {
+      const std::string file = l.name + "_" + (preset.empty() ? "defaults" : preset) + ".png";
+      std::vector<std::string> args = {l.program, "--headless", "--frames", "3", "--screenshot", (dir / file).string()};
+      if (!preset.empty()) args.insert(args.end(), {"--preset", preset});
+      std::cout << "  " << l.name << " " << (preset.empty() ? "(defaults)" : preset) << std::flush;
+      const int rc = runProgram(args, true);
+      std::cout << (rc == 0 ? "  ok\n" : "  FAILED (exit " + std::to_string(rc) + ")\n");
+      if (rc != 0) {
+        ++failures;
+        continue;
+      }
+      ++images;
+      html << "<figure><img src=\"" << file << "\" alt=\"" << htmlEscape(file) << "\"><figcaption>"
+           << htmlEscape(preset.empty() ? "defaults" : "preset " + preset) << "</figcaption></figure>\n";
+    }
+  }
+  html << "</body></html>\n";
+  std::cout << "shadowlab: tour of " << lessons.size() << " lesson(s), " << images << " image(s): "
+            << fs::absolute(dir / "index.html").string() << '\n';
+  return failures == 0 ? 0 : 1;
+}
+
+int launcherWindow(const std::vector<LessonEntry>& lessons) {
+  auto context = shadowlab::createWindowContext({900, 560, "shadowlab: lessons", false, false});
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui::StyleColorsDark();
+  const float scale = std::max(1.0f, context->contentScale());
+  ImGui::GetStyle().ScaleAllSizes(scale);
+  ImGui::GetIO().FontGlobalScale = scale;
+  ImGui_ImplGlfw_InitForOpenGL(context->window(), true);
+  ImGui_ImplOpenGL3_Init("#version 410 core");
+  std::string status = "Choose a lesson. Each opens in its own window; F1 there shows its help.";
+  while (!context->shouldClose()) {
+    context->pollEvents();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImGui::GetIO().DisplaySize);
+    ImGui::Begin("shadowlab", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove);
+    ImGui::Text("shadowlab: real-time shadows and texture filtering");
+    ImGui::Separator();
+    if (ImGui::BeginTable("lessons", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+      ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed);
+      ImGui::TableSetupColumn("lesson");
+      ImGui::TableSetupColumn("difficulty", ImGuiTableColumnFlags_WidthFixed);
+      ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed);
+      ImGui::TableHeadersRow();
+      for (const auto& l : lessons) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(l.number.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(l.title.c_str());
+        ImGui::TextDisabled("%s", l.summary.c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%s", std::string(std::size_t(l.difficulty), '*').c_str());
+        ImGui::TableNextColumn();
+        ImGui::PushID(l.name.c_str());
+        if (ImGui::Button("Start")) {
+          status = runProgram({l.program}, false) == 0 ? "started " + l.name : "could not start " + l.program;
+        }
+        ImGui::PopID();
+      }
+      ImGui::EndTable();
+    }
+    ImGui::Separator();
+    ImGui::TextDisabled("%s", status.c_str());
+    ImGui::End();
+    ImGui::Render();
+    glViewport(0, 0, context->width(), context->height());
+    glClearColor(0.08f, 0.08f, 0.1f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    context->present();
+    while (waitpid(-1, nullptr, WNOHANG) > 0) {}  // reap lessons that were closed
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const fs::path binDir = fs::canonical("/proc/self/exe").parent_path();
+  std::string tourDir;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--tour" && i + 1 < argc) tourDir = argv[++i];
+    else if (a == "--help") {
+      std::cout << "usage: shadowlab [--tour DIR]\n  with a display: the lesson launcher\n"
+                   "  without one, or with --tour: render every lesson and preset into DIR (default out/tour)\n";
+      return 0;
+    } else {
+      std::cerr << "shadowlab: unknown argument '" << a << "'; valid: --tour DIR, --help\n";
+      return 2;
+    }
+  }
+  const auto lessons = discoverLessons(binDir);
+  if (lessons.empty()) {
+    std::cerr << "shadowlab: no lesson programs found beside " << binDir << '\n';
+    return 1;
+  }
+  if (!tourDir.empty() || !shadowlab::displayAvailable()) {
+    if (tourDir.empty()) {
+      tourDir = "out/tour";
+      std::cout << "shadowlab: no display (DISPLAY / WAYLAND_DISPLAY unset): rendering the tour headless\n";
+    }
+    return tour(lessons, tourDir);
+  }
+  try {
+    return launcherWindow(lessons);
+  } catch (const std::exception& e) {
+    std::cerr << "shadowlab: " << e.what() << "\n";
+    return 1;
+  }
+}
