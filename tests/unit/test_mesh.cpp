@@ -2,6 +2,8 @@
 // normals, closedness where claimed, and the topology analysis itself on hand-made cases.
 #include <doctest/doctest.h>
 
+#include <initializer_list>
+
 #include <cmath>
 #include <stdexcept>
 

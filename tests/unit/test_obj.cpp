@@ -2,6 +2,8 @@
 // file and the line, and garbage that must end in an exception, never a crash.
 #include <doctest/doctest.h>
 
+#include <initializer_list>
+
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>

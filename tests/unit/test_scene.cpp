@@ -2,6 +2,8 @@
 // and the properties each lesson relies on (alpha-tested leaves, a closed room, streets).
 #include <doctest/doctest.h>
 
+#include <initializer_list>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
