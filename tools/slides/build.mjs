@@ -41,7 +41,7 @@ function parseArgs(argv) {
     else if (a === '--no-pdf') opts.pdf = false;
     else if (a === '--jobs') opts.jobs = Math.max(1, Number(need(i++)) || 1);
     else if (a === '-h' || a === '--help') {
-      console.log(fs.readFileSync(fileURLToPath(import.meta.url), 'utf8').split('\n').slice(1, 12).join('\n').replace(/^\/\/ ?/gm, ''));
+      console.log(fs.readFileSync(fileURLToPath(import.meta.url), 'utf8').split('\n').slice(1, 11).join('\n').replace(/^\/\/ ?/gm, ''));
       process.exit(0);
     } else if (a.startsWith('--')) fail(`unknown option ${a} (see --help)`, 2);
     else opts.only.push(path.resolve(a));
@@ -157,7 +157,7 @@ async function buildDeck(file, opts, figures, usedFigures) {
         let spec;
         try { spec = parseFigureUrl(img.href); } catch (e) { throw new DeckError(where, 0, e.message); }
         jobs.push(figures.render(spec).then((out) => { img.href = out; usedFigures.add(out); })
-          .catch((e) => { throw new Error(`${where}: ${e.message}`); }));
+          .catch((e) => { throw Object.assign(new Error(e.message), { where }); }));
       } else {
         try { img.href = resolveLocalImage(img.href, file, opts.out, deckName); } catch (e) { throw new Error(`${where}: ${e.message}`); }
       }
@@ -165,7 +165,16 @@ async function buildDeck(file, opts, figures, usedFigures) {
   });
   const results = await Promise.allSettled(jobs);
   const failed = results.filter((r) => r.status === 'rejected');
-  if (failed.length) throw new Error(failed.map((r) => r.reason.message).join('\n'));
+  if (failed.length) {
+    // One line per distinct failure (a missing binary fails every figure the same way).
+    const byMessage = new Map();
+    for (const { reason } of failed) {
+      if (!byMessage.has(reason.message)) byMessage.set(reason.message, []);
+      byMessage.get(reason.message).push(reason.where ?? rel);
+    }
+    throw new Error([...byMessage].map(([message, wheres]) =>
+      `${wheres[0]}${wheres.length > 1 ? ` (and ${wheres.length - 1} more figure(s))` : ''}: ${message}`).join('\n'));
+  }
 
   const mathErrors = [];
   const sections = lexed.map((slide, n) => {
