@@ -1,0 +1,15 @@
+// Lesson 08: your solutions. Each function says what to return in exercises.hpp.
+#include "exercises.hpp"
+
+namespace shadowlab::ex08 {
+
+// EXERCISE 08.1
+glm::dvec4 postProjectiveLight(const glm::dmat4& viewProj, const glm::dvec4& light) {
+  // TODO: h = viewProj * light; classify by the sign of h.w (with the 1e-9 tolerance) and return
+  // (h.xyz / h.w, +-1) or (normalize(h.xyz), 0).
+  (void)viewProj;
+  (void)light;
+  return glm::dvec4(0.0);
+}
+
+}  // namespace shadowlab::ex08

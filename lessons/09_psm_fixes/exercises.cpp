@@ -1,0 +1,43 @@
+// Lesson 09: your solutions. Each function says what to return in exercises.hpp.
+#include "exercises.hpp"
+
+namespace shadowlab::ex09 {
+
+// EXERCISE 09.1
+glm::dmat4 inverseProjection(double fovY, double aspect, double a) {
+  // TODO: x, y like a perspective of fovY/aspect; clip z = a (times the input w); clip w = -z_view.
+  (void)fovY;
+  (void)aspect;
+  (void)a;
+  return glm::dmat4(1.0);
+}
+
+// EXERCISE 09.2
+glm::dvec4 smallestEnclosingCone(const std::vector<glm::dvec3>& directions) {
+  // TODO: normalise, find the smallest ball around the unit vectors, axis = its centre normalised,
+  // halfAngle = the largest angle between the axis and a direction.
+  (void)directions;
+  return glm::dvec4(0.0);
+}
+
+// EXERCISE 09.3
+bool cubeFaceVisible(int face, const glm::dvec4& postLight) {
+  // TODO: the face's outward normal n; finite light: dot(n, p) >= 1; direction: dot(n, D) >= 0.
+  (void)face;
+  (void)postLight;
+  return false;
+}
+
+// EXERCISE 09.4
+glm::dvec3 texelSizeBias(const glm::dmat4& worldToClip, const glm::dvec3& p, const glm::dvec3& dirFromLight, double a,
+                         double b, double mapSize) {
+  // TODO: L_texel = |P - unproject(M P shifted by one texel in x and y)|; P + L (a + b L_texel).
+  (void)worldToClip;
+  (void)dirFromLight;
+  (void)a;
+  (void)b;
+  (void)mapSize;
+  return p * 0.0;
+}
+
+}  // namespace shadowlab::ex09

@@ -1,0 +1,18 @@
+// Reference for lesson 08's exercises: forwards to common/psm (never a copy).
+#include "exercises.hpp"
+
+#include "psm/conventions.hpp"
+
+namespace shadowlab::ex08 {
+
+glm::dvec4 postProjectiveLight(const glm::dmat4& viewProj, const glm::dvec4& light) {
+  const psm::PostProjectiveLight l = psm::toPostProjective(viewProj, light);
+  switch (l.kind) {
+    case psm::PostLightKind::InFront: return glm::dvec4(l.position, 1.0);
+    case psm::PostLightKind::Behind: return glm::dvec4(l.position, -1.0);
+    case psm::PostLightKind::Direction: break;
+  }
+  return glm::dvec4(l.direction, 0.0);
+}
+
+}  // namespace shadowlab::ex08

@@ -1,0 +1,86 @@
+// Grader for lesson 08 (ctest -L ex08). Hand-computed cases, then seeded random ones.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+
+#include <glm/glm.hpp>
+
+#include "exercises.hpp"
+#include "test_support.hpp"
+
+using shadowlab::ex08::postProjectiveLight;
+
+namespace {
+// The camera of every hand case: at the origin looking down -z, fovY 90 degrees, aspect 1, n = 1,
+// f = 3. Its GL projection: x' = x, y' = y, z' = -2 z - 3 w, w' = -z.
+glm::dmat4 handCamera() {
+  glm::dmat4 p(0.0);
+  p[0][0] = 1.0;
+  p[1][1] = 1.0;
+  p[2][2] = -2.0;  // -(f + n) / (f - n)
+  p[3][2] = -3.0;  // -2 f n / (f - n)
+  p[2][3] = -1.0;
+  return p;
+}
+bool near(const glm::dvec4& a, const glm::dvec4& b, double eps = 1e-12) {
+  return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::dvec4(eps)));
+}
+}  // namespace
+
+TEST_CASE("ex08.1: a point light in front of the camera becomes a finite point") {
+  // (0,0,-2,1) -> (0, 0, -2*-2 - 3, 2) = (0,0,1,2) -> (0, 0, 0.5), in front.
+  CHECK(near(postProjectiveLight(handCamera(), {0, 0, -2, 1}), {0, 0, 0.5, 1}));
+  // (1,1,-1,1): on the near plane's corner -> (1, 1, -1), in front.
+  CHECK(near(postProjectiveLight(handCamera(), {1, 1, -1, 1}), {1, 1, -1, 1}));
+}
+
+TEST_CASE("ex08.1: a point light behind the camera keeps h.xyz/h.w and is marked -1") {
+  // (1,0,2,1) -> (1, 0, -7, -2) -> (-0.5, 0, 3.5), behind.
+  CHECK(near(postProjectiveLight(handCamera(), {1, 0, 2, 1}), {-0.5, 0, 3.5, -1}));
+}
+
+TEST_CASE("ex08.1: directional lights along, against and across the view") {
+  // Light from behind (travels along -z): (0,0,1,0) -> (0,0,-2,-1) -> (0,0,2): the plane
+  // z = (f+n)/(f-n) = 2 behind the far face, marked behind.
+  CHECK(near(postProjectiveLight(handCamera(), {0, 0, 1, 0}), {0, 0, 2, -1}));
+  // Light from the front (travels along +z): (0,0,-1,0) -> (0,0,2,1) -> (0,0,2), in front.
+  CHECK(near(postProjectiveLight(handCamera(), {0, 0, -1, 0}), {0, 0, 2, 1}));
+  // Light from +x (parallel to the near plane): (1,0,0,0) -> (1,0,0,0): stays a direction.
+  CHECK(near(postProjectiveLight(handCamera(), {1, 0, 0, 0}), {1, 0, 0, 0}));
+  // From (3,4,0) direction: stays a direction, normalised.
+  CHECK(near(postProjectiveLight(handCamera(), {3, 4, 0, 0}), {0.6, 0.8, 0, 0}));
+}
+
+TEST_CASE("ex08.1: a point light at the eye becomes a direction along -z") {
+  // (0,0,0,1) -> (0, 0, -3, 0): w = 0, direction (0,0,-1).
+  CHECK(near(postProjectiveLight(handCamera(), {0, 0, 0, 1}), {0, 0, -1, 0}));
+}
+
+TEST_CASE("ex08.1: random cameras and point lights: the point maps back and the sign is the side") {
+  std::mt19937_64 rng(shadowlab::test::seedFor("ex08.1 random"));
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 200; ++i) {
+    const double fov = 0.3 + 2.0 * (u(rng) * 0.5 + 0.5), n = 0.05 + (u(rng) + 1.0), f = n * (10.0 + 500.0 * (u(rng) + 1.0));
+    glm::dmat4 proj(0.0);
+    const double t = 1.0 / std::tan(fov / 2.0);
+    proj[0][0] = t;
+    proj[1][1] = t;
+    proj[2][2] = -(f + n) / (f - n);
+    proj[3][2] = -2.0 * f * n / (f - n);
+    proj[2][3] = -1.0;
+    glm::dmat4 view(1.0);  // a rotation about y and a translation
+    const double a = 3.0 * u(rng);
+    view[0][0] = std::cos(a); view[2][0] = std::sin(a); view[0][2] = -std::sin(a); view[2][2] = std::cos(a);
+    view[3] = glm::dvec4(5 * u(rng), 5 * u(rng), 5 * u(rng), 1.0);
+    const glm::dmat4 vp = proj * view;
+    const glm::dvec3 p(20 * u(rng), 20 * u(rng), 20 * u(rng));
+    const double zView = (view * glm::dvec4(p, 1.0)).z;
+    if (std::abs(zView) < 1e-3) continue;
+    const glm::dvec4 r = postProjectiveLight(vp, glm::dvec4(p, 1.0));
+    CHECK(r.w == doctest::Approx(zView < 0 ? 1.0 : -1.0));  // in front iff view z < 0
+    const glm::dvec4 back = glm::inverse(vp) * glm::dvec4(glm::dvec3(r), 1.0);
+    const glm::dvec3 q = glm::dvec3(back) / back.w;
+    CHECK(glm::length(q - p) <= 1e-6 * (1.0 + glm::length(p)));
+  }
+}

@@ -1,0 +1,194 @@
+// Grader for lesson 09 (ctest -L ex09). Hand-computed cases, then seeded random ones.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "exercises.hpp"
+#include "test_support.hpp"
+
+using namespace shadowlab::ex09;
+
+namespace {
+double depthAt(const glm::dmat4& m, double Z) {  // a point on the axis at distance Z (view z = -Z)
+  const glm::dvec4 h = m * glm::dvec4(0.0, 0.0, -Z, 1.0);
+  return h.z / h.w;
+}
+// Brute force for the cone: every candidate through 1, 2 or 3 directions.
+double bruteHalfAngle(const std::vector<glm::dvec3>& d) {
+  std::vector<glm::dvec3> u;
+  for (auto v : d) u.push_back(glm::normalize(v));
+  double best = 1e9;
+  auto test = [&](glm::dvec3 axis) {
+    if (glm::length(axis) < 1e-12) return;
+    for (double s : {1.0, -1.0}) {
+      const glm::dvec3 a = s * glm::normalize(axis);
+      double worst = 0;
+      for (auto& v : u) worst = std::max(worst, std::atan2(glm::length(glm::cross(a, v)), glm::dot(a, v)));
+      best = std::min(best, worst);
+    }
+  };
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    test(u[i]);
+    for (std::size_t j = i + 1; j < u.size(); ++j) {
+      test(u[i] + u[j]);
+      for (std::size_t k = j + 1; k < u.size(); ++k) test(glm::cross(u[j] - u[i], u[k] - u[i]));
+    }
+  }
+  return best;
+}
+}  // namespace
+
+TEST_CASE("ex09.1: the inverse projection matrix, entry by entry") {
+  // fovY 90 degrees -> cot(45) = 1; aspect 2 -> x scale 1/2; a = 0.5: z row gives a * w, w = -z.
+  const glm::dmat4 m = inverseProjection(std::numbers::pi / 2.0, 2.0, 0.5);
+  glm::dmat4 want(0.0);
+  want[0][0] = 0.5;
+  want[1][1] = 1.0;
+  want[3][2] = 0.5;
+  want[2][3] = -1.0;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) CHECK(m[c][r] == doctest::Approx(want[c][r]));
+}
+
+TEST_CASE("ex09.1: depth -1 at Z = -a, +1 at Z = +a, 0 at infinity, order kept through infinity") {
+  const double a = 0.25;
+  const glm::dmat4 m = inverseProjection(1.0, 1.0, a);
+  CHECK(depthAt(m, -a) == doctest::Approx(-1.0));
+  CHECK(depthAt(m, a) == doctest::Approx(1.0));
+  CHECK(std::abs(depthAt(m, 1e12)) < 1e-9);
+  CHECK(std::abs(depthAt(m, -1e12)) < 1e-9);
+  // The ray of seeds 000 §3: Z = -a ... -inf, then +inf ... +a: depth rises all the way.
+  const double Zs[] = {-0.25, -0.5, -2.0, -100.0, 100.0, 2.0, 0.5, 0.25};
+  for (int i = 1; i < 8; ++i) CHECK(depthAt(m, Zs[i]) > depthAt(m, Zs[i - 1]));
+}
+
+TEST_CASE("ex09.1: random a and Z match the paper's Z_psm = (1 + a/Z) / 2") {
+  std::mt19937_64 rng(shadowlab::test::seedFor("ex09.1 random"));
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 200; ++i) {
+    const double a = 1e-3 + u(rng), fov = 0.2 + 2.5 * u(rng), aspect = 0.5 + u(rng);
+    double Z = (u(rng) < 0.5 ? -1.0 : 1.0) * a * (1.0 + 100.0 * u(rng));
+    const glm::dmat4 m = inverseProjection(fov, aspect, a);
+    CHECK((depthAt(m, Z) + 1.0) / 2.0 == doctest::Approx(0.5 * (1.0 + a / Z)));
+    // x and y as an ordinary perspective: x = Z tan(fov/2) aspect lands on the right edge.
+    const double x = std::abs(Z) * std::tan(fov / 2.0) * aspect;
+    const glm::dvec4 h = m * glm::dvec4(x, 0.0, -std::abs(Z), 1.0);
+    CHECK(h.x / h.w == doctest::Approx(1.0));
+  }
+}
+
+TEST_CASE("ex09.2: the smallest enclosing cone of hand-made direction sets") {
+  const glm::dvec4 two = smallestEnclosingCone({{1, 0, 0}, {0, 2, 0}});
+  CHECK(two.x == doctest::Approx(std::sqrt(0.5)));
+  CHECK(two.y == doctest::Approx(std::sqrt(0.5)));
+  CHECK(two.z == doctest::Approx(0.0));
+  CHECK(two.w == doctest::Approx(std::numbers::pi / 4.0));
+  const glm::dvec4 three = smallestEnclosingCone({{1, 0, 0}, {0, 1, 0}, {0, 0, 5}});
+  const double s = 1.0 / std::sqrt(3.0);
+  CHECK(three.x == doctest::Approx(s));
+  CHECK(three.y == doctest::Approx(s));
+  CHECK(three.z == doctest::Approx(s));
+  CHECK(three.w == doctest::Approx(std::acos(s)));
+  // A direction inside the cone of the other two changes nothing.
+  const glm::dvec4 inner = smallestEnclosingCone({{1, 0, 0}, {0, 1, 0}, {1, 1, 0.1}});
+  CHECK(inner.w == doctest::Approx(std::numbers::pi / 4.0));
+}
+
+TEST_CASE("ex09.2: random sets: holds every direction with the brute-force optimal angle") {
+  std::mt19937_64 rng(shadowlab::test::seedFor("ex09.2 random"));
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::uniform_real_distribution<double> u(0.05, 1.2);
+  for (int i = 0; i < 100; ++i) {
+    const glm::dvec3 centre = glm::normalize(glm::dvec3(g(rng), g(rng), g(rng)));
+    const double spread = u(rng);
+    std::vector<glm::dvec3> d;
+    const int n = 2 + static_cast<int>(rng() % 9);
+    for (int k = 0; k < n; ++k) d.push_back((centre + spread * glm::dvec3(g(rng), g(rng), g(rng)) * 0.5) * (0.5 + u(rng)));
+    bool hemisphere = true;
+    for (auto& v : d) hemisphere = hemisphere && glm::dot(v, centre) > 0.05 * glm::length(v);
+    if (!hemisphere) continue;
+    const glm::dvec4 c = smallestEnclosingCone(d);
+    const glm::dvec3 axis(c);
+    CHECK(glm::length(axis) == doctest::Approx(1.0));
+    for (auto& v : d)
+      CHECK(std::atan2(glm::length(glm::cross(axis, v)), glm::dot(axis, v)) <= c.w + 1e-9);
+    CHECK(c.w == doctest::Approx(bruteHalfAngle(d)).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("ex09.3: the visible faces of the unit cube from hand-placed lights") {
+  // In front at (0,0,5): only the +z face is seen; the other five carry maps.
+  for (int f = 0; f < 6; ++f) CHECK(cubeFaceVisible(f, {0, 0, 5, 1}) == (f == 4));
+  // Behind the camera at (2,2,-3) (w = -1): +x, +y and -z seen; the test is geometric.
+  for (int f = 0; f < 6; ++f) CHECK(cubeFaceVisible(f, {2, 2, -3, -1}) == (f == 0 || f == 2 || f == 5));
+  // Inside the cube: sees no face from outside; all 6 carry maps.
+  for (int f = 0; f < 6; ++f) CHECK_FALSE(cubeFaceVisible(f, {0.2, -0.5, 0.9, 1}));
+  // Direction toward +x: +x seen, -x used, the four others edge-on (seen, unused).
+  for (int f = 0; f < 6; ++f) CHECK(cubeFaceVisible(f, {1, 0, 0, 0}) == (f != 1));
+  // Direction toward (-1, 1, 1): -x, +y, +z seen.
+  for (int f = 0; f < 6; ++f) CHECK(cubeFaceVisible(f, {-1, 1, 1, 0}) == (f == 1 || f == 2 || f == 4));
+  // Exactly on the plane of +y (edge-on): counts as visible.
+  CHECK(cubeFaceVisible(2, {3, 1, 0, 1}));
+}
+
+TEST_CASE("ex09.3: random outside lights leave 3 to 5 faces, inside ones 6") {
+  std::mt19937_64 rng(shadowlab::test::seedFor("ex09.3 random"));
+  std::uniform_real_distribution<double> u(-4.0, 4.0);
+  for (int i = 0; i < 300; ++i) {
+    const glm::dvec3 p(u(rng), u(rng), u(rng));
+    int hidden = 0;
+    for (int f = 0; f < 6; ++f) hidden += cubeFaceVisible(f, glm::dvec4(p, 1.0)) ? 0 : 1;
+    const bool inside = glm::all(glm::lessThan(glm::abs(p), glm::dvec3(1.0)));
+    if (inside) CHECK(hidden == 6);
+    else CHECK((hidden >= 3 && hidden <= 5));
+    // Brute force: a face is visible iff the light is on the outer side of its plane.
+    for (int f = 0; f < 6; ++f) {
+      const double coord = (f % 2 == 0 ? 1.0 : -1.0) * p[f / 2];
+      CHECK(cubeFaceVisible(f, glm::dvec4(p, 1.0)) == (coord >= 1.0));
+    }
+  }
+}
+
+TEST_CASE("ex09.4: the texel-size bias with an affine map, by hand") {
+  // M scales by 1/2: NDC x spans world [-2, 2]; with 4 texels one texel is 1 world unit, in x and
+  // in y, so L_texel = sqrt(2). a = 0.1, b = 2, light straight down -z.
+  glm::dmat4 M(0.5);
+  M[3][3] = 1.0;
+  const glm::dvec3 r = texelSizeBias(M, {1, 2, 3}, {0, 0, -2}, 0.1, 2.0, 4.0);
+  CHECK(r.x == doctest::Approx(1.0));
+  CHECK(r.y == doctest::Approx(2.0));
+  CHECK(r.z == doctest::Approx(3.0 - (0.1 + 2.0 * std::sqrt(2.0))));
+  // b = 0: only the constant part moves the point, along the light.
+  const glm::dvec3 c = texelSizeBias(M, {0, 0, 0}, {1, 0, 0}, 0.25, 0.0, 1024.0);
+  CHECK(c.x == doctest::Approx(0.25));
+}
+
+TEST_CASE("ex09.4: random perspective maps: moves away from the light by a + b L_texel") {
+  std::mt19937_64 rng(shadowlab::test::seedFor("ex09.4 random"));
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 200; ++i) {
+    // A light camera at the origin looking down -z: GL perspective, fov 60 degrees, n 1, f 100.
+    const double n = 1.0, f = 100.0, t = 1.0 / std::tan(std::numbers::pi / 6.0);
+    glm::dmat4 M(0.0);
+    M[0][0] = t;
+    M[1][1] = t;
+    M[2][2] = -(f + n) / (f - n);
+    M[3][2] = -2.0 * f * n / (f - n);
+    M[2][3] = -1.0;
+    const double depth = 2.0 + 90.0 * u(rng);
+    const glm::dvec3 p((u(rng) - 0.5) * depth, (u(rng) - 0.5) * depth, -depth);
+    const glm::dvec3 L = glm::normalize(p);
+    const double S = 256.0 + 1024.0 * u(rng), a = 0.01 * u(rng), b = 0.5 + u(rng);
+    // One texel step at constant depth: the perspective scales it by depth / t on each axis.
+    const double texel = std::sqrt(2.0) * (2.0 / S) * depth / t;
+    const glm::dvec3 r = texelSizeBias(M, p, L * 3.0, a, b, S);
+    CHECK(glm::length(r - p) == doctest::Approx(a + b * texel).epsilon(1e-6));
+    CHECK(glm::dot(r - p, L) == doctest::Approx(glm::length(r - p)));
+  }
+}
