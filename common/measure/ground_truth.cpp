@@ -212,10 +212,19 @@ GroundTruth::~GroundTruth() = default;
 
 void GroundTruth::rebuild(const Scene& scene) {
   auto start = std::chrono::steady_clock::now();
-  impl_->release();
-  impl_->scene = rtcNewScene(impl_->device);
-  rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
-  triangles_ = 0;
+  // Built aside and swapped in on success: a throw leaves the previous BVH in place, and the guards
+  // release what Embree allocated so far.
+  struct SceneGuard {
+    RTCScene scene;
+    ~SceneGuard() { if (scene) rtcReleaseScene(scene); }
+  } building{rtcNewScene(impl_->device)};
+  struct GeometryGuard {
+    RTCGeometry geometry;
+    ~GeometryGuard() { if (geometry) rtcReleaseGeometry(geometry); }
+  };
+  std::vector<std::unique_ptr<AlphaCard>> cards;
+  std::size_t triangles = 0;
+  rtcSetSceneBuildQuality(building.scene, RTC_BUILD_QUALITY_HIGH);
   Aabb bounds;
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const SceneObject& object = scene.objects[o];
@@ -232,7 +241,8 @@ void GroundTruth::rebuild(const Scene& scene) {
                                     std::to_string(i) + " >= " + std::to_string(mesh.positions.size()) +
                                     " vertices");
 
-    RTCGeometry geom = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    GeometryGuard guard{rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE)};
+    RTCGeometry geom = guard.geometry;
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
@@ -272,16 +282,20 @@ void GroundTruth::rebuild(const Scene& scene) {
       rtcSetGeometryUserData(geom, card.get());
       rtcSetGeometryIntersectFilterFunction(geom, alphaFilter);
       rtcSetGeometryOccludedFilterFunction(geom, alphaFilter);
-      impl_->cards.push_back(std::move(card));
+      cards.push_back(std::move(card));
     }
     rtcCommitGeometry(geom);
-    rtcAttachGeometry(impl_->scene, geom);
-    rtcReleaseGeometry(geom);
-    triangles_ += mesh.triangleCount();
+    rtcAttachGeometry(building.scene, geom);
+    triangles += mesh.triangleCount();
   }
-  rtcCommitScene(impl_->scene);
+  rtcCommitScene(building.scene);
   if (RTCError err = rtcGetDeviceError(impl_->device); err != RTC_ERROR_NONE)
     throw std::runtime_error("GroundTruth: Embree error " + std::to_string(int(err)) + " while building");
+  impl_->release();
+  impl_->scene = building.scene;
+  building.scene = nullptr;
+  impl_->cards = std::move(cards);
+  triangles_ = triangles;
   float diagonal = bounds.empty() ? 1.0f : glm::length(bounds.extent());
   epsilon_ = options_.relativeEpsilon * std::max(diagonal, 1e-6f);
   ++buildCount_;

@@ -272,6 +272,11 @@ TEST_CASE("measure.ground_truth: an alpha-tested card lets light through exactly
   scene.materials[1].texture = "missing.png";
   CHECK_THROWS_WITH_AS(GroundTruth(scene, std::map<std::string, Image8>{{"leaves.png", texture}}),
                        doctest::Contains("missing.png"), std::invalid_argument);
+  // A rebuild that fails keeps the previous BVH (the opaque card) answering.
+  CHECK_THROWS_AS(truth.rebuild(scene), std::invalid_argument);
+  CHECK(truth.buildCount() == 2);
+  vis = truth.hardVisibility(view, sun);
+  for (float v : vis.data) CHECK(v == 0.0f);
 }
 
 TEST_CASE("measure.ground_truth: the BVH is rebuilt only when the scene changed") {
