@@ -111,17 +111,15 @@ std::vector<std::string> shaderErrors() {
   return errors;
 }
 
+// --bench FILE: one row per pass per frame (GPU ms arrive a few frames late; each row carries the
+// frame that issued it), plus the CPU time of each whole frame.
 struct BenchLog {
   std::ofstream out;
-  std::vector<int> seen;  // samples already written, per pass
-  void write(int frame, double frameMs, const gl::GpuTimers& timers) {
-    seen.resize(timers.passes().size(), 0);
-    for (std::size_t i = 0; i < timers.passes().size(); ++i) {
-      const auto& p = timers.passes()[i];
-      if (p.samples == seen[i]) continue;  // nothing new resolved for this pass
-      seen[i] = p.samples;
-      out << frame << ',' << p.name << ',' << p.lastGpuMs << ',' << p.lastCpuMs << ',' << frameMs << '\n';
-    }
+  std::vector<double> frameMs;
+  void write(gl::GpuTimers& timers) {
+    for (const auto& s : timers.takeSamples())
+      out << s.frame << ',' << s.pass << ',' << s.gpuMs << ',' << s.cpuMs << ','
+          << (s.frame < int(frameMs.size()) ? frameMs[s.frame] : 0.0) << '\n';
   }
 };
 
@@ -231,7 +229,8 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
       std::cerr << info.name << ": cannot write --bench file " << cl.bench << '\n';
       return 1;
     }
-    bench.out << "frame,pass,gpu_ms,cpu_ms,frame_cpu_ms\n";
+    bench.out << "frame,pass,gpu_ms,cpu_ms,frame_ms\n";
+    lesson.timers.keepSamples(true);
   }
 
   int width = context->width(), height = context->height();
@@ -299,6 +298,7 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
 
     // ---- the lesson ------------------------------------------------------------------------
     FrameInfo fi{frame, time, dt, width, height, context->framebuffer()};
+    lesson.timers.setFrame(frame);
     std::vector<std::string> errors = shaderErrors();
     if (!initError.empty()) errors.insert(errors.begin(), initError);
     bool programsReady = true;
@@ -329,7 +329,7 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
     if (uiVisible) {
       glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
       glViewport(0, 0, width, height);
-      ui.newFrame(dt);
+      ui.newFrame(dt, width, height);
       ui.header({&info, caps.summary(), frameMsAvg, &lesson.timers.passes(), &lesson.counters, errors, status});
       ui.paramPanel(params, presets, status);
       lesson.gui();
@@ -345,9 +345,6 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
       input.screenshot = false;
     }
     if (!caps.khrDebug) gl::checkErrors("end of frame");
-    const double frameMs = (nowSeconds() - start) * 1000.0;
-    frameMsAvg = frameMsAvg == 0 ? frameMs : 0.9 * frameMsAvg + 0.1 * frameMs;
-    if (bench.out.is_open()) bench.write(frame, frameMs, lesson.timers);
 
     const bool lastFrame = cl.frames > 0 && frame + 1 == cl.frames;
     if (lastFrame && !cl.screenshot.empty()) {
@@ -359,11 +356,19 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
       }
     }
     context->present();
+    // Frame time includes present: software rasterisers (llvmpipe) do much of their work there.
+    const double frameMs = (nowSeconds() - start) * 1000.0;
+    frameMsAvg = frameMsAvg == 0 ? frameMs : 0.9 * frameMsAvg + 0.1 * frameMs;
+    if (bench.out.is_open()) {
+      bench.frameMs.resize(std::size_t(frame) + 1);
+      bench.frameMs[std::size_t(frame)] = frameMs;
+      bench.write(lesson.timers);
+    }
   }
   // Let outstanding timer queries resolve so the benchmark has every frame.
   glFinish();
   lesson.timers.collect();
-  if (bench.out.is_open()) bench.write(cl.frames, 0, lesson.timers);
+  if (bench.out.is_open()) bench.write(lesson.timers);
   gl::checkErrors("exit");
   const int glErrors = gl::errorCount();
   if (uiVisible) ui.shutdown();

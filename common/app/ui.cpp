@@ -42,10 +42,11 @@ void Ui::setScale(float scale) {
   ImGui::GetIO().FontGlobalScale = scale_;
 }
 
-void Ui::newFrame(double dt) {
+void Ui::newFrame(double dt, int width, int height) {
   ImGui_ImplOpenGL3_NewFrame();
-  if (!headless_) ImGui_ImplGlfw_NewFrame();
   ImGuiIO& io = ImGui::GetIO();
+  if (!headless_) ImGui_ImplGlfw_NewFrame();
+  else io.DisplaySize = ImVec2(float(width), float(height));
   io.DeltaTime = float(std::max(dt, 1e-4));
   ImGui::NewFrame();
 }

@@ -15,7 +15,7 @@ class Ui {
  public:
   void init(Context& context, float scale);
   void shutdown();
-  void newFrame(double dt);
+  void newFrame(double dt, int width, int height);  // size: headless only (GLFW knows its own)
   void render();  // draws into the currently bound framebuffer
   bool wantsMouse() const;
   bool wantsKeyboard() const;

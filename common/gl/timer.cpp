@@ -50,6 +50,7 @@ void GpuTimers::end() {
   Slot& slot = p.ring[p.next];
   glQueryCounter(slot.stop.id(), GL_TIMESTAMP);
   slot.cpuMs = cpuNowMs() - openCpuStart_;
+  slot.frame = frame_;
   slot.pending = true;
   p.next = (p.next + 1) % kRing;
   open_ = -1;
@@ -71,6 +72,7 @@ void GpuTimers::collect() {
       slot.pending = false;
       t.lastGpuMs = double(stop - start) * 1e-6;
       t.lastCpuMs = slot.cpuMs;
+      if (keep_) samples_.push_back({p.name, slot.frame, t.lastGpuMs, t.lastCpuMs});
       pushWindow(p.gpuHistory, t.lastGpuMs, kWindow);
       pushWindow(p.cpuHistory, t.lastCpuMs, kWindow);
       ++t.samples;

@@ -4,11 +4,19 @@
 // CPU time of the same scope is measured alongside. Both are averaged over a sliding window.
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gl/objects.hpp"
 
 namespace shadowlab::gl {
+
+// One resolved measurement, for benchmarks: which pass, in which frame it was issued.
+struct TimingSample {
+  std::string pass;
+  int frame = 0;
+  double gpuMs = 0, cpuMs = 0;
+};
 
 struct PassTiming {
   std::string name;
@@ -26,6 +34,11 @@ class GpuTimers {
   void end();
   // Once a frame, after the passes: collects every result that is ready.
   void collect();
+  // The frame number stamped on passes begun from now on (the app sets it each frame).
+  void setFrame(int frame) { frame_ = frame; }
+  // Keep every resolved sample for takeSamples() (benchmarks); off by default.
+  void keepSamples(bool on) { keep_ = on; }
+  std::vector<TimingSample> takeSamples() { return std::exchange(samples_, {}); }
   const std::vector<PassTiming>& passes() const { return timings_; }
   const PassTiming* find(const std::string& pass) const;
   double totalGpuMs() const;
@@ -35,6 +48,7 @@ class GpuTimers {
     Query start, stop;
     bool pending = false;
     double cpuMs = 0;
+    int frame = 0;
   };
   struct Pass {
     std::string name;
@@ -45,6 +59,9 @@ class GpuTimers {
   Pass& pass(const std::string& name);
   std::vector<Pass> passes_;
   std::vector<PassTiming> timings_;
+  std::vector<TimingSample> samples_;
+  bool keep_ = false;
+  int frame_ = 0;
   int open_ = -1;
   double openCpuStart_ = 0;
 };
