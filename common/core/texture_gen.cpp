@@ -171,30 +171,52 @@ Image8 makeLeavesTexture(int size, std::uint64_t seed) {
     leaves.push_back(leaf);
   }
   const glm::vec3 background{0.18f, 0.42f, 0.1f};
-  // 4x4 supersampling: alpha is the leaf coverage of the texel.
+  // 4x4 supersampling: alpha is the leaf coverage of the texel. Each leaf is first rasterised
+  // over its own bounding box into a buffer of which leaf is on top of each sample (the last
+  // drawn wins), so the cost grows with leaf area rather than with leaves x texels.
   constexpr int kSub = 4;
+  const int samples = size * kSub;
+  auto samplePoint = [&](int x, int y, int sx, int sy) {
+    return glm::vec2{(float(x) + (float(sx) + 0.5f) / kSub) / float(size),
+                     (float(y) + (float(sy) + 0.5f) / kSub) / float(size)};
+  };
+  struct Hit {
+    float across, halfWidth;
+  };
+  auto inside = [&](const Leaf& leaf, const glm::vec2& p, Hit& hit) {
+    const glm::vec2 d = p - leaf.base;
+    const float t = glm::dot(d, leaf.axis) / leaf.length;  // 0 at the stem, 1 at the tip
+    if (t < 0.0f || t > 1.0f) return false;
+    hit.across = std::abs(d.x * leaf.axis.y - d.y * leaf.axis.x);
+    hit.halfWidth = leaf.width * 4.0f * t * (1.0f - t) * (1.0f - 0.3f * t);
+    return hit.across <= hit.halfWidth;
+  };
+  std::vector<std::uint8_t> top(std::size_t(samples) * samples, 0xFF);
+  for (int i = 0; i < count; ++i) {
+    const Leaf& leaf = leaves[i];
+    const glm::vec2 tip = leaf.base + leaf.axis * leaf.length;
+    const glm::vec2 lo = glm::min(leaf.base, tip) - leaf.width, hi = glm::max(leaf.base, tip) + leaf.width;
+    const int x0 = std::max(0, int(lo.x * float(samples)) - 2), x1 = std::min(samples - 1, int(hi.x * float(samples)) + 2);
+    const int y0 = std::max(0, int(lo.y * float(samples)) - 2), y1 = std::min(samples - 1, int(hi.y * float(samples)) + 2);
+    Hit hit{};
+    for (int Y = y0; Y <= y1; ++Y)
+      for (int X = x0; X <= x1; ++X)
+        if (inside(leaf, samplePoint(X / kSub, Y / kSub, X % kSub, Y % kSub), hit))
+          top[std::size_t(Y) * samples + X] = std::uint8_t(i);
+  }
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       int covered = 0;
       glm::vec3 colour(0.0f);
       for (int sy = 0; sy < kSub; ++sy)
         for (int sx = 0; sx < kSub; ++sx) {
-          const glm::vec2 p{(float(x) + (float(sx) + 0.5f) / kSub) / float(size),
-                            (float(y) + (float(sy) + 0.5f) / kSub) / float(size)};
-          // The last leaf drawn is on top.
-          for (int i = count - 1; i >= 0; --i) {
-            const Leaf& leaf = leaves[i];
-            const glm::vec2 d = p - leaf.base;
-            const float t = glm::dot(d, leaf.axis) / leaf.length;  // 0 at the stem, 1 at the tip
-            if (t < 0.0f || t > 1.0f) continue;
-            const float across = std::abs(d.x * leaf.axis.y - d.y * leaf.axis.x);
-            const float halfWidth = leaf.width * 4.0f * t * (1.0f - t) * (1.0f - 0.3f * t);
-            if (across > halfWidth) continue;
-            const float vein = across < 0.004f ? 0.7f : 1.0f;  // the midrib, darker
-            colour += leaf.colour * vein * (0.8f + 0.4f * (across / std::max(halfWidth, 1e-6f)));
-            ++covered;
-            break;
-          }
+          const std::uint8_t i = top[std::size_t(y * kSub + sy) * samples + std::size_t(x * kSub + sx)];
+          if (i == 0xFF) continue;
+          Hit hit{};
+          inside(leaves[i], samplePoint(x, y, sx, sy), hit);
+          const float vein = hit.across < 0.004f ? 0.7f : 1.0f;  // the midrib, darker
+          colour += leaves[i].colour * vein * (0.8f + 0.4f * (hit.across / std::max(hit.halfWidth, 1e-6f)));
+          ++covered;
         }
       const glm::vec3 c = covered ? colour / float(covered) : background;
       setRgb(image, x, y, c);
