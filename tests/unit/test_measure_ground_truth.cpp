@@ -261,6 +261,18 @@ TEST_CASE("measure.ground_truth: an alpha-tested card lets light through exactly
   CHECK(holes > 0);
   CHECK(holes < 16 * 9);
 
+  // Soft rays (packets through the same filter) from a tiny sphere high above agree: a ray to
+  // (2, 50, 2) crosses the card at most 2/50 texel off the receiver, still on the same texel's side.
+  Light tiny;
+  tiny.position = {2, 50, 2};
+  tiny.area = AreaShape::Sphere;
+  tiny.radius = 0.01f;
+  ImageF soft = truth.softVisibility(view, tiny, 16, 3);
+  for (int row = 0; row < 4; ++row)
+    for (int col = 0; col < 4; ++col)
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) CHECK(soft.at(col * 3 + a, row * 3 + b) == (opaque(col, row) ? 0.0f : 1.0f));
+
   // The same card without alpha testing blocks everywhere.
   scene.materials[1].alphaCutoff = 0.0f;
   truth.rebuild(scene);
