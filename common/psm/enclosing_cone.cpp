@@ -37,7 +37,9 @@ Ball ball3(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
   const glm::dvec3 ab = b - a, ac = c - a;
   const glm::dvec3 n = glm::cross(ab, ac);
   const double n2 = glm::dot(n, n);
-  if (n2 < 1e-30) {
+  // Relative test (sin^2 of the angle at a): the cones of far lights are 1e-9 rad across, so
+  // an absolute threshold would call every triangle degenerate.
+  if (!(n2 > 1e-24 * glm::dot(ab, ab) * glm::dot(ac, ac))) {
     // Two of the points coincide: the ball over the farthest pair.
     Ball best = ball2(a, b);
     Ball alt = ball2(a, c);
@@ -129,7 +131,9 @@ Cone smallestEnclosingConeBruteForce(std::span<const glm::dvec3> dirs) {
     consider(u[i]);
     for (std::size_t j = i + 1; j < n; ++j) {
       consider(u[i] + u[j]);
-      for (std::size_t k = j + 1; k < n; ++k) consider(glm::cross(u[j] - u[i], u[k] - u[i]));
+      // Through three: the circle's centre (the circumcentre, in their plane) as the axis; the
+      // plane's normal would lose the axis' digits for the 1e-9 rad cones of far lights.
+      for (std::size_t k = j + 1; k < n; ++k) consider(ball3(u[i], u[j], u[k]).c);
     }
   }
   return best;

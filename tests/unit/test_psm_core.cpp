@@ -1,0 +1,220 @@
+// Unit tests for common/psm: conventions, clipping, cone, cameras (hand-derived values).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "psm/clipping.hpp"
+#include "psm/conventions.hpp"
+#include "psm/enclosing_cone.hpp"
+#include "psm/psm_camera.hpp"
+#include "test_support.hpp"
+
+using namespace shadowlab;
+using namespace shadowlab::psm;
+
+namespace {
+// Camera at the origin looking down -z, fovY 90, aspect 1, n = 1, f = 3 (see ex08's hand cases).
+CameraFrustum handCamera() { return makeCamera(glm::dmat4(1.0), std::numbers::pi / 2, 1.0, 1.0, 3.0); }
+Aabb box(glm::vec3 lo, glm::vec3 hi) {
+  Aabb b;
+  b.min = lo;
+  b.max = hi;
+  return b;
+}
+}  // namespace
+
+TEST_CASE("psm conventions: perspectiveGL is GL's matrix and rejects bad values by name") {
+  const glm::dmat4 p = perspectiveGL(std::numbers::pi / 2, 2.0, 1.0, 3.0);
+  CHECK(p[0][0] == doctest::Approx(0.5));
+  CHECK(p[1][1] == doctest::Approx(1.0));
+  CHECK(p[2][2] == doctest::Approx(-2.0));
+  CHECK(p[3][2] == doctest::Approx(-3.0));
+  CHECK(p[2][3] == doctest::Approx(-1.0));
+  CHECK_THROWS_WITH_AS(perspectiveGL(1.0, 1.0, 0.0, 3.0), doctest::Contains("zNear"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(perspectiveGL(1.0, 1.0, 2.0, 2.0), doctest::Contains("zFar"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(perspectiveGL(std::nan(""), 1.0, 1.0, 2.0), doctest::Contains("fovY"), std::invalid_argument);
+  CHECK_THROWS_AS(perspectiveGL(1.0, -1.0, 1.0, 2.0), std::invalid_argument);
+}
+
+TEST_CASE("psm conventions: lights classified in front, behind, direction") {
+  const CameraFrustum c = handCamera();
+  PostProjectiveLight l = toPostProjective(c.viewProj, {0, 0, -2, 1});
+  CHECK(l.kind == PostLightKind::InFront);
+  CHECK(l.position.z == doctest::Approx(0.5));
+  l = toPostProjective(c.viewProj, {0, 0, 1, 0});  // directional, from behind
+  CHECK(l.kind == PostLightKind::Behind);
+  CHECK(l.position.z == doctest::Approx(2.0));  // (f+n)/(f-n)
+  l = toPostProjective(c.viewProj, {0, 1, 0, 0});
+  CHECK(l.kind == PostLightKind::Direction);
+  CHECK(l.direction.y == doctest::Approx(1.0));
+  CHECK_THROWS_AS(toPostProjective(c.viewProj, {0, 0, 0, 0}), std::invalid_argument);
+  CHECK_THROWS_AS(toPostProjective(c.viewProj, {std::nan(""), 0, 0, 1}), std::invalid_argument);
+  Light d;
+  d.kind = LightKind::Directional;
+  d.direction = {0, -2, 0};
+  CHECK(homogeneousLight(d) == glm::dvec4(0, 1, 0, 0));
+}
+
+TEST_CASE("psm conventions: the [0,1] remap maps NDC depth -1 -> 0 and 1 -> 1") {
+  const glm::dmat4 r = depthRangeRemap(DepthRange::ZeroToOne);
+  const glm::dvec4 a = r * glm::dvec4(0, 0, -2, 2), b = r * glm::dvec4(0, 0, 3, 3);
+  CHECK(a.z / a.w == doctest::Approx(0.0));
+  CHECK(b.z / b.w == doctest::Approx(1.0));
+}
+
+TEST_CASE("psm clipping: a box inside the frustum keeps its 8 corners, one outside gives none") {
+  const CameraFrustum c = handCamera();
+  const Frustum f = frustumFromViewProj(c.viewProj, c.invViewProj);
+  std::vector<glm::dvec3> out;
+  clipBoxToFrustum(box({-0.1f, -0.1f, -2.1f}, {0.1f, 0.1f, -1.9f}), f, out);
+  CHECK(out.size() == 24);  // 6 faces x 4 corners, each corner on 3 faces
+  for (const auto& p : out) CHECK(std::abs(std::abs(p.x) - 0.1) < 1e-6);
+  out.clear();
+  CHECK(clipBoxToFrustum(box({5, 5, -2}, {6, 6, -1}), f, out) == 0);
+  CHECK(clipBoxToFrustum(box({-1, -1, 1}, {1, 1, 2}), f, out) == 0);  // behind the camera
+}
+
+TEST_CASE("psm clipping: a huge box yields exactly the frustum's corners") {
+  const CameraFrustum c = handCamera();
+  const Frustum f = frustumFromViewProj(c.viewProj, c.invViewProj);
+  std::vector<glm::dvec3> out;
+  clipBoxToFrustum(box({-100, -100, -100}, {100, 100, 100}), f, out);
+  REQUIRE(!out.empty());
+  // Every output is one of the 8 corners: (+-1, +-1, -1) and (+-3, +-3, -3).
+  for (const auto& p : out) {
+    const double z = -p.z;
+    CHECK((std::abs(z - 1) < 1e-9 || std::abs(z - 3) < 1e-9));
+    CHECK(std::abs(std::abs(p.x) - z) < 1e-9);
+    CHECK(std::abs(std::abs(p.y) - z) < 1e-9);
+  }
+}
+
+TEST_CASE("psm clipping: a box across the near plane is cut at z = -1") {
+  const CameraFrustum c = handCamera();
+  const Frustum f = frustumFromViewProj(c.viewProj, c.invViewProj);
+  std::vector<glm::dvec3> out;
+  clipBoxToFrustum(box({-0.5f, -0.5f, -1.5f}, {0.5f, 0.5f, 0.5f}), f, out);
+  double zMax = -1e9, zMin = 1e9;
+  for (const auto& p : out) {
+    zMax = std::max(zMax, p.z);
+    zMin = std::min(zMin, p.z);
+  }
+  CHECK(zMax == doctest::Approx(-1.0));
+  CHECK(zMin == doctest::Approx(-1.5));
+}
+
+TEST_CASE("psm clipping: invalid boxes are rejected by name") {
+  const CameraFrustum c = handCamera();
+  const Frustum f = frustumFromViewProj(c.viewProj, c.invViewProj);
+  std::vector<glm::dvec3> out;
+  CHECK_THROWS_WITH_AS(clipBoxToFrustum(box({1, 0, 0}, {0, 1, 1}), f, out), doctest::Contains("min > max"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(clipBoxToFrustum(box({1, 1, 1}, {1, 1, 1}), f, out), doctest::Contains("zero size"),
+                       std::invalid_argument);
+  CHECK_THROWS_AS(clipBoxToFrustum(box({std::nanf(""), 0, 0}, {1, 1, 1}), f, out), std::invalid_argument);
+  CHECK_NOTHROW(clipBoxToFrustum(box({-1, -1, -2}, {1, -1, -1.5f}), f, out));  // flat: a floor tile
+}
+
+TEST_CASE("psm cone: hand sets and the hemisphere limit") {
+  std::vector<glm::dvec3> d = {{1, 0, 0}, {0, 1, 0}};
+  Cone c = smallestEnclosingCone(d);
+  CHECK(c.valid);
+  CHECK(c.halfAngle == doctest::Approx(std::numbers::pi / 4));
+  CHECK(c.axis.x == doctest::Approx(std::sqrt(0.5)));
+  d = {{0, 0, 1}};
+  c = smallestEnclosingCone(d);
+  CHECK(c.halfAngle == doctest::Approx(0.0));
+  d = {{1, 0, 0}, {-1, 0, 0}};  // opposite: no open hemisphere holds them
+  CHECK_FALSE(smallestEnclosingCone(d).valid);
+  d = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, -1, -1}};
+  CHECK_FALSE(smallestEnclosingCone(d).valid);
+  d = {{0, 0, 0}};
+  CHECK_THROWS_AS(smallestEnclosingCone(d), std::invalid_argument);
+  d.clear();
+  CHECK_FALSE(smallestEnclosingCone(d).valid);
+}
+
+TEST_CASE("psm cone: random sets match the brute force, also for 1e-9 rad cones") {
+  std::mt19937_64 rng(shadowlab::test::seedFor("psm cone random"));
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (int i = 0; i < 300; ++i) {
+    const glm::dvec3 centre = glm::normalize(glm::dvec3(g(rng), g(rng), g(rng)));
+    const double spread = std::pow(10.0, -9.0 + 9.0 * (i % 10) / 10.0);
+    std::vector<glm::dvec3> d;
+    for (int k = 0; k < 2 + i % 7; ++k) d.push_back(centre + spread * glm::dvec3(g(rng), g(rng), g(rng)));
+    const Cone brute = smallestEnclosingConeBruteForce(d);
+    std::vector<glm::dvec3> copy = d;
+    const Cone fast = smallestEnclosingCone(copy);
+    if (!brute.valid) continue;
+    CHECK(fast.valid);
+    CHECK(std::abs(fast.halfAngle - brute.halfAngle) <= 1e-7 * brute.halfAngle + 1e-15);
+  }
+}
+
+TEST_CASE("psm camera: the inverse projection's depth is a / Z, and [0,1] is (1 + a/Z) / 2") {
+  const glm::dmat4 m = inverseProjection(1.0, 1.0, 0.5);
+  const glm::dmat4 m01 = inverseProjection(1.0, 1.0, 0.5, DepthRange::ZeroToOne);
+  for (double Z : {-0.5, -1.0, -7.0, 7.0, 1.0, 0.5}) {
+    const glm::dvec4 h = m * glm::dvec4(0, 0, -Z, 1), h01 = m01 * glm::dvec4(0, 0, -Z, 1);
+    CHECK(h.z / h.w == doctest::Approx(0.5 / Z));
+    CHECK(h01.z / h01.w == doctest::Approx(0.5 * (1 + 0.5 / Z)));
+  }
+  CHECK_THROWS_WITH_AS(inverseProjection(1.0, 1.0, 0.0), doctest::Contains("a ="), std::invalid_argument);
+}
+
+TEST_CASE("psm camera: light behind the camera gets the inverse projection and keeps ray order") {
+  const CameraFrustum c = handCamera();
+  const std::vector<Aabb> recv = {box({-0.5f, -0.5f, -2.5f}, {0.5f, 0.5f, -1.5f})};
+  PsmFitter fitter;
+  const glm::dvec4 light(0.3, 1.0, 1.0, 0.0);  // from behind and above: travels along -z
+  const PsmFit& fit = fitter.fit(c, light, recv);
+  REQUIRE(fit.status == FitStatus::Ok);
+  CHECK(fit.light.kind == PostLightKind::Behind);
+  CHECK(fit.camera.kind == LightProjection::Inverse);
+  const glm::dmat4& M = fit.camera.worldToClip;
+  for (const auto& p : fitter.worldKeyPoints()) {
+    const glm::dvec4 h = M * glm::dvec4(p, 1.0);
+    REQUIRE(h.w > 0);
+    CHECK(std::abs(h.x / h.w) <= 1 + 1e-9);
+    CHECK(std::abs(h.z / h.w) <= 1 + 1e-9);
+  }
+  // A caster behind the camera on the ray to a receiver is nearer the light in the map.
+  const glm::dvec3 X(0.0, 0.0, -2.0), caster = X + glm::dvec3(light) * 2.5;  // z = 0.5: behind the eye
+  const glm::dvec4 hx = M * glm::dvec4(X, 1.0), hc = M * glm::dvec4(caster, 1.0);
+  REQUIRE(hc.w > 0);
+  CHECK(hc.z / hc.w < hx.z / hx.w);
+  CHECK(std::abs(hc.x / hc.w - hx.x / hx.w) < 1e-9);  // same texel: the same light ray
+}
+
+TEST_CASE("psm camera: original PSM slides the camera back only for a light behind") {
+  const CameraFrustum c = handCamera();
+  const std::vector<Aabb> recv = {box({-0.5f, -0.5f, -2.5f}, {0.5f, 0.5f, -1.5f})};
+  const std::vector<Aabb> casters = {box({-0.2f, -0.2f, 1.0f}, {0.2f, 0.2f, 2.0f})};  // behind the eye
+  CHECK(virtualCameraShift(c, casters) == doctest::Approx(3.0));  // z_max 2 + zNear 1
+  std::vector<glm::dvec3> a, b, d;
+  OriginalPsm o = fitOriginalPsm(c, {0.3, 1, 1, 0}, recv, casters, {}, a, b, d);
+  CHECK(o.shift == doctest::Approx(3.0));
+  CHECK(o.virtualCamera.zNear == doctest::Approx(4.0));
+  REQUIRE(o.fit.status == FitStatus::Ok);
+  CHECK(o.fit.camera.kind == LightProjection::ReversedPerspective);
+  o = fitOriginalPsm(c, {0.3, 1, -1, 0}, recv, casters, {}, a, b, d);
+  CHECK(o.shift == 0.0);
+  CHECK(o.fit.camera.kind == LightProjection::Perspective);
+}
+
+TEST_CASE("psm camera: a light inside the receivers' hull reports ConeTooWide; none visible NoReceivers") {
+  const CameraFrustum c = handCamera();
+  const std::vector<Aabb> recv = {box({-0.9f, -0.9f, -2.9f}, {-0.1f, 0.9f, -1.1f}),
+                                  box({0.1f, -0.9f, -2.9f}, {0.9f, 0.9f, -1.1f})};
+  PsmFitter fitter;
+  CHECK(fitter.fit(c, {0, 0, -2, 1}, recv).status == FitStatus::ConeTooWide);
+  const std::vector<Aabb> none = {box({10, 10, 10}, {11, 11, 11})};
+  CHECK(fitter.fit(c, {0, 5, -2, 1}, none).status == FitStatus::NoReceivers);
+}
