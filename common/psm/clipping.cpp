@@ -87,6 +87,21 @@ std::size_t clipBoxToFrustum(const Aabb& box, const Frustum& frustum, std::vecto
                          p.normal.z >= 0 ? hi.z : lo.z);
     if (p.distance(far) < 0.0) return 0;
   }
+  // Quick accept: a box wholly inside keeps its 8 corners (most receivers, most frames).
+  bool inside = true;
+  for (const Plane& p : frustum.planes) {
+    const glm::dvec3 near(p.normal.x >= 0 ? lo.x : hi.x, p.normal.y >= 0 ? lo.y : hi.y,
+                          p.normal.z >= 0 ? lo.z : hi.z);
+    if (p.distance(near) < 0.0) {
+      inside = false;
+      break;
+    }
+  }
+  if (inside) {
+    for (int i = 0; i < 8; ++i)
+      out.emplace_back((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+    return 8;
+  }
   // Vertices of B ∩ F lie on a face of B or a face of F: clip B's faces by F's planes, and
   // F's faces by B's planes (a vertex on an F face that is interior to B's faces, e.g. a
   // frustum corner inside the box, comes from the second pass).
