@@ -1,0 +1,51 @@
+// Lesson 06: YOUR implementations. Each stub compiles and returns a neutral value; replace the
+// body, then grade with  ctest --test-dir build/default -L ex06 --output-on-failure
+#include "exercises.hpp"
+
+#include <cmath>
+
+namespace shadowlab::ex06 {
+
+// EXERCISE 06.1
+int mipLevelCount(int width, int height) {
+  // TODO: count the levels down to 1x1
+  return 1;
+}
+
+// EXERCISE 06.2
+long long mipChainBytes(int width, int height, int bytesPerTexel) {
+  // TODO: sum over the levels, not just level 0
+  return (long long)width * height * bytesPerTexel;
+}
+
+// EXERCISE 06.3
+float lodFromDerivatives(const glm::vec2& dUVdx, const glm::vec2& dUVdy, const glm::ivec2& size) {
+  // TODO: log2(max(|dUVdx * size|, |dUVdy * size|))
+  return 0.0f;
+}
+
+// EXERCISE 06.4
+glm::vec4 sampleBilinear(const ImageF& level, const glm::vec2& uv) {
+  // TODO: four texels, weights (1-a)(1-b), a(1-b), (1-a)b, ab, repeat wrapping
+  return glm::vec4(0.0f);
+}
+
+// EXERCISE 06.5
+glm::vec4 sampleTrilinear(const std::vector<ImageF>& chain, const glm::vec2& uv, float lambda) {
+  // TODO: blend two levels by frac(lambda)
+  return glm::vec4(0.0f);
+}
+
+// EXERCISE 06.6
+AnisoProbes anisotropicProbes(const glm::vec2& dUVdx, const glm::vec2& dUVdy, const glm::ivec2& size, int maxAniso) {
+  // TODO: N = min(ceil(Pmax / Pmin), maxAniso), lambda' = log2(Pmax / N)
+  return {};
+}
+
+// EXERCISE 06.7
+ImageF boxDownsample(const ImageF& src) {
+  // TODO: halve each side, average the parents
+  return src;
+}
+
+}  // namespace shadowlab::ex06
