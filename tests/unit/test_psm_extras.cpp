@@ -60,7 +60,8 @@ TEST_CASE("psm cube faces: each face camera maps its face square onto the map sq
 TEST_CASE("psm cube faces: region distance of the -z face seen from (0,0,5) is 4") {
   // The part of the cube whose rays leave through z = -1 starts at the top face z = 1.
   CHECK(cubeFaceRegionMinDistance({0, 0, 5}, 5) == doctest::Approx(4.0));
-  // The +x face from (0,0,5): its region starts at x = 2/3 (derived in docs/psm_conventions.md).
+  // The +x face from (0,0,5): a ray leaving through (1, y, ze) holds x = (5 - z) / (5 - ze), whose
+  // least value in the cube (z = 1, ze = -1) is 4/6 = 2/3.
   CHECK(cubeFaceRegionMinDistance({0, 0, 5}, 0) == doctest::Approx(2.0 / 3.0));
   CHECK(cubeFaceRegionMinDistance({0, 0, 0.5}, 0) == 0.0);
 }
