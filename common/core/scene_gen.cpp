@@ -95,15 +95,24 @@ Scene makeShowcase(std::uint64_t seed, double target) {
     const float radius = 4.5f + rng.uniform(-0.5f, 0.5f);
     return glm::vec3(radius * std::cos(angle), height, radius * std::sin(angle));
   };
+  // Spot first, then yaw, in separate statements: argument evaluation order is unspecified, and
+  // the random sequence must not depend on the compiler.
+  auto spotTurned = [&](int k, float height) {
+    const glm::vec3 at = spot(k, height);
+    return placed(at, rng.uniform(0.0f, kPi));
+  };
   addObject(scene, "box", scene.addMesh(makeBox(glm::vec3(2.0f), boxCellsFor(0.05 * target))), bricks,
-            placed(spot(0, 1.0f), rng.uniform(0.0f, kPi)));
+            spotTurned(0, 1.0f));
   addObject(scene, "sphere", scene.addMesh(budgetSphere(1.2f, 0.2 * target)), red, placed(spot(1, 1.2f)));
   // The torus stands tilted so its hole throws a shadow on the ground.
-  glm::mat4 torusModel = placed(spot(2, 1.6f), rng.uniform(0.0f, kPi));
-  torusModel = glm::rotate(torusModel, 1.2f, glm::vec3(1, 0, 0));
-  addObject(scene, "torus", scene.addMesh(budgetTorus(1.1f, 0.38f, 0.25 * target)), gold, torusModel);
+  const glm::mat4 torusModel = glm::rotate(spotTurned(2, 1.6f), 1.2f, glm::vec3(1, 0, 0));
+  const auto torusMesh = scene.addMesh(budgetTorus(1.1f, 0.38f, 0.25 * target));
+  addObject(scene, "torus", torusMesh, gold, torusModel);
+  // Rest it on the ground: lift it by whatever its tilted bounds reach below y = 0.
+  const float sink = scene.objectBounds(scene.objects.size() - 1).min.y;
+  if (sink < 0.0f) scene.objects.back().model = glm::translate(glm::mat4(1.0f), glm::vec3(0, -sink, 0)) * torusModel;
   addObject(scene, "knot", scene.addMesh(budgetKnot(1.5f, 0.32f, 0.35 * target)), blue,
-            placed(spot(3, 2.3f), rng.uniform(0.0f, kPi)));
+            spotTurned(3, 2.3f));
   return scene;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+
 #include "core/paths.hpp"
 #include "gl/caps.hpp"
 
@@ -14,14 +15,11 @@ Texture uploadTexture(const Image8& image, const std::string& label, bool mipmap
   Texture tex = makeTexture(GL_TEXTURE_2D, label);
   glBindTexture(GL_TEXTURE_2D, tex.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  // Files are top row first; GL's t = 0 is the bottom row. Upload flipped so uv (0,0) is the
-  // image's bottom-left, as every modelling tool assumes.
-  std::vector<std::uint8_t> flipped(image.data.size());
-  const std::size_t row = std::size_t(image.width) * image.channels;
-  for (int y = 0; y < image.height; ++y)
-    std::memcpy(&flipped[std::size_t(image.height - 1 - y) * row], &image.data[std::size_t(y) * row], row);
+  // The course's uv convention: v = 0 is the image's FIRST (top) row, so files go up unflipped.
+  // Procedural meshes are built for it, core/obj_loader flips OBJ's v, and the ground truth's alpha
+  // test (common/measure) samples the same way: rasteriser and rays see the same holes.
   glTexImage2D(GL_TEXTURE_2D, 0, GLint(kInternal[image.channels]), image.width, image.height, 0,
-               kFormats[image.channels], GL_UNSIGNED_BYTE, flipped.data());
+               kFormats[image.channels], GL_UNSIGNED_BYTE, image.data.data());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

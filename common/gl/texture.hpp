@@ -8,6 +8,7 @@
 
 namespace shadowlab::gl {
 
+// uv convention: v = 0 is the image file's top row (uploaded unflipped; see texture.cpp).
 // Loads textures/<name> with a full mip chain, trilinear filtering and repeat wrapping (anisotropic
 // 8x when the extension is there). Throws std::runtime_error naming the path when it cannot be read.
 Texture loadTexture(const std::string& name);
