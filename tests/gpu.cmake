@@ -57,3 +57,13 @@ if(TARGET lesson_01_lighting)
            -- --headless --frames 1)
   set_tests_properties(gpu.01_lighting.missing_shader gpu.01_lighting.missing_texture PROPERTIES LABELS gpu)
 endif()
+
+# Measurement against ground truth (issue: reference visibility): lesson 01's errors are all leaks.
+if(TARGET lesson_01_lighting)
+  add_test(NAME gpu.01_lighting.measure COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_01_lighting>
+           -DOUT=${shots}/01_lighting_measure.json -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_measure.cmake)
+  add_test(NAME gpu.01_lighting.measure_overlay COMMAND lesson_check $<TARGET_FILE:lesson_01_lighting>
+           --png ${shots}/01_lighting_overlay.png
+           -- --headless --frames 3 --size 640x360 --set measure.overlay=error --screenshot ${shots}/01_lighting_overlay.png)
+  set_tests_properties(gpu.01_lighting.measure gpu.01_lighting.measure_overlay PROPERTIES LABELS gpu)
+endif()

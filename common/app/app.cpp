@@ -123,6 +123,54 @@ struct BenchLog {
   }
 };
 
+// --measure FILE: the last frame's figures against ground truth as JSON, and its heatmaps as PNGs
+// beside it (FILE minus .json, plus _error.png / _aliasing.png), for benchmark runners.
+void writeMeasurement(const std::string& path, const LessonInfo& info, const MeasureResult& r,
+                      const std::vector<Counter>& counters, const gl::GpuTimers& timers) {
+  if (!r.valid) throw std::runtime_error("--measure: nothing was measured (does the lesson describe its scene?)");
+  const std::string stem = path.size() > 5 && path.substr(path.size() - 5) == ".json" ? path.substr(0, path.size() - 5) : path;
+  const std::filesystem::path p(path);
+  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("--measure: cannot write " + path);
+  out << "{\n  \"lesson\": \"" << info.name << "\",\n  \"width\": " << r.width << ", \"height\": " << r.height << ",\n";
+  if (r.soft) {
+    out << "  \"soft\": {\"pixels\": " << r.soft_.pixels << ", \"rmse\": " << r.soft_.rmse << ", \"max_abs\": " << r.soft_.maxAbs << "},\n";
+  } else {
+    const auto& h = r.hard;
+    out << "  \"hard\": {\"facing_pixels\": " << h.facingPixels << ", \"misclassified\": " << h.misclassified
+        << ", \"leaks\": " << h.leaks << ", \"false_shadows\": " << h.falseShadows << ", \"edge_pixels\": " << h.edgePixels
+        << ", \"misclassified_pct\": " << h.misclassifiedPct << ", \"leak_pct\": " << h.leakPct
+        << ", \"false_shadow_pct\": " << h.falseShadowPct << ", \"edge_tolerant_pct\": " << h.edgeTolerantPct << "},\n";
+  }
+  if (r.hasAliasing) {
+    const auto& a = r.aliasing;
+    out << "  \"aliasing\": {\"pixels\": " << a.pixels << ", \"mean\": " << a.mean << ", \"rms\": " << a.rms << ", \"p95\": "
+        << a.p95 << ", \"max\": " << a.max << ", \"share_above_1\": " << a.shareAbove1 << "},\n";
+  }
+  out << "  \"ground_truth_ms\": " << r.groundTruthMs << ",\n  \"gpu_ms\": {";
+  bool first = true;
+  for (const auto& t : timers.passes()) {
+    out << (first ? "" : ", ") << "\"" << jsonEscape(t.name) << "\": " << t.gpuMs;
+    first = false;
+  }
+  out << "},\n  \"cpu_ms\": {";
+  first = true;
+  for (const auto& t : timers.passes()) {
+    out << (first ? "" : ", ") << "\"" << jsonEscape(t.name) << "\": " << t.cpuMs;
+    first = false;
+  }
+  out << "},\n  \"counters\": {";
+  first = true;
+  for (const auto& c : counters) {
+    out << (first ? "" : ", ") << "\"" << jsonEscape(c.name) << "\": \"" << jsonEscape(c.value) << "\"";
+    first = false;
+  }
+  out << "}\n}\n";
+  savePng(stem + "_error.png", r.errorHeatmap);
+  if (r.hasAliasing) savePng(stem + "_aliasing.png", r.aliasingHeatmap);
+}
+
 }  // namespace
 
 void declareCamera(ParamRegistry& params, OrbitCamera& c) {
@@ -144,10 +192,13 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
   CommandLine cl;
   ParamRegistry params;
   PresetFile presets;
+  Measurement measurement;  // holds GL objects: declared after the context, destroyed before it
   try {
     cl = parseCommandLine(argc, argv);
     declareCamera(params, lesson.camera);
     lesson.declare(params);
+    if (info.measurable) measurement.declare(params);
+    else if (!cl.measure.empty()) throw CliError("--measure: lesson " + info.name + " computes no shadows to measure");
     presets = PresetFile::load(sourceRoot() + "/lessons/" + info.name + "/presets.txt");
     presets.validate(params);
     if (cl.help) {
@@ -236,6 +287,8 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
   int width = context->width(), height = context->height();
   lesson.resize(width, height);
   bool helpOpen = false;
+  glm::mat4 lastView(0.0f);
+  unsigned lastRevision = ~0u;
   std::string status;
   double frameMsAvg = 0;
   double time = 0;
@@ -297,8 +350,11 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
     }
 
     // ---- the lesson ------------------------------------------------------------------------
+    const bool lastFrame = cl.frames > 0 && frame + 1 == cl.frames;
+    if (lastFrame && !cl.measure.empty()) measurement.requestFullResolution();
     FrameInfo fi{frame, time, dt, width, height, context->framebuffer()};
     lesson.timers.setFrame(frame);
+    const unsigned frameFbo = fi.framebuffer;
     std::vector<std::string> errors = shaderErrors();
     if (!initError.empty()) errors.insert(errors.begin(), initError);
     bool programsReady = true;
@@ -308,7 +364,17 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
     if (initError.empty() && programsReady) {
       try {
         lesson.update(fi);
+        fi.framebuffer = measurement.begin(frameFbo, width, height);
+        fi.measureLight = measurement.measuredLight();
+        glViewport(0, 0, width, height);
         lesson.render(fi);
+        // Re-measure when anything the picture depends on moved: the camera or any parameter.
+        const glm::mat4 view = lesson.camera.view();
+        const bool viewChanged = view != lastView || params.revision() != lastRevision;
+        lastView = view;
+        lastRevision = params.revision();
+        measurement.end(lesson.measureSource(), frameFbo, viewChanged);
+        fi.framebuffer = frameFbo;
       } catch (const std::exception& e) {
         // A file that cannot be read, a scene that cannot be built: headless runs fail with the
         // message; a window keeps running and shows it until a reload (R) succeeds.
@@ -330,7 +396,9 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
       glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
       glViewport(0, 0, width, height);
       ui.newFrame(dt, width, height);
-      ui.header({&info, caps.summary(), frameMsAvg, &lesson.timers.passes(), &lesson.counters, errors, status});
+      std::vector<Counter> shown = lesson.counters;
+      for (auto& [name, value] : measurement.summary()) shown.push_back({name, value});
+      ui.header({&info, caps.summary(), frameMsAvg, &lesson.timers.passes(), &shown, errors, status});
       ui.paramPanel(params, presets, status);
       lesson.gui();
       ui.help(info, params, &helpOpen);
@@ -346,7 +414,14 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
     }
     if (!caps.khrDebug) gl::checkErrors("end of frame");
 
-    const bool lastFrame = cl.frames > 0 && frame + 1 == cl.frames;
+    if (lastFrame && !cl.measure.empty()) {
+      try {
+        writeMeasurement(cl.measure, info, measurement.result(), lesson.counters, lesson.timers);
+      } catch (const std::exception& e) {
+        std::cerr << info.name << ": " << e.what() << '\n';
+        return 1;
+      }
+    }
     if (lastFrame && !cl.screenshot.empty()) {
       try {
         saveScreenshot(cl.screenshot, fi.framebuffer, width, height);

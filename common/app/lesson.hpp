@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/camera.hpp"
+#include "app/measurement.hpp"
 #include "core/params.hpp"
 #include "gl/timer.hpp"
 
@@ -26,6 +27,7 @@ struct LessonInfo {
   std::string summary;  // one line for the launcher
   int difficulty = 1;   // 1 (intro) to 5
   std::string help;     // F1 overlay: controls and what to try (several lines)
+  bool measurable = false;  // computes V_i: gets the ground-truth overlay and --measure (measureSource())
 };
 
 struct FrameInfo {
@@ -33,6 +35,7 @@ struct FrameInfo {
   double time = 0, dt = 0;  // seconds; headless runs use a fixed dt so frames are reproducible
   int width = 0, height = 0;
   unsigned framebuffer = 0;  // draw here (not necessarily 0)
+  int measureLight = -1;     // pass to the scene shader's uMeasureLight (shaders/common/measure.glsl)
 };
 
 // Counters of skipped or spent work that the header shows next to the timings
@@ -52,6 +55,8 @@ class Lesson {
   virtual void update(const FrameInfo& frame) {}
   virtual void render(const FrameInfo& frame) = 0;
   virtual void gui() {}
+  // For measurable lessons: the scene and lights the ground truth traces (common/app/measurement.hpp).
+  virtual MeasureSource measureSource() { return {}; }
 
   // Set up by the framework before init(); lessons use them freely.
   OrbitCamera camera;

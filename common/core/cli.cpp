@@ -20,6 +20,7 @@ constexpr Flag kFlags[] = {
     {"--set", "NAME=VALUE", "set a parameter (repeatable; after --preset)"},
     {"--preset", "NAME", "start from a named preset (see --list-presets)"},
     {"--bench", "FILE", "write per-pass GPU and CPU ms of every frame as CSV"},
+    {"--measure", "FILE", "measure the last frame against ground truth: figures as JSON, heatmaps as PNG"},
     {"--record", "FILE", "record the camera and light path while you move (windowed)"},
     {"--replay", "FILE", "replay a recorded camera and light path over the frames"},
     {"--ui-scale", "S", "UI scale for projectors, 0.5 to 4 (Ctrl +/- at run time)"},
@@ -87,6 +88,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       cl.sets.push_back(value);
     } else if (flag == "--preset") cl.preset = value;
     else if (flag == "--bench") cl.bench = value;
+    else if (flag == "--measure") cl.measure = value;
     else if (flag == "--record") cl.record = value;
     else if (flag == "--replay") cl.replay = value;
     else if (flag == "--ui-scale") {

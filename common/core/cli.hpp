@@ -21,6 +21,7 @@ struct CommandLine {
   std::vector<std::string> sets;   // "name=value", applied after the preset, in order
   std::string preset;
   std::string bench;               // per-pass GPU and CPU ms over the frames, CSV
+  std::string measure;             // ground-truth error figures of the last frame, JSON
   std::string record;              // record the camera/light path to this file (windowed)
   std::string replay;              // replay a recorded path over the frames
   float uiScale = 0;               // 0: automatic (from the monitor's content scale)

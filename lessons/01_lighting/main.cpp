@@ -58,7 +58,9 @@ class LightingLesson : public Lesson {
             "Orbit around the scene and move the lights (Parameters panel).\n"
             "Try: turn lights on one at a time; compare Phong (B off) and Blinn highlights;\n"
             "raise light1.attenuation's quadratic term; set view=normals and view=ndc_remap.\n"
-            "Notice: nothing casts a shadow. V_i = 1 everywhere: that is what lessons 02+ fix."};
+            "Notice: nothing casts a shadow. V_i = 1 everywhere: that is what lessons 02+ fix.\n"
+            "Press M: the ground truth (Embree rays) marks every pixel lit here but in shadow in red.",
+            true};
   }
 
   void declare(ParamRegistry& r) override {
@@ -115,6 +117,12 @@ class LightingLesson : public Lesson {
     loadScene();
   }
 
+  // The ground truth traces the same scene toward the same lights: every pixel this lesson lights
+  // although the reference says it is in shadow shows up as a light leak.
+  MeasureSource measureSource() override {
+    return {&scene, std::uint64_t(builtScene_ * 10000000 + builtTriangles_), {p_.lights, p_.lights + kLightCount}};
+  }
+
   void update(const FrameInfo& f) override {
     if (p_.scene != builtScene_ || p_.triangles != builtTriangles_) loadScene();
     if (p_.animate) {
@@ -150,6 +158,7 @@ class LightingLesson : public Lesson {
       sceneProgram_.set("uView", cpu && p_.view == View::Lit ? 4 : int(p_.view));
       sceneProgram_.set("uNdcToTexture", p_.impl == Impl::Student ? ex01::ndcToTexture() : lighting::ndcToTexture());
       sceneProgram_.set("uTexture", 0);
+      sceneProgram_.set("uMeasureLight", f.measureLight);
       setLightUniforms();
       for (std::size_t i = 0; i < scene.objects.size(); ++i) drawObject(i);
     }

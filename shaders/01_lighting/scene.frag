@@ -1,5 +1,6 @@
 #version 410 core
 #include "common/lighting.glsl"
+#include "common/measure.glsl"
 
 in vec3 vWorldPos;
 in vec3 vNormal;
@@ -27,6 +28,9 @@ void main() {
   vec3 N = normalize(vNormal);
   vec3 V = normalize(uEye - vWorldPos);
   if (uTwoSided && dot(N, V) < 0.0) N = -N;  // leaf cards are lit from the side we see
+  // For the ground-truth comparison: this pixel's point, normal and V of the measured light (1:
+  // lesson 01 lights everything that faces a light). No shadow map, so no texel Jacobian.
+  writeMeasurement(vWorldPos, N, 1.0, vec2(0.0));
   vec3 kd = uAlbedo;
   if (uUseTexture) kd *= texture(uTexture, vUv).rgb;  // "modulate": texture times material
 

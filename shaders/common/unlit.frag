@@ -1,4 +1,8 @@
 #version 410 core
+#include "common/measure.glsl"
 uniform vec4 uColor;
 out vec4 fragColor;
-void main() { fragColor = uColor; }
+void main() {
+  fragColor = uColor;
+  writeNoMeasurement();  // gizmos are not surfaces the ground truth should judge
+}

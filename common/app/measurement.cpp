@@ -1,0 +1,292 @@
+#include "app/measurement.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "core/paths.hpp"
+#include "gl/caps.hpp"
+#include "gl/gl.hpp"
+#include "gl/texture.hpp"
+#include "measure/ground_truth.hpp"
+
+namespace shadowlab {
+namespace {
+
+double nowMs() {
+  using namespace std::chrono;
+  return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+// Reads one float attachment of the bound read framebuffer, top row first.
+ImageF readFloat(GLenum attachment, GLenum format, int channels, int w, int h) {
+  ImageF img;
+  img.width = w;
+  img.height = h;
+  img.channels = channels;
+  std::vector<float> raw(std::size_t(w) * h * channels);
+  if (attachment != GL_NONE) glReadBuffer(attachment);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, w, h, format, GL_FLOAT, raw.data());
+  img.data.resize(raw.size());
+  const std::size_t row = std::size_t(w) * channels;
+  for (int y = 0; y < h; ++y)
+    std::memcpy(&img.data[std::size_t(y) * row], &raw[std::size_t(h - 1 - y) * row], row * sizeof(float));
+  return img;
+}
+
+// The centre sample of each factor x factor block, as measure::downsample picks it, so the surface
+// and the technique's images stay aligned pixel for pixel.
+ImageF subsample(const ImageF& in, int factor) {
+  if (factor == 1) return in;
+  ImageF out;
+  out.width = (in.width + factor - 1) / factor;
+  out.height = (in.height + factor - 1) / factor;
+  out.channels = in.channels;
+  out.data.resize(std::size_t(out.width) * out.height * out.channels);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      for (int c = 0; c < in.channels; ++c)
+        out.at(x, y, c) = in.at(std::min(x * factor + factor / 2, in.width - 1),
+                                std::min(y * factor + factor / 2, in.height - 1), c);
+  return out;
+}
+
+gl::Texture floatAttachment(GLenum internal, int w, int h, const std::string& label) {
+  gl::Texture t = gl::makeTexture(GL_TEXTURE_2D, label);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return t;
+}
+
+}  // namespace
+
+Measurement::Measurement() = default;
+Measurement::~Measurement() = default;
+
+void Measurement::declare(ParamRegistry& r) {
+  r.addChoice("measure.overlay", &overlay_, {"none", "error", "aliasing", "reference"},
+              "compare with ground truth (Embree rays from the shaded points): leaks red, false shadows blue")
+      .hotkey = "M";
+  r.add("measure.light", &light_, 0, 7, "which of the lesson's lights is measured");
+  r.add("measure.scale", &scale_, 1, 8, "measure every n-th pixel: 1 exact, larger stays interactive");
+  r.add("measure.samples", &samples_, 1, 1024, "rays per pixel toward an area light (soft shadows)");
+  r.add("measure.live", &live_, "re-measure whenever the view or a parameter changes");
+}
+
+bool Measurement::active() const { return overlay_ != Overlay::None || forceFull_; }
+
+void Measurement::ensureTarget(int w, int h) {
+  if (fbo_ && w == width_ && h == height_) return;
+  width_ = w;
+  height_ = h;
+  color_ = gl::makeTexture(GL_TEXTURE_2D, "measure.color");
+  glBindTexture(GL_TEXTURE_2D, color_.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  position_ = floatAttachment(GL_RGBA32F, w, h, "measure.position");
+  normal_ = floatAttachment(GL_RGBA32F, w, h, "measure.normal+visibility");
+  jacobian_ = floatAttachment(GL_RGBA32F, w, h, "measure.jacobian");
+  depth_ = gl::makeTexture(GL_TEXTURE_2D, "measure.depth");
+  glBindTexture(GL_TEXTURE_2D, depth_.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, w, h, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  fbo_ = gl::makeFramebuffer("measurement target");
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, position_.id(), 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, normal_.id(), 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D, jacobian_.id(), 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  glDrawBuffers(4, buffers);
+  gl::requireComplete(GL_FRAMEBUFFER, "measurement target");
+  dirty_ = true;
+}
+
+unsigned Measurement::begin(unsigned frameFbo, int w, int h) {
+  if (!active()) return frameFbo;
+  if (!overlayProgram_.valid()) overlayProgram_.build();
+  if (!emptyVao_) emptyVao_ = gl::makeVertexArray("fullscreen triangle");
+  ensureTarget(w, h);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  // The lesson clears colour with its own clear colour; these must start empty everywhere.
+  const float zero[4] = {0, 0, 0, 0};
+  glClearBufferfv(GL_COLOR, 1, zero);
+  glClearBufferfv(GL_COLOR, 2, zero);
+  glClearBufferfv(GL_COLOR, 3, zero);
+  return fbo_.id();
+}
+
+void Measurement::end(const MeasureSource& source, unsigned frameFbo, bool viewChanged) {
+  if (!active()) return;
+  // The lesson's picture goes where the frame belongs.
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, frameFbo);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+
+  if (viewChanged && live_) dirty_ = true;
+  if (dirty_ || forceFull_) {
+    compute(source);
+    dirty_ = false;
+    forceFull_ = false;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, frameFbo);
+  if (overlay_ != Overlay::None) drawOverlay(frameFbo);
+}
+
+void Measurement::compute(const MeasureSource& source) {
+  result_ = {};
+  if (!source.scene || source.lights.empty()) return;
+  if (light_ >= int(source.lights.size()))
+    throw std::runtime_error("measure.light = " + std::to_string(light_) + ", but the lesson has " +
+                             std::to_string(source.lights.size()) + " light(s): valid 0.." +
+                             std::to_string(source.lights.size() - 1));
+  const int factor = forceFull_ ? 1 : scale_;
+
+  // 1. read back what the rasteriser shaded
+  double t0 = nowMs();
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+  ImageF position = subsample(readFloat(GL_COLOR_ATTACHMENT1, GL_RGBA, 4, width_, height_), factor);
+  // Coverage from depth: the lesson's glClear paints its clear colour (alpha 1) into every
+  // attachment, so position.w alone cannot tell the sky from a surface.
+  const ImageF depth = subsample(readFloat(GL_NONE, GL_DEPTH_COMPONENT, 1, width_, height_), factor);
+  for (std::size_t i = 0; i < depth.data.size(); ++i)
+    if (!(depth.data[i] < 1.0f)) position.data[i * 4 + 3] = 0.0f;
+  const ImageF normal = subsample(readFloat(GL_COLOR_ATTACHMENT2, GL_RGBA, 4, width_, height_), factor);
+  const ImageF jacobian = subsample(readFloat(GL_COLOR_ATTACHMENT3, GL_RGBA, 4, width_, height_), factor);
+  result_.readbackMs = nowMs() - t0;
+
+  // 2. the BVH, rebuilt only when the lesson's scene changed
+  for (const Material& m : source.scene->materials)
+    if (m.alphaCutoff > 0 && !m.texture.empty() && !textures_.count(m.texture))
+      textures_[m.texture] = loadImage(textureRoot() + "/" + m.texture, 4);
+  if (!truth_ || truthScene_ != source.scene || truthRevision_ != source.sceneRevision) {
+    truth_ = std::make_unique<measure::GroundTruth>(*source.scene, textures_);
+    truthScene_ = source.scene;
+    truthRevision_ = source.sceneRevision;
+    result_.buildMs = truth_->lastBuildMs();
+  }
+
+  // 3. rays from the very points that were shaded (position.w marks covered pixels)
+  const measure::SurfaceBuffer surface = measure::surfaceFromImages(position, normal);
+  ImageF technique;
+  technique.width = normal.width;
+  technique.height = normal.height;
+  technique.channels = 1;
+  technique.data.resize(std::size_t(normal.width) * normal.height);
+  for (std::size_t i = 0; i < technique.data.size(); ++i) technique.data[i] = normal.data[i * 4 + 3];
+  const Light& light = source.lights[std::size_t(light_)];
+  result_.width = surface.width;
+  result_.height = surface.height;
+  result_.soft = light.area != AreaShape::None;
+  const ImageF reference = result_.soft ? truth_->softVisibility(surface, light, samples_, 1)
+                                        : truth_->hardVisibility(surface, light);
+  result_.groundTruthMs = truth_->lastQueryMs();
+  if (result_.soft) {
+    result_.soft_ = measure::compareSoft(technique, reference);
+    result_.errorHeatmap = measure::softErrorHeatmap(technique, reference);
+  } else {
+    result_.hard = measure::compareHard(technique, reference);
+    result_.errorHeatmap = measure::hardErrorHeatmap(technique, reference);
+  }
+
+  // 4. aliasing, for techniques that sample a shadow map (their Jacobian is non-zero)
+  ImageF js = jacobian;
+  bool anyJ = false;
+  for (std::size_t i = 0; i < surface.covered.size(); ++i) {
+    if (!surface.covered[i]) {
+      for (int c = 0; c < 4; ++c) js.data[i * 4 + c] = std::nanf("");  // background
+    } else {
+      for (int c = 0; c < 4; ++c) anyJ = anyJ || js.data[i * 4 + c] != 0.0f;
+    }
+  }
+  result_.hasAliasing = anyJ;
+  if (anyJ) {
+    result_.aliasing = measure::aliasingStats(js);
+    result_.aliasingHeatmap = measure::aliasingHeatmap(js);
+  }
+
+  // The reference itself, as grey levels (background transparent).
+  result_.referenceImage.width = reference.width;
+  result_.referenceImage.height = reference.height;
+  result_.referenceImage.data.resize(std::size_t(reference.width) * reference.height * 4);
+  for (std::size_t i = 0; i < reference.data.size(); ++i) {
+    const float v = reference.data[i];
+    const auto g = std::uint8_t(v < 0 ? 40 : std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+    std::uint8_t* px = &result_.referenceImage.data[i * 4];
+    px[0] = px[1] = px[2] = g;
+    px[3] = v == measure::kBackground ? 0 : 255;
+  }
+  result_.valid = true;
+
+  const Image8* shown = overlay_ == Overlay::Aliasing ? (anyJ ? &result_.aliasingHeatmap : nullptr)
+                        : overlay_ == Overlay::Reference ? &result_.referenceImage
+                                                         : &result_.errorHeatmap;
+  if (shown) overlayTexture_ = gl::uploadTexture(*shown, "measurement overlay", false);
+  else overlayTexture_.reset();
+  if (overlayTexture_) {
+    glBindTexture(GL_TEXTURE_2D, overlayTexture_.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+}
+
+void Measurement::drawOverlay(unsigned frameFbo) {
+  if (!overlayTexture_ || !overlayProgram_.valid()) return;
+  glBindFramebuffer(GL_FRAMEBUFFER, frameFbo);
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  overlayProgram_.use();
+  overlayProgram_.set("uOpacity", overlay_ == Overlay::Reference ? 1.0f : 0.85f);
+  overlayProgram_.set("uOverlay", 0);
+  // The overlay image is top row first and uploaded unflipped; the fullscreen triangle's v runs
+  // bottom to top, so flip it here.
+  overlayProgram_.set("uFlip", 1);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, overlayTexture_.id());
+  glBindVertexArray(emptyVao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
+}
+
+std::vector<std::pair<std::string, std::string>> Measurement::summary() const {
+  std::vector<std::pair<std::string, std::string>> out;
+  if (!active() && !result_.valid) return out;
+  if (!result_.valid) {
+    out.push_back({"measure", "no scene or lights to measure"});
+    return out;
+  }
+  char buf[160];
+  if (result_.soft) {
+    std::snprintf(buf, sizeof buf, "RMSE %.4f, max %.3f (%zu px)", result_.soft_.rmse, result_.soft_.maxAbs, result_.soft_.pixels);
+    out.push_back({"soft error", buf});
+  } else {
+    const auto& h = result_.hard;
+    std::snprintf(buf, sizeof buf, "%.2f%% (leaks %.2f%%, false shadows %.2f%%)", h.misclassifiedPct, h.leakPct, h.falseShadowPct);
+    out.push_back({"misclassified", buf});
+    std::snprintf(buf, sizeof buf, "%.2f%% of %zu facing px", h.edgeTolerantPct, h.facingPixels);
+    out.push_back({"edge-tolerant", buf});
+  }
+  if (result_.hasAliasing) {
+    const auto& a = result_.aliasing;
+    std::snprintf(buf, sizeof buf, "mean %.2f p95 %.2f max %.1f, m>1 %.1f%%", a.mean, a.p95, a.max, 100.0 * a.shareAbove1);
+    out.push_back({"aliasing m", buf});
+  }
+  std::snprintf(buf, sizeof buf, "%dx%d: rays %.0f ms, read-back %.0f ms%s", result_.width, result_.height,
+                result_.groundTruthMs, result_.readbackMs, result_.buildMs > 0 ? ", BVH rebuilt" : "");
+  out.push_back({"ground truth", buf});
+  return out;
+}
+
+}  // namespace shadowlab

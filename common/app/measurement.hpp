@@ -1,0 +1,101 @@
+#pragma once
+// Measuring a lesson's shadows against ground truth, for any lesson that describes its scene and
+// lights (Lesson::measureSource). The lesson's scene shader writes, through
+// shaders/common/measure.glsl, the world position and normal of every pixel it shades, its own
+// visibility V of the measured light, and the shadow-texel Jacobian. The framework renders the
+// frame into a target with those attachments, reads them back, casts Embree rays from exactly
+// those points (common/measure), and shows the result:
+//   overlay=error     light leaks (red) and false shadows (blue) over the frame
+//   overlay=aliasing  m = 1 / sigma_min(J): screen pixels per shadow texel (m <= 1 alias-free)
+//   overlay=reference the ground-truth visibility itself
+// Interactive by construction: recomputed only when the view or a parameter changed, at a reduced
+// resolution (measure.scale), with its cost in the header.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/image.hpp"
+#include "core/light.hpp"
+#include "core/params.hpp"
+#include "core/scene.hpp"
+#include "gl/objects.hpp"
+#include "gl/program.hpp"
+#include "measure/metrics.hpp"
+
+namespace shadowlab {
+
+namespace measure {
+class GroundTruth;
+}
+
+// What a lesson hands the framework so it can be measured.
+struct MeasureSource {
+  const Scene* scene = nullptr;     // everything that casts shadows, on the CPU
+  std::uint64_t sceneRevision = 0;  // change it when the scene changes: the BVH is rebuilt then only
+  std::vector<Light> lights;        // the lesson's lights, in its own order
+};
+
+struct MeasureResult {
+  bool valid = false;
+  bool soft = false;
+  measure::HardShadowErrors hard;
+  measure::SoftShadowErrors soft_;
+  bool hasAliasing = false;
+  measure::AliasingStats aliasing;
+  double groundTruthMs = 0, readbackMs = 0, buildMs = 0;
+  int width = 0, height = 0;  // the resolution measured at
+  Image8 errorHeatmap, aliasingHeatmap, referenceImage;
+};
+
+class Measurement {
+ public:
+  Measurement();
+  ~Measurement();
+  void declare(ParamRegistry& params);
+  // True when the frame should go through the measurement target this frame.
+  bool active() const;
+  int measuredLight() const { return active() ? light_ : -1; }
+  // Force a full-resolution measurement of the next frame (headless --measure).
+  void requestFullResolution() { forceFull_ = true; }
+
+  // Before the lesson renders: the framebuffer it should draw into (the measurement target when
+  // active, else `frameFbo`).
+  unsigned begin(unsigned frameFbo, int width, int height);
+  // After it rendered: copies the colour into `frameFbo`, measures if needed, draws the overlay.
+  void end(const MeasureSource& source, unsigned frameFbo, bool viewChanged);
+
+  const MeasureResult& result() const { return result_; }
+  // One-line figures for the header.
+  std::vector<std::pair<std::string, std::string>> summary() const;
+
+ private:
+  void ensureTarget(int width, int height);
+  void compute(const MeasureSource& source);
+  void drawOverlay(unsigned frameFbo);
+
+  enum class Overlay { None, Error, Aliasing, Reference };
+  Overlay overlay_ = Overlay::None;
+  int light_ = 0;
+  int scale_ = 2;
+  int samples_ = 16;
+  bool live_ = true;
+  bool forceFull_ = false;
+  bool dirty_ = true;
+
+  int width_ = 0, height_ = 0;
+  gl::Framebuffer fbo_;
+  gl::Texture color_, position_, normal_, jacobian_, depth_;
+  gl::Texture overlayTexture_;
+  gl::VertexArray emptyVao_;
+  gl::Program overlayProgram_{"measurement overlay", {"common/fullscreen.vert", "common/overlay.frag"}};
+  std::unique_ptr<measure::GroundTruth> truth_;
+  const Scene* truthScene_ = nullptr;
+  std::uint64_t truthRevision_ = 0;
+  std::map<std::string, Image8> textures_;
+  MeasureResult result_;
+};
+
+}  // namespace shadowlab
