@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "app/context.hpp"
+#include "app/god_view.hpp"
 #include "app/lesson.hpp"
 #include "app/ui.hpp"
 #include "core/cli.hpp"
@@ -193,10 +194,12 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
   ParamRegistry params;
   PresetFile presets;
   Measurement measurement;  // holds GL objects: declared after the context, destroyed before it
+  GodView godView;
   try {
     cl = parseCommandLine(argc, argv);
     declareCamera(params, lesson.camera);
     lesson.declare(params);
+    godView.declare(params);
     if (info.measurable) measurement.declare(params);
     else if (!cl.measure.empty()) throw CliError("--measure: lesson " + info.name + " computes no shadows to measure");
     presets = PresetFile::load(sourceRoot() + "/lessons/" + info.name + "/presets.txt");
@@ -353,7 +356,11 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
     const bool lastFrame = cl.frames > 0 && frame + 1 == cl.frames;
     if (lastFrame && !cl.measure.empty()) measurement.requestFullResolution();
     FrameInfo fi{frame, time, dt, width, height, context->framebuffer()};
+    fi.view = lesson.camera.view();
+    fi.projection = lesson.camera.projection(float(width) / float(height));
+    fi.eye = lesson.camera.position();
     lesson.timers.setFrame(frame);
+    lesson.debug.clear();
     const unsigned frameFbo = fi.framebuffer;
     std::vector<std::string> errors = shaderErrors();
     if (!initError.empty()) errors.insert(errors.begin(), initError);
@@ -375,6 +382,12 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
         lastRevision = params.revision();
         measurement.end(lesson.measureSource(), frameFbo, viewChanged);
         fi.framebuffer = frameFbo;
+        if (godView.enabled()) {
+          lesson.timers.setEnabled(false);
+          godView.draw(fi, lesson.camera, lesson.debug, [&](const FrameInfo& g) { lesson.render(g); });
+          lesson.timers.setEnabled(true);
+          glViewport(0, 0, width, height);
+        }
       } catch (const std::exception& e) {
         // A file that cannot be read, a scene that cannot be built: headless runs fail with the
         // message; a window keeps running and shows it until a reload (R) succeeds.

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/camera.hpp"
+#include "app/debug_draw.hpp"
 #include "app/measurement.hpp"
 #include "core/params.hpp"
 #include "gl/timer.hpp"
@@ -36,6 +37,12 @@ struct FrameInfo {
   int width = 0, height = 0;
   unsigned framebuffer = 0;  // draw here (not necessarily 0)
   int measureLight = -1;     // pass to the scene shader's uMeasureLight (shaders/common/measure.glsl)
+  // The camera to DRAW with: the lesson's camera, or the god view's camera outside the scene.
+  // Shadow techniques fit themselves to `Lesson::camera` (the viewer), never to these, so the god
+  // view shows the very shadows the viewer sees.
+  glm::mat4 view{1.0f}, projection{1.0f};
+  glm::vec3 eye{0.0f};
+  bool godView = false;
 };
 
 // Counters of skipped or spent work that the header shows next to the timings
@@ -62,6 +69,7 @@ class Lesson {
   OrbitCamera camera;
   gl::GpuTimers timers;
   std::vector<Counter> counters;  // refilled by the lesson each frame
+  DebugDraw debug;                // shapes for the god view; cleared by the framework every frame
 
   gl::TimerScope scope(const std::string& pass) { return gl::TimerScope(timers, pass); }
 };

@@ -32,6 +32,7 @@ GpuTimers::Pass& GpuTimers::pass(const std::string& name) {
 }
 
 void GpuTimers::begin(const std::string& name) {
+  if (!enabled_) return;
   if (open_ >= 0) throw std::logic_error("GpuTimers: pass '" + name + "' begun inside '" + passes_[open_].name + "'");
   Pass& p = pass(name);
   open_ = int(&p - passes_.data());
@@ -45,6 +46,7 @@ void GpuTimers::begin(const std::string& name) {
 }
 
 void GpuTimers::end() {
+  if (!enabled_) return;
   if (open_ < 0) throw std::logic_error("GpuTimers: end() without begin()");
   Pass& p = passes_[open_];
   Slot& slot = p.ring[p.next];

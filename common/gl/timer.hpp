@@ -30,6 +30,8 @@ class GpuTimers {
   static constexpr int kRing = 6;      // frames in flight before a query pair is reused
   static constexpr int kWindow = 30;   // frames in the average
 
+  // Off: begin/end do nothing (the god view re-renders the lesson; its passes must not be counted).
+  void setEnabled(bool on) { enabled_ = on; }
   void begin(const std::string& pass);
   void end();
   // Once a frame, after the passes: collects every result that is ready.
@@ -61,6 +63,7 @@ class GpuTimers {
   std::vector<PassTiming> timings_;
   std::vector<TimingSample> samples_;
   bool keep_ = false;
+  bool enabled_ = true;
   int frame_ = 0;
   int open_ = -1;
   double openCpuStart_ = 0;

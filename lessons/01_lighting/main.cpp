@@ -132,7 +132,7 @@ class LightingLesson : public Lesson {
   }
 
   void render(const FrameInfo& f) override {
-    const glm::mat4 viewProj = camera.projection(float(f.width) / float(f.height)) * camera.view();
+    const glm::mat4 viewProj = f.projection * f.view;
     const bool cpu = p_.impl == Impl::Student || p_.shading == Shading::PerVertexCpu;
     counters = {{"triangles", std::to_string(scene.triangleCount())},
                 {"shading", cpu ? (p_.impl == Impl::Student ? "CPU per vertex, student code" : "CPU per vertex") : "GPU per pixel"}};
@@ -152,7 +152,7 @@ class LightingLesson : public Lesson {
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       sceneProgram_.use();
       sceneProgram_.set("uViewProj", viewProj);
-      sceneProgram_.set("uEye", camera.position());
+      sceneProgram_.set("uEye", f.eye);
       sceneProgram_.set("uAmbient", glm::vec3(p_.ambient));
       sceneProgram_.set("uBlinn", p_.blinn);
       sceneProgram_.set("uView", cpu && p_.view == View::Lit ? 4 : int(p_.view));
@@ -170,6 +170,7 @@ class LightingLesson : public Lesson {
       for (const Light& l : p_.lights) {
         if (!l.enabled) continue;
         const glm::vec3 at = l.kind == LightKind::Directional ? camera.target - 6.0f * l.direction : l.position;
+        if (l.kind == LightKind::Spot) debug.cone(l.position, l.direction, l.spotOuter, 6.0f, glm::vec4(l.color, 1));
         unlit_.set("uMvp", viewProj * glm::translate(glm::mat4(1), at));
         unlit_.set("uColor", glm::vec4(glm::min(l.color * 1.5f, glm::vec3(1)), 1));
         gizmo_.draw();

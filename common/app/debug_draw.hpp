@@ -1,0 +1,35 @@
+#pragma once
+// Shapes a lesson wants to show in the god view (a second camera outside the scene): frusta, cones,
+// boxes, lines. Lessons fill `debug` in render() each frame; the framework clears it per frame and
+// draws it, with the main camera's frustum, into the god view inset (view.god, hotkey O).
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/mesh.hpp"
+
+namespace shadowlab {
+
+class DebugDraw {
+ public:
+  struct Line {
+    glm::vec3 a, b;
+    glm::vec4 color;
+  };
+  void clear() { lines_.clear(); }
+  void line(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color);
+  // The 12 edges of the volume that `viewProj` maps onto the clip cube [-1,1]^3 (a camera's or a
+  // light's frustum, or an orthographic box).
+  void frustum(const glm::mat4& viewProj, const glm::vec4& color);
+  void box(const Aabb& box, const glm::vec4& color);
+  // A cone from `apex` along unit `axis` with half-angle `angle` (radians), `length` long.
+  void cone(const glm::vec3& apex, const glm::vec3& axis, float angle, float length, const glm::vec4& color);
+  void cross(const glm::vec3& p, float size, const glm::vec4& color);
+  const std::vector<Line>& lines() const { return lines_; }
+
+ private:
+  std::vector<Line> lines_;
+};
+
+}  // namespace shadowlab

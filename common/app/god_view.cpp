@@ -1,0 +1,88 @@
+#include "app/god_view.hpp"
+
+#include <algorithm>
+
+#include "gl/gl.hpp"
+
+namespace shadowlab {
+
+void GodView::declare(ParamRegistry& r) {
+  r.add("view.god", &enabled_, "a second camera outside the scene: the view frustum, light frusta and cones, bounds").hotkey = "O";
+  r.add("view.god_size", &size_, 0.2f, 1.0f, "the god view inset's width, as a fraction of the frame");
+  r.add("view.god_distance", &distance_, 1.0f, 10.0f, "how far out the god camera stands, in viewer distances");
+  r.add("view.god_yaw", &yaw_, -3.2f, 3.2f, "the god camera's angle around the scene, relative to the viewer");
+}
+
+void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const DebugDraw& shapes,
+                   const std::function<void(const FrameInfo&)>& renderLesson) {
+  const int w = std::max(16, int(float(frame.width) * size_));
+  const int h = std::max(16, int(float(w) * float(frame.height) / float(frame.width)));
+  if (target_.width != w || target_.height != h) target_ = gl::makeRenderTarget(w, h, "god view");
+  if (!lines_.valid()) lines_.build();
+
+  OrbitCamera god = viewer;
+  god.distance = viewer.distance * distance_;
+  god.yaw = viewer.yaw + yaw_;
+  god.pitch = std::max(viewer.pitch, 0.6f);
+  god.farZ = viewer.farZ * distance_ * 2.0f;
+  FrameInfo g = frame;
+  g.framebuffer = target_.fbo.id();
+  g.width = w;
+  g.height = h;
+  g.view = god.view();
+  g.projection = god.projection(float(w) / float(h));
+  g.eye = god.position();
+  g.godView = true;
+  g.measureLight = -1;
+  glBindFramebuffer(GL_FRAMEBUFFER, g.framebuffer);
+  glViewport(0, 0, w, h);
+  renderLesson(g);
+
+  // The viewer's frustum, then the lesson's shapes.
+  DebugDraw all = shapes;
+  all.frustum(viewer.projection(float(frame.width) / float(frame.height)) * viewer.view(), {1, 1, 0.3f, 1});
+  struct V {
+    glm::vec3 p;
+    glm::vec4 c;
+  };
+  std::vector<V> v;
+  v.reserve(all.lines().size() * 2);
+  for (const auto& l : all.lines()) {
+    v.push_back({l.a, l.color});
+    v.push_back({l.b, l.color});
+  }
+  if (!vao_) {
+    vao_ = gl::makeVertexArray("god view lines");
+    vertices_ = gl::makeBuffer(GL_ARRAY_BUFFER, "god view lines");
+  }
+  glBindVertexArray(vao_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(V)), v.data(), GL_STREAM_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(V), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(V), reinterpret_cast<void*>(sizeof(glm::vec3)));
+  glBindFramebuffer(GL_FRAMEBUFFER, g.framebuffer);
+  glViewport(0, 0, w, h);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  lines_.use();
+  lines_.set("uViewProj", g.projection * g.view);
+  glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
+  glDepthFunc(GL_LESS);
+
+  // Into the bottom-right corner of the frame, with a thin frame around it.
+  const int x0 = frame.width - w - 8, y0 = 8;
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, frame.framebuffer);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x0 - 2, y0 - 2, w + 4, h + 4);
+  glClearColor(0.9f, 0.9f, 0.9f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, g.framebuffer);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBlitFramebuffer(0, 0, w, h, x0, y0, x0 + w, y0 + h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  glBindFramebuffer(GL_FRAMEBUFFER, frame.framebuffer);
+}
+
+}  // namespace shadowlab

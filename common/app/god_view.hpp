@@ -1,0 +1,34 @@
+#pragma once
+// The god view: the lesson rendered again from a camera outside the scene, into an inset in the
+// corner of the frame, with the viewer's frustum and the lesson's debug shapes (DebugDraw) drawn
+// in: frusta, light cones, receiver bounds, and later the post-projective unit cube.
+#include <functional>
+
+#include "app/debug_draw.hpp"
+#include "app/lesson.hpp"
+#include "core/camera.hpp"
+#include "gl/objects.hpp"
+#include "gl/program.hpp"
+
+namespace shadowlab {
+
+class GodView {
+ public:
+  void declare(ParamRegistry& params);
+  bool enabled() const { return enabled_; }
+  // Renders the inset into `frame`'s framebuffer. `renderLesson` draws the lesson for a FrameInfo.
+  void draw(const FrameInfo& frame, const OrbitCamera& viewer, const DebugDraw& shapes,
+            const std::function<void(const FrameInfo&)>& renderLesson);
+
+ private:
+  bool enabled_ = false;
+  float size_ = 0.4f;      // fraction of the frame's width
+  float distance_ = 2.5f;  // times the viewer's distance
+  float yaw_ = 0.9f;       // radians around the viewer's yaw
+  gl::RenderTarget target_;
+  gl::VertexArray vao_;
+  gl::Buffer vertices_;
+  gl::Program lines_{"god view lines", {"common/lines.vert", "common/lines.frag"}};
+};
+
+}  // namespace shadowlab
