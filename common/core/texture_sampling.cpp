@@ -307,4 +307,52 @@ ImageF makeZonePlate(int size) {
   return img;
 }
 
+std::vector<std::uint8_t> makeShellVolume(int n) {
+  requireSize(n, n, "makeShellVolume");
+  std::vector<std::uint8_t> voxels(std::size_t(n) * n * n * 4);
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const glm::vec3 p = (glm::vec3(x, y, z) + 0.5f) / float(n) - 0.5f;
+        const float d = 0.5f + 0.5f * std::cos(40.0f * glm::length(p) + 6.0f * p.x);
+        std::uint8_t* v = &voxels[((std::size_t(z) * n + y) * n + x) * 4];
+        v[0] = std::uint8_t(255 * d);
+        v[1] = std::uint8_t(255 * d * d);
+        v[2] = std::uint8_t(std::clamp(255 * (1 - d) * 0.6f + 60 * (p.z + 0.5f), 0.0f, 255.0f));
+        v[3] = 255;
+      }
+  return voxels;
+}
+
+std::vector<float> boxReduceRgb(const Image8& image, int factor) {
+  if (factor < 1 || image.width % factor || image.height % factor || image.channels < 3)
+    throw std::invalid_argument("boxReduceRgb: " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                " is not a multiple of " + std::to_string(factor) + " (or has no RGB)");
+  const int w = image.width / factor, h = image.height / factor;
+  std::vector<float> out(std::size_t(w) * h * 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int k = 0; k < 3; ++k) {
+        double acc = 0;
+        for (int b = 0; b < factor; ++b)
+          for (int a = 0; a < factor; ++a) acc += image.at(x * factor + a, y * factor + b)[k];
+        out[(std::size_t(y) * w + x) * 3 + k] = float(acc / double(factor * factor));
+      }
+  return out;
+}
+
+double rmse(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size() || a.empty()) return -1;
+  double se = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) se += (double(a[i]) - b[i]) * (double(a[i]) - b[i]);
+  return std::sqrt(se / double(a.size()));
+}
+
+double meanAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size() || a.empty()) return -1;
+  double sum = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += std::abs(double(a[i]) - b[i]);
+  return sum / double(a.size());
+}
+
 }  // namespace shadowlab::sampling

@@ -117,4 +117,17 @@ glm::vec2 sphericalUv(const glm::vec3& p);
 // border (the classic test for filtering). RGBA, `size` x `size`.
 ImageF makeZonePlate(int size);
 
+// A 3D texture of nested density shells (a stand-in tomogram): n^3 RGBA8 voxels, x fastest.
+// Throws std::invalid_argument for n < 1.
+std::vector<std::uint8_t> makeShellVolume(int n);
+
+// ---- Image error figures (lesson 06's supersampled reference) ---------------------------------
+// The RGB of an RGBA8 image as floats (0-255), each output pixel the mean of a factor x factor
+// block; the size must divide by the factor (std::invalid_argument otherwise).
+std::vector<float> boxReduceRgb(const Image8& image, int factor);
+// Root mean square and mean absolute difference of two equally long arrays; -1 when the lengths
+// differ or are 0 (the first frame has no previous one to flicker against).
+double rmse(const std::vector<float>& a, const std::vector<float>& b);
+double meanAbsDifference(const std::vector<float>& a, const std::vector<float>& b);
+
 }  // namespace shadowlab::sampling

@@ -158,7 +158,7 @@ class TextureFilteringLesson : public Lesson {
 
   void resize(int w, int h) override {
     target_ = gl::makeFootprintTarget(w, h, true, "06 scene target");
-    cpuView_ = gl::uploadLevel(blankImage(w, h), "06 cpu view");
+    cpuView_ = gl::uploadLevel(ImageF{w, h, 4, std::vector<float>(std::size_t(w) * h * 4)}, "06 cpu view");
     cpuFbo_ = gl::makeFramebuffer("06 cpu view fbo");
     glBindFramebuffer(GL_FRAMEBUFFER, cpuFbo_.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, cpuView_.id(), 0);
@@ -223,15 +223,6 @@ class TextureFilteringLesson : public Lesson {
   }
 
  private:
-  static ImageF blankImage(int w, int h) {
-    ImageF img;
-    img.width = w;
-    img.height = h;
-    img.channels = 4;
-    img.data.assign(std::size_t(w) * h * 4, 0.0f);
-    return img;
-  }
-
   sampling::SamplerState samplerState() const {
     sampling::SamplerState s;
     s.mag = p_.mag;
@@ -274,18 +265,7 @@ class TextureFilteringLesson : public Lesson {
     ripOffsetY_ = rip.offsetY;
     if (p_.texture == TexChoice::Volume) {  // a "tomogram": nested shells of density
       const int n = kVolumeSizes[p_.volumeSize];
-      std::vector<std::uint8_t> voxels(std::size_t(n) * n * n * 4);
-      for (int z = 0; z < n; ++z)
-        for (int y = 0; y < n; ++y)
-          for (int x = 0; x < n; ++x) {
-            const glm::vec3 p = (glm::vec3(x, y, z) + 0.5f) / float(n) - 0.5f;
-            const float d = 0.5f + 0.5f * std::cos(40.0f * glm::length(p) + 6.0f * p.x);
-            std::uint8_t* v = &voxels[((std::size_t(z) * n + y) * n + x) * 4];
-            v[0] = std::uint8_t(255 * d);
-            v[1] = std::uint8_t(255 * d * d);
-            v[2] = std::uint8_t(255 * (1 - d) * 0.6f + 60 * (p.z + 0.5f));
-            v[3] = 255;
-          }
+      const std::vector<std::uint8_t> voxels = sampling::makeShellVolume(n);
       volume_ = gl::uploadVolume(n, voxels, "06 volume " + std::to_string(n) + "^3");
     }
   }
@@ -435,34 +415,15 @@ class TextureFilteringLesson : public Lesson {
     gl::applySamplerState(sampler_.id(), best);
     drawScene(ssTarget_, best, w, h);
     gl::applySamplerState(sampler_.id(), samplerState());
-    const Image8 big = gl::readPixels(ssTarget_.fbo.id(), w * s, h * s);
-    const Image8 test = gl::readPixels(target_.fbo.id(), w, h);
-    std::vector<float> ref(std::size_t(w) * h * 3), cur(ref.size());
-    double se = 0;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        for (int k = 0; k < 3; ++k) {
-          double acc = 0;
-          for (int b = 0; b < s; ++b)
-            for (int a = 0; a < s; ++a) acc += big.at(x * s + a, y * s + b)[k];
-          const std::size_t i = (std::size_t(y) * w + x) * 3 + k;
-          ref[i] = float(acc / (s * s));
-          cur[i] = test.at(x, y)[k];
-          se += double(cur[i] - ref[i]) * double(cur[i] - ref[i]);
-        }
-    auto change = [](const std::vector<float>& a, const std::vector<float>& b) {
-      if (a.size() != b.size()) return -1.0;
-      double sum = 0;
-      for (std::size_t i = 0; i < a.size(); ++i) sum += std::abs(double(a[i]) - double(b[i]));
-      return sum / double(a.size());
-    };
-    const double rmse = std::sqrt(se / double(ref.size()));
-    std::printf("measure frame=%d rmse=%.4f flicker=%.4f ref_flicker=%.4f\n", f.index, rmse, change(cur, prevTest_),
-                change(ref, prevRef_));
+    const std::vector<float> ref = sampling::boxReduceRgb(gl::readPixels(ssTarget_.fbo.id(), w * s, h * s), s);
+    std::vector<float> cur = sampling::boxReduceRgb(gl::readPixels(target_.fbo.id(), w, h), 1);
+    const double rmse = sampling::rmse(cur, ref);
+    std::printf("measure frame=%d rmse=%.4f flicker=%.4f ref_flicker=%.4f\n", f.index, rmse,
+                sampling::meanAbsDifference(cur, prevTest_), sampling::meanAbsDifference(ref, prevRef_));
     std::fflush(stdout);
     counters.push_back({"RMSE vs supersampled", fmt("%.2f of 255 (%.0fx%.0f reference)", rmse, w * s, h * s)});
     prevTest_ = std::move(cur);
-    prevRef_ = std::move(ref);
+    prevRef_ = ref;
   }
 
   Params p_;

@@ -238,3 +238,28 @@ TEST_CASE("texture sampling: zone plate and 8-bit round trip") {
   const Image8 b = toImage8(z);
   CHECK(toFloat(b).at(8, 8, 0) == doctest::Approx(254.0f / 255.0f).epsilon(0.01));
 }
+
+TEST_CASE("texture sampling: supersampled reference figures") {
+  Image8 img;
+  img.width = 4;
+  img.height = 2;
+  img.channels = 4;
+  img.data.assign(4 * 2 * 4, 0);
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) img.at(x, y)[0] = std::uint8_t(10 * (x + 4 * y));  // red 0 10 20 30 / 40 50 60 70
+  // 2x2 blocks: (0 + 10 + 40 + 50) / 4 = 25, (20 + 30 + 60 + 70) / 4 = 45.
+  const std::vector<float> r = boxReduceRgb(img, 2);
+  REQUIRE(r.size() == 6u);
+  CHECK(r[0] == doctest::Approx(25.0f));
+  CHECK(r[3] == doctest::Approx(45.0f));
+  CHECK(r[1] == 0.0f);
+  CHECK_THROWS_AS(boxReduceRgb(img, 3), std::invalid_argument);
+  // Differences (3, 4) and (0, 0): RMSE sqrt((9 + 16) / 4) = 2.5; mean |.| = 7 / 4.
+  CHECK(rmse({3, 4, 0, 0}, {0, 0, 0, 0}) == doctest::Approx(2.5));
+  CHECK(meanAbsDifference({3, -4, 0, 0}, {0, 0, 0, 0}) == doctest::Approx(1.75));
+  CHECK(meanAbsDifference({1}, {}) == -1.0);
+  const std::vector<std::uint8_t> v = makeShellVolume(8);
+  CHECK(v.size() == 8u * 8 * 8 * 4);
+  CHECK(v[3] == 255);
+  CHECK_THROWS_AS(makeShellVolume(0), std::invalid_argument);
+}
