@@ -27,7 +27,13 @@ foreach(lesson IN LISTS SHADOWLAB_LESSONS)
            -- --headless --frames 3 --show-ui --screenshot ${shots}/${name}_ui.png)
   add_test(NAME gpu.${name}.bench COMMAND lesson_check ${bin}
            -- --headless --frames 10 --size 320x180 --bench ${shots}/${name}_bench.csv)
-  set_tests_properties(gpu.${name}.headless gpu.${name}.presets gpu.${name}.ui gpu.${name}.bench PROPERTIES LABELS gpu)
+  # The framework's views on every lesson: the god view inset and the A/B split (B = first preset).
+  add_test(NAME gpu.${name}.god_view COMMAND lesson_check ${bin} --png ${shots}/${name}_god.png
+           -- --headless --frames 2 --size 640x360 --set view.god=true --screenshot ${shots}/${name}_god.png)
+  add_test(NAME gpu.${name}.ab_split COMMAND lesson_check ${bin} --png ${shots}/${name}_ab.png
+           -- --headless --frames 2 --size 640x360 --set ab.enabled=true --show-ui --screenshot ${shots}/${name}_ab.png)
+  set_tests_properties(gpu.${name}.headless gpu.${name}.presets gpu.${name}.ui gpu.${name}.bench
+                       gpu.${name}.god_view gpu.${name}.ab_split PROPERTIES LABELS gpu)
   # Bad input: one-line errors naming the value and the choices (exit 2), missing files named (exit 1).
   add_test(NAME cli.${name}.unknown_flag COMMAND lesson_check ${bin} --expect-exit 2
            --expect-stderr "unknown flag '--frobnicate'; valid: --headless" -- --frobnicate)

@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "app/context.hpp"
+#include "app/ab_split.hpp"
 #include "app/god_view.hpp"
 #include "app/lesson.hpp"
 #include "app/ui.hpp"
@@ -53,7 +54,15 @@ struct Input {
   int uiScaleSteps = 0;
   bool toggleFullscreen = false;
   std::vector<int> pressed;  // plain key presses, for parameter hotkeys
+  bool draggingDivider = false;
 };
+
+// Window width in the cursor's coordinates (screen coordinates, not framebuffer pixels).
+double winWidth(GLFWwindow* w) {
+  int ww = 1, wh = 1;
+  glfwGetWindowSize(w, &ww, &wh);
+  return double(std::max(ww, 1));
+}
 Input* g_input = nullptr;
 
 void onScroll(GLFWwindow* w, double x, double y) {
@@ -195,14 +204,16 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
   PresetFile presets;
   Measurement measurement;  // holds GL objects: declared after the context, destroyed before it
   GodView godView;
+  AbSplit ab;
   try {
     cl = parseCommandLine(argc, argv);
-    declareCamera(params, lesson.camera);
-    lesson.declare(params);
+    lesson.declare(params);  // may set the camera's starting pose...
+    declareCamera(params, lesson.camera);  // ...which then is the camera's default
     godView.declare(params);
     if (info.measurable) measurement.declare(params);
     else if (!cl.measure.empty()) throw CliError("--measure: lesson " + info.name + " computes no shadows to measure");
     presets = PresetFile::load(sourceRoot() + "/lessons/" + info.name + "/presets.txt");
+    ab.declare(params, presets);
     presets.validate(params);
     if (cl.help) {
       std::cout << info.number << " " << info.title << ": " << info.summary << "\n\n" << commandLineHelp(argv[0]);
@@ -310,7 +321,14 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
       glfwGetCursorPos(w, &x, &y);
       if (input.haveLast && !ui.wantsMouse()) {
         const float dx = float(x - input.lastX), dy = float(y - input.lastY);
-        if (glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS) lesson.camera.orbit(-dx * 0.005f, dy * 0.005f);
+        const bool left = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        if (left && ab.enabled() && (input.draggingDivider || std::abs(x - ab.divider() * winWidth(w)) < 8)) {
+          input.draggingDivider = true;  // the A/B divider follows the mouse
+          ab.setDivider(float(x / winWidth(w)));
+        } else if (left) {
+          lesson.camera.orbit(-dx * 0.005f, dy * 0.005f);
+        }
+        if (!left) input.draggingDivider = false;
         if (glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS) lesson.camera.pan({-dx, dy});
         if (input.scroll != 0) lesson.camera.zoom(std::pow(0.9f, input.scroll));
       }
@@ -373,6 +391,7 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
         lesson.update(fi);
         fi.framebuffer = measurement.begin(frameFbo, width, height);
         fi.measureLight = measurement.measuredLight();
+        glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
         glViewport(0, 0, width, height);
         lesson.render(fi);
         // Re-measure when anything the picture depends on moved: the camera or any parameter.
@@ -382,6 +401,12 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
         lastRevision = params.revision();
         measurement.end(lesson.measureSource(), frameFbo, viewChanged);
         fi.framebuffer = frameFbo;
+        if (ab.enabled()) {
+          ab.draw(fi, params, presets, lesson, info.measurable ? &measurement : nullptr,
+                  [&](const FrameInfo& b) { lesson.render(b); });
+          lastRevision = params.revision();  // switching to B and back is not a change
+          glViewport(0, 0, width, height);
+        }
         if (godView.enabled()) {
           lesson.timers.setEnabled(false);
           godView.draw(fi, lesson.camera, lesson.debug, [&](const FrameInfo& g) { lesson.render(g); });
@@ -413,6 +438,7 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
       for (auto& [name, value] : measurement.summary()) shown.push_back({name, value});
       ui.header({&info, caps.summary(), frameMsAvg, &lesson.timers.passes(), &shown, errors, status});
       ui.paramPanel(params, presets, status);
+      if (ab.enabled()) ui.splitLabels(ab.divider(), ab.labelA(info.measurable ? &measurement : nullptr), ab.labelB());
       lesson.gui();
       ui.help(info, params, &helpOpen);
       input.help = helpOpen;

@@ -58,6 +58,15 @@ class Measurement {
   // True when the frame should go through the measurement target this frame.
   bool active() const;
   int measuredLight() const { return active() ? light_ : -1; }
+  // Take another measurement's settings (the A/B split measures B like A).
+  void mirror(const Measurement& other) {
+    overlay_ = other.overlay_;
+    light_ = other.light_;
+    scale_ = other.scale_;
+    samples_ = other.samples_;
+    live_ = other.live_;
+    forceFull_ = other.forceFull_;
+  }
   // Force a full-resolution measurement of the next frame (headless --measure).
   void requestFullResolution() { forceFull_ = true; }
 

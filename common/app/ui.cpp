@@ -5,6 +5,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <string>
 #include <cstdio>
 
 namespace shadowlab {
@@ -120,6 +121,19 @@ void Ui::help(const LessonInfo& info, const ParamRegistry& params, bool* open) {
     ImGui::Text("%-3s %s", p.hotkey.c_str(), p.name.c_str());
   }
   ImGui::End();
+}
+
+void Ui::splitLabels(float divider, const std::string& a, const std::string& b) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  const float x = divider * size.x, y = size.y - ImGui::GetTextLineHeightWithSpacing() * 2.6f;
+  auto label = [&](float left, const std::string& text) {
+    const ImVec2 t = ImGui::CalcTextSize(text.c_str());
+    draw->AddRectFilled(ImVec2(left - 4, y - 4), ImVec2(left + t.x + 4, y + t.y + 4), IM_COL32(0, 0, 0, 180), 4.0f);
+    draw->AddText(ImVec2(left, y), IM_COL32(255, 255, 255, 255), text.c_str());
+  };
+  label(std::max(8.0f, x - ImGui::CalcTextSize(a.c_str()).x - 16.0f), a);
+  label(x + 16.0f, b);
 }
 
 bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status) {

@@ -34,6 +34,8 @@ class Ui {
   };
   void header(const HeaderData& data);
   void help(const LessonInfo& info, const ParamRegistry& params, bool* open);
+  // A/B split: a label at the top of each half.
+  void splitLabels(float divider, const std::string& a, const std::string& b);
   // Returns true when a parameter changed.
   bool paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status);
 

@@ -1,0 +1,86 @@
+#include "app/ab_split.hpp"
+
+#include <cstdio>
+
+#include "gl/gl.hpp"
+
+namespace shadowlab {
+namespace {
+
+// Framework settings B shares with A: the same view of the same scene, measured the same way.
+bool sharedWithB(const std::string& name) {
+  for (const char* prefix : {"camera.", "ab.", "view.", "measure."})
+    if (name.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
+std::string figures(const Measurement* m) {
+  if (!m || !m->result().valid) return "";
+  const MeasureResult& r = m->result();
+  char buf[96];
+  if (r.soft) std::snprintf(buf, sizeof buf, "RMSE %.4f", r.soft_.rmse);
+  else std::snprintf(buf, sizeof buf, "misclassified %.2f%% (leaks %.2f%%)", r.hard.misclassifiedPct, r.hard.leakPct);
+  return buf;
+}
+
+}  // namespace
+
+void AbSplit::declare(ParamRegistry& r, const PresetFile& presets) {
+  presetNames_ = presets.names();
+  if (presetNames_.empty()) return;  // nothing to compare with
+  r.add("ab.enabled", &enabled_, "split screen: current settings (A, left) against a preset (B, right)").hotkey = "X";
+  r.addChoice("ab.preset", &preset_, presetNames_, "the preset shown right of the divider");
+  r.add("ab.divider", &divider_, 0.02f, 0.98f, "where the screen splits (drag it with the mouse)");
+}
+
+void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFile& presets, Lesson& lesson,
+                   const Measurement* measured, const std::function<void(const FrameInfo&)>& render) {
+  if (target_.width != frame.width || target_.height != frame.height)
+    target_ = gl::makeRenderTarget(frame.width, frame.height, "A/B: B");
+
+  // Switch to B: the preset over the defaults, keeping A's view and the framework's settings.
+  const auto a = params.snapshot();
+  presets.apply(presetNames_[std::size_t(preset_)], params);
+  for (const auto& [name, value] : a)
+    if (sharedWithB(name)) params.set(name, value);
+
+  FrameInfo b = frame;
+  lesson.timers.setEnabled(false);
+  lesson.update(b);
+  if (measured) measurementB_.mirror(*measured);
+  b.framebuffer = measurementB_.begin(target_.fbo.id(), frame.width, frame.height);
+  b.measureLight = measurementB_.measuredLight();
+  glBindFramebuffer(GL_FRAMEBUFFER, b.framebuffer);
+  glViewport(0, 0, frame.width, frame.height);
+  render(b);
+  if (measured) measurementB_.end(lesson.measureSource(), target_.fbo.id(), true);
+  lesson.timers.setEnabled(true);
+  figuresB_ = figures(measured ? &measurementB_ : nullptr);
+
+  // Back to A exactly as it was.
+  for (const auto& [name, value] : a) params.set(name, value);
+
+  const int x0 = int(divider_ * float(frame.width));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.fbo.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, frame.framebuffer);
+  glBlitFramebuffer(x0, 0, frame.width, frame.height, x0, 0, frame.width, frame.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  // The divider itself.
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x0 - 1, 0, 2, frame.height);
+  glClearColor(1, 1, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, frame.framebuffer);
+}
+
+std::string AbSplit::labelA(const Measurement* measured) const {
+  const std::string f = figures(measured);
+  return "A: current settings" + (f.empty() ? "" : "\n" + f);
+}
+
+std::string AbSplit::labelB() const {
+  return "B: preset " + presetNames_[std::size_t(preset_)] + (figuresB_.empty() ? "" : "\n" + figuresB_);
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,43 @@
+#pragma once
+// A/B split screen: the same frame rendered with two parameter sets, A (the current settings) left
+// of a draggable divider and B (a preset, over the current camera) right of it, each half labelled
+// with its settings and, for measurable lessons, its error against ground truth.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/lesson.hpp"
+#include "app/measurement.hpp"
+#include "core/params.hpp"
+#include "gl/objects.hpp"
+
+namespace shadowlab {
+
+class AbSplit {
+ public:
+  // After the presets are loaded: B is chosen among them.
+  void declare(ParamRegistry& params, const PresetFile& presets);
+  bool enabled() const { return enabled_ && !presetNames_.empty(); }
+  float divider() const { return divider_; }
+  void setDivider(float x) { divider_ = x < 0.02f ? 0.02f : x > 0.98f ? 0.98f : x; }
+
+  // Renders B into its own target (B's passes are not timed) and copies the part right of the
+  // divider over `frame`. `measured` is A's measurement (B is measured with the same settings).
+  void draw(const FrameInfo& frame, ParamRegistry& params, const PresetFile& presets, Lesson& lesson,
+            const Measurement* measured, const std::function<void(const FrameInfo&)>& render);
+  // Labels for the UI: "A: ..." and "B: ..." with their figures.
+  std::string labelA(const Measurement* measured) const;
+  std::string labelB() const;
+
+ private:
+  bool enabled_ = false;
+  int preset_ = 0;
+  float divider_ = 0.5f;
+  std::vector<std::string> presetNames_;
+  gl::Framebuffer fbo_;
+  gl::RenderTarget target_;
+  Measurement measurementB_;
+  std::string figuresB_;
+};
+
+}  // namespace shadowlab
