@@ -1,0 +1,32 @@
+// Lesson 04: YOUR implementations. Each stub compiles and returns a neutral value; replace the
+// body, then grade with  ctest --test-dir build/default -L ex04 --output-on-failure
+#include "exercises.hpp"
+
+namespace shadowlab::ex04 {
+
+// EXERCISE 04.1
+bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
+                  const glm::vec4& light) {
+  // TODO: does exactly one of (a, b, c) and (b, a, d) face the light?
+  return false;
+}
+
+// EXERCISE 04.2
+glm::mat4 infinitePerspective(float fovY, float aspect, float nearZ, float epsilon) {
+  // TODO: the perspective matrix with its far plane at infinity
+  return glm::mat4(1.0f);
+}
+
+// EXERCISE 04.3
+volume::StencilOps stencilOps(bool zFail) {
+  // TODO: z-pass counts where the depth test passes, z-fail where it fails
+  return {};
+}
+
+// EXERCISE 04.4
+bool volumeMayReachNearPlane(const Aabb& bounds, const volume::NearRect& near, const glm::vec4& light) {
+  // TODO: is the box outside one plane of the hull of the near rectangle and the light?
+  return false;
+}
+
+}  // namespace shadowlab::ex04
