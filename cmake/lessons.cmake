@@ -28,3 +28,7 @@ target_link_libraries(shadowlab PRIVATE shadowlab_app)
 if(SHADOWLAB_LESSONS)
   add_dependencies(shadowlab ${SHADOWLAB_LESSONS})
 endif()
+
+# The benchmark runner (tools/bench): lessons x parameter sets x path samples -> report.
+add_executable(shadowlab_bench ${CMAKE_SOURCE_DIR}/tools/bench/main.cpp)
+target_link_libraries(shadowlab_bench PRIVATE shadowlab_measure nlohmann_json::nlohmann_json)

@@ -73,3 +73,23 @@ if(TARGET lesson_01_lighting)
            -- --headless --frames 3 --size 640x360 --set measure.overlay=error --screenshot ${shots}/01_lighting_overlay.png)
   set_tests_properties(gpu.01_lighting.measure gpu.01_lighting.measure_overlay PROPERTIES LABELS gpu)
 endif()
+
+# The benchmark runner on lesson 01: two configurations along a recorded path, two repeats; the
+# report's files, its numbers against the CSV, and the page in headless Chromium.
+if(TARGET lesson_01_lighting AND TARGET shadowlab_bench)
+  set(bench_dir ${CMAKE_BINARY_DIR}/test-bench)
+  add_test(NAME bench.01_lighting.record COMMAND lesson_check $<TARGET_FILE:lesson_01_lighting>
+           -- --headless --frames 3 --size 160x90 --record ${bench_dir}/path.txt)
+  add_test(NAME bench.01_lighting.run COMMAND shadowlab_bench $<TARGET_FILE:lesson_01_lighting> --out ${bench_dir}
+           --config "sun only: light1.enabled=false" --preset three_lights --path ${bench_dir}/path.txt
+           --path-samples 2 --repeat 2 --frames 2 --size 320x180)
+  add_test(NAME bench.01_lighting.report COMMAND ${CMAKE_COMMAND} -DDIR=${bench_dir} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_bench_report.cmake)
+  set_tests_properties(bench.01_lighting.record PROPERTIES FIXTURES_SETUP bench_path LABELS gpu)
+  set_tests_properties(bench.01_lighting.run PROPERTIES FIXTURES_REQUIRED bench_path FIXTURES_SETUP bench_report LABELS gpu)
+  set_tests_properties(bench.01_lighting.report PROPERTIES FIXTURES_REQUIRED bench_report LABELS gpu)
+  find_program(NODE node)
+  if(NODE)
+    add_test(NAME bench.01_lighting.page COMMAND ${NODE} ${CMAKE_SOURCE_DIR}/tools/web/check-page.mjs ${bench_dir}/report.html)
+    set_tests_properties(bench.01_lighting.page PROPERTIES FIXTURES_REQUIRED bench_report LABELS web)
+  endif()
+endif()

@@ -24,7 +24,13 @@ foreach(stub IN LISTS EXERCISE_STUBS)
   set(tests ${CMAKE_CURRENT_SOURCE_DIR}/grading/ex${nn}_tests.cpp)
   set(reference ${CMAKE_CURRENT_SOURCE_DIR}/grading/ex${nn}_reference.cpp)
   if(NOT EXISTS ${tests} OR NOT EXISTS ${reference})
-    message(FATAL_ERROR "lessons/${lesson}/exercises.cpp has no grader: write tests/grading/ex${nn}_tests.cpp and ex${nn}_reference.cpp")
+    # CI (SHADOWLAB_REQUIRE_PRISTINE_STUBS) refuses exercises without a grader; a developer's build
+    # in the middle of writing a lesson warns and goes on.
+    if(SHADOWLAB_REQUIRE_PRISTINE_STUBS)
+      message(FATAL_ERROR "lessons/${lesson}/exercises.cpp has no grader: write tests/grading/ex${nn}_tests.cpp and ex${nn}_reference.cpp")
+    endif()
+    message(WARNING "lessons/${lesson}/exercises.cpp has no grader yet (tests/grading/ex${nn}_tests.cpp, ex${nn}_reference.cpp)")
+    continue()
   endif()
 
   add_executable(grade_ex${nn} ${tests} ${stub})

@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -23,6 +24,7 @@
 #include "gl/gl.hpp"
 #include "gl/program.hpp"
 #include "gl/texture.hpp"
+#include "measure/paths.hpp"
 
 namespace shadowlab {
 namespace {
@@ -287,6 +289,29 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
     }
   }
 
+  // Recorded camera and light paths: --record while moving (windowed), --replay FILE[@T].
+  measure::CameraLightPath recording, replay;
+  double replayAt = -1;
+  if (!cl.replay.empty()) {
+    std::string file = cl.replay;
+    if (const auto at = file.rfind('@'); at != std::string::npos) {
+      char* end = nullptr;
+      replayAt = std::strtod(file.c_str() + at + 1, &end);
+      if (end == file.c_str() + at + 1 || *end != '\0' || !(replayAt >= 0)) {
+        std::cerr << info.name << ": --replay " << cl.replay << ": '" << file.substr(at + 1) << "' is not a time >= 0\n";
+        return 2;
+      }
+      file = file.substr(0, at);
+    }
+    try {
+      replay = measure::CameraLightPath::load(file);
+      if (replay.empty()) throw std::runtime_error(file + ": the path has no keys");
+    } catch (const std::exception& e) {
+      std::cerr << info.name << ": --replay: " << e.what() << '\n';
+      return 2;
+    }
+  }
+
   BenchLog bench;
   if (!cl.bench.empty()) {
     bench.out.open(cl.bench);
@@ -373,6 +398,15 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
     // ---- the lesson ------------------------------------------------------------------------
     const bool lastFrame = cl.frames > 0 && frame + 1 == cl.frames;
     if (lastFrame && !cl.measure.empty()) measurement.requestFullResolution();
+    if (!replay.empty()) {
+      const double t0 = replay.keys().front().time;
+      const double t = replayAt >= 0 ? t0 + replayAt
+                       : cl.frames > 1 ? t0 + replay.duration() * double(frame) / double(cl.frames - 1)
+                                       : t0 + time;
+      const measure::PathKey key = replay.sample(t);
+      lesson.camera.lookFrom(key.cameraPosition, key.cameraTarget);
+      lesson.applyPathLight(key.lightPosition, key.lightDirection);
+    }
     FrameInfo fi{frame, time, dt, width, height, context->framebuffer()};
     fi.view = lesson.camera.view();
     fi.projection = lesson.camera.projection(float(width) / float(height));
@@ -469,6 +503,19 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
         return 1;
       }
     }
+    if (!cl.record.empty()) {
+      const MeasureSource source = lesson.measureSource();
+      const int which = std::max(0, measurement.measuredLight());
+      measure::PathKey key;
+      key.time = time;
+      key.cameraPosition = lesson.camera.position();
+      key.cameraTarget = lesson.camera.target;
+      if (which < int(source.lights.size())) {
+        key.lightPosition = source.lights[std::size_t(which)].position;
+        key.lightDirection = source.lights[std::size_t(which)].direction;
+      }
+      recording.add(key);
+    }
     context->present();
     // Frame time includes present: software rasterisers (llvmpipe) do much of their work there.
     const double frameMs = (nowSeconds() - start) * 1000.0;
@@ -477,6 +524,17 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
       bench.frameMs.resize(std::size_t(frame) + 1);
       bench.frameMs[std::size_t(frame)] = frameMs;
       bench.write(lesson.timers);
+    }
+  }
+  if (!cl.record.empty()) {
+    try {
+      const std::filesystem::path p(cl.record);
+      if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+      recording.save(cl.record);
+      std::cout << info.name << ": recorded " << recording.keys().size() << " keys to " << cl.record << '\n';
+    } catch (const std::exception& e) {
+      std::cerr << info.name << ": --record: " << e.what() << '\n';
+      return 1;
     }
   }
   // Let outstanding timer queries resolve so the benchmark has every frame.

@@ -64,6 +64,8 @@ class Lesson {
   virtual void gui() {}
   // For measurable lessons: the scene and lights the ground truth traces (common/app/measurement.hpp).
   virtual MeasureSource measureSource() { return {}; }
+  // Replaying a recorded camera and light path (--replay): move the lesson's primary light.
+  virtual void applyPathLight(const glm::vec3& position, const glm::vec3& direction) {}
 
   // Set up by the framework before init(); lessons use them freely.
   OrbitCamera camera;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -31,6 +32,17 @@ glm::vec3 OrbitCamera::forward() const { return direction(yaw, -clampPitch(pitch
 
 glm::vec3 OrbitCamera::position() const {
   return target - std::clamp(distance, minDistance, maxDistance) * forward();
+}
+
+void OrbitCamera::lookFrom(const glm::vec3& eye, const glm::vec3& at) {
+  const glm::vec3 d = at - eye;
+  const float length = glm::length(d);
+  if (!(length > 0.0f)) throw std::invalid_argument("OrbitCamera::lookFrom: the eye is at the target");
+  const glm::vec3 f = d / length;  // forward = direction(yaw, -pitch), inverted
+  target = at;
+  distance = length;
+  pitch = clampPitch(-std::asin(std::clamp(f.y, -1.0f, 1.0f)));
+  yaw = std::atan2(-f.x, -f.z);
 }
 
 glm::mat4 OrbitCamera::view() const { return glm::lookAt(position(), target, glm::vec3(0, 1, 0)); }

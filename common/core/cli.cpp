@@ -22,7 +22,7 @@ constexpr Flag kFlags[] = {
     {"--bench", "FILE", "write per-pass GPU and CPU ms of every frame as CSV"},
     {"--measure", "FILE", "measure the last frame against ground truth: figures as JSON, heatmaps as PNG"},
     {"--record", "FILE", "record the camera and light path while you move (windowed)"},
-    {"--replay", "FILE", "replay a recorded camera and light path over the frames"},
+    {"--replay", "FILE[@T]", "replay a recorded camera and light path over the frames (@T: hold at time T)"},
     {"--ui-scale", "S", "UI scale for projectors, 0.5 to 4 (Ctrl +/- at run time)"},
     {"--show-ui", nullptr, "headless: draw the UI into the screenshot"},
     {"--fullscreen", nullptr, "start fullscreen (F11 toggles)"},

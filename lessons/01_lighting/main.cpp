@@ -123,6 +123,12 @@ class LightingLesson : public Lesson {
     return {&scene, std::uint64_t(builtScene_ * 10000000 + builtTriangles_), {p_.lights, p_.lights + kLightCount}};
   }
 
+  // A recorded path moves the sun (the light measured by default).
+  void applyPathLight(const glm::vec3& position, const glm::vec3& direction) override {
+    p_.lights[0].position = position;
+    if (glm::length(direction) > 0) p_.lights[0].direction = glm::normalize(direction);
+  }
+
   void update(const FrameInfo& f) override {
     if (p_.scene != builtScene_ || p_.triangles != builtTriangles_) loadScene();
     if (p_.animate) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <initializer_list>
+#include <stdexcept>
 
 #include "core/camera.hpp"
 
@@ -149,4 +150,18 @@ TEST_CASE("camera: projections map near to -1 and far to +1") {
   // A collapsed window does not produce infinities.
   const glm::mat4 degenerate = fly.projection(0.0f);
   CHECK(std::isfinite(degenerate[0][0]));
+}
+
+TEST_CASE("camera: lookFrom puts the orbit camera's eye where a recorded path had it") {
+  shadowlab::OrbitCamera c;
+  const glm::vec3 eye(3, 4, -5), target(1, 0.5f, 2);
+  c.lookFrom(eye, target);
+  CHECK(glm::length(c.position() - eye) < 1e-4f);
+  CHECK(glm::length(c.target - target) < 1e-6f);
+  CHECK(c.distance == doctest::Approx(glm::length(eye - target)));
+  // Straight down the -z axis from +z: yaw 0, pitch 0 by the camera's own convention.
+  c.lookFrom({0, 0, 10}, {0, 0, 0});
+  CHECK(c.yaw == doctest::Approx(0.0f));
+  CHECK(c.pitch == doctest::Approx(0.0f));
+  CHECK_THROWS_AS(c.lookFrom(target, target), std::invalid_argument);
 }

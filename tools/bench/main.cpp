@@ -1,0 +1,245 @@
+// shadowlab_bench: runs a lesson headless over parameter sets, scenes and a recorded camera/light
+// path, measures every run against ground truth (--measure), and writes a report: CSV, JSON and an
+// HTML page with a run-time-against-error scatter per scene (Pareto front marked), tables and
+// thumbnails of the image and its error heatmap.
+//
+//   shadowlab_bench build/default/bin/lesson_03_shadow_quality --out out/bench/l03 \
+//       --config "pcf 3x3: filter=pcf3 map_size=2048" --preset acne --scenes city,forest \
+//       --path paths/city.path --path-samples 4 --repeat 3 --size 1280x720 --frames 8
+//
+// Each configuration is a label and `--set` assignments ("label: name=value name=value"), or a
+// preset. GPU and CPU ms are the median over the repeats; the error figures come from the first
+// repeat (the render is deterministic). A progress bar shows on the terminal.
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <fcntl.h>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "measure/paths.hpp"
+#include "measure/report.hpp"
+
+extern char** environ;
+namespace fs = std::filesystem;
+using namespace shadowlab;
+
+namespace {
+
+struct Config {
+  std::string label;
+  std::vector<std::string> args;  // --preset NAME or --set k=v ...
+};
+
+struct Options {
+  std::string lesson, out, path, title = "shadowlab benchmark", size = "1280x720";
+  std::vector<Config> configs;
+  std::vector<std::string> scenes;
+  int pathSamples = 1, repeat = 3, frames = 6;
+};
+
+[[noreturn]] void usage(const std::string& error) {
+  std::cerr << "shadowlab_bench: " << error << "\n"
+            << "usage: shadowlab_bench LESSON_PROGRAM --out DIR [--config \"label: name=value ...\"]... [--preset NAME]...\n"
+               "       [--scenes a,b] [--path FILE [--path-samples N]] [--repeat N] [--frames N] [--size WxH] [--title T]\n";
+  std::exit(2);
+}
+
+int toInt(const std::string& flag, const std::string& v, int lo) {
+  char* end = nullptr;
+  const long n = std::strtol(v.c_str(), &end, 10);
+  if (end == v.c_str() || *end || n < lo) usage(flag + ": '" + v + "' is not a whole number >= " + std::to_string(lo));
+  return int(n);
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  if (argc < 2) usage("no lesson program given");
+  o.lesson = argv[1];
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) usage(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--out") o.out = value();
+    else if (a == "--config") {
+      const std::string c = value();
+      const auto colon = c.find(':');
+      if (colon == std::string::npos) usage("--config '" + c + "' is not \"label: name=value ...\"");
+      Config config{c.substr(0, colon), {}};
+      std::istringstream in(c.substr(colon + 1));
+      for (std::string kv; in >> kv;) {
+        if (kv.find('=') == std::string::npos) usage("--config '" + c + "': '" + kv + "' is not name=value");
+        config.args.insert(config.args.end(), {"--set", kv});
+      }
+      o.configs.push_back(config);
+    } else if (a == "--preset") {
+      const std::string p = value();
+      o.configs.push_back({"preset " + p, {"--preset", p}});
+    } else if (a == "--scenes") {
+      std::istringstream in(value());
+      for (std::string s; std::getline(in, s, ',');)
+        if (!s.empty()) o.scenes.push_back(s);
+    } else if (a == "--path") o.path = value();
+    else if (a == "--path-samples") o.pathSamples = toInt(a, value(), 1);
+    else if (a == "--repeat") o.repeat = toInt(a, value(), 1);
+    else if (a == "--frames") o.frames = toInt(a, value(), 1);
+    else if (a == "--size") o.size = value();
+    else if (a == "--title") o.title = value();
+    else usage("unknown argument '" + a + "'; valid: --out --config --preset --scenes --path --path-samples --repeat --frames --size --title");
+  }
+  if (o.out.empty()) usage("--out DIR is required");
+  if (o.configs.empty()) o.configs.push_back({"defaults", {}});
+  if (o.scenes.empty()) o.scenes.push_back("");
+  return o;
+}
+
+// Runs a program with its output captured to `log`; returns the exit code.
+int run(const std::vector<std::string>& args, const std::string& log) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid;
+  int status = -1;
+  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0) waitpid(pid, &status, 0);
+  posix_spawn_file_actions_destroy(&actions);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+std::uint64_t leadingNumber(const std::string& s) {
+  std::string digits;
+  for (char c : s) {
+    if (c >= '0' && c <= '9') digits += c;
+    else if (!digits.empty() && c != ',') break;
+  }
+  return digits.empty() ? 0 : std::stoull(digits);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  if (!fs::exists(o.lesson)) usage("no lesson program at " + o.lesson);
+  std::vector<double> pathTimes = {-1};
+  if (!o.path.empty()) {
+    try {
+      const auto path = measure::CameraLightPath::load(o.path);
+      pathTimes.clear();
+      for (int k = 0; k < o.pathSamples; ++k)
+        pathTimes.push_back(o.pathSamples == 1 ? 0.0 : path.duration() * k / (o.pathSamples - 1));
+    } catch (const std::exception& e) {
+      usage(std::string("--path: ") + e.what());
+    }
+  }
+  const fs::path runs = fs::path(o.out) / "runs";
+  fs::create_directories(runs);
+
+  const std::size_t total = o.configs.size() * o.scenes.size() * pathTimes.size() * std::size_t(o.repeat);
+  measure::ProgressBar progress(total, "benchmark");
+  std::vector<measure::ReportRow> rows;
+  int failures = 0, index = 0;
+  for (const auto& scene : o.scenes)
+    for (const auto& config : o.configs)
+      for (std::size_t k = 0; k < pathTimes.size(); ++k) {
+        measure::ReportRow row;
+        row.scene = scene.empty() ? "default" : scene;
+        row.technique = config.label;
+        row.frame = int(k);
+        std::map<std::string, std::vector<double>> gpu;
+        std::vector<double> cpu;
+        const std::string id = "run" + std::to_string(index++);
+        for (int r = 0; r < o.repeat; ++r) {
+          std::vector<std::string> args = {o.lesson, "--headless", "--size", o.size, "--frames", std::to_string(o.frames),
+                                           "--measure", (runs / (id + ".json")).string()};
+          if (r == 0) args.insert(args.end(), {"--screenshot", (runs / (id + ".png")).string()});
+          if (!scene.empty()) args.insert(args.end(), {"--set", "scene=" + scene});
+          args.insert(args.end(), config.args.begin(), config.args.end());
+          if (pathTimes[k] >= 0) args.insert(args.end(), {"--replay", o.path + "@" + std::to_string(pathTimes[k])});
+          const std::string log = (runs / (id + ".log")).string();
+          if (run(args, log) != 0) {
+            std::ifstream in(log);
+            std::stringstream text;
+            text << in.rdbuf();
+            std::cerr << "\nshadowlab_bench: " << row.scene << " / " << config.label << " failed:\n" << text.str();
+            ++failures;
+            progress.advance();
+            continue;
+          }
+          std::ifstream in(runs / (id + ".json"));
+          const auto j = nlohmann::json::parse(in);
+          double cpuTotal = 0;
+          for (const auto& [pass, ms] : j.at("gpu_ms").items()) gpu[pass].push_back(ms.get<double>());
+          for (const auto& [pass, ms] : j.at("cpu_ms").items()) cpuTotal += ms.get<double>();
+          cpu.push_back(cpuTotal);
+          if (r == 0) {
+            std::string params;
+            for (std::size_t a = 1; a < config.args.size(); a += 2) params += (params.empty() ? "" : " ") + config.args[a];
+            row.parameters = params + (pathTimes[k] >= 0 ? " path@" + std::to_string(pathTimes[k]) : "");
+            if (j.contains("hard")) {
+              const auto& h = j["hard"];
+              row.hasHard = true;
+              row.hard.facingPixels = h.at("facing_pixels");
+              row.hard.misclassified = h.at("misclassified");
+              row.hard.leaks = h.at("leaks");
+              row.hard.falseShadows = h.at("false_shadows");
+              row.hard.edgePixels = h.at("edge_pixels");
+              row.hard.misclassifiedPct = h.at("misclassified_pct");
+              row.hard.leakPct = h.at("leak_pct");
+              row.hard.falseShadowPct = h.at("false_shadow_pct");
+              row.hard.edgeTolerantPct = h.at("edge_tolerant_pct");
+            }
+            if (j.contains("soft")) {
+              row.hasSoft = true;
+              row.soft.pixels = j["soft"].at("pixels");
+              row.soft.rmse = j["soft"].at("rmse");
+              row.soft.maxAbs = j["soft"].at("max_abs");
+            }
+            if (j.contains("aliasing")) {
+              const auto& a = j["aliasing"];
+              row.hasAliasing = true;
+              row.aliasing.pixels = a.at("pixels");
+              row.aliasing.mean = a.at("mean");
+              row.aliasing.rms = a.at("rms");
+              row.aliasing.p95 = a.at("p95");
+              row.aliasing.max = a.at("max");
+              row.aliasing.shareAbove1 = a.at("share_above_1");
+            }
+            for (const auto& [name, value] : j.at("counters").items()) {
+              if (name == "shadow triangles") row.shadowTriangles = leadingNumber(value.get<std::string>());
+              if (name == "shadow texels") row.shadowTexels = leadingNumber(value.get<std::string>());
+            }
+            row.imageThumbnail = "runs/" + id + ".png";
+            row.errorThumbnail = "runs/" + id + "_error.png";
+          }
+          progress.advance();
+        }
+        if (cpu.empty()) continue;
+        for (const auto& [pass, samples] : gpu) row.gpuMs[pass] = median(samples);
+        row.cpuMs = median(cpu);
+        rows.push_back(row);
+      }
+  progress.finish();
+  const std::string html = measure::writeReport(o.out, "report", rows, o.title);
+  std::cout << "shadowlab_bench: " << rows.size() << " row(s), " << failures << " failed run(s): " << fs::absolute(html).string() << '\n';
+  return failures == 0 && !rows.empty() ? 0 : 1;
+}
