@@ -1,0 +1,25 @@
+// Lesson 02: YOUR implementations. Each stub compiles and returns a neutral value; replace the
+// body, then grade with  ctest --test-dir build/default -L ex02 --output-on-failure
+#include "exercises.hpp"
+
+namespace shadowlab::ex02 {
+
+// EXERCISE 02.1
+glm::mat4 shadowTextureMatrix(const glm::mat4& lightProjection, const glm::mat4& lightView) {
+  // TODO: translate(0.5) * scale(0.5) * P_light * V_light
+  return glm::mat4(1.0f);
+}
+
+// EXERCISE 02.2
+float depthCompare(float fragmentDepth, float storedDepth, float bias) {
+  // TODO: 1 when fragmentDepth - bias <= storedDepth, else 0
+  return 1.0f;
+}
+
+// EXERCISE 02.3
+float shadowLookup(const shadow::DepthMap& map, const glm::vec3& uvz, float bias) {
+  // TODO: nearest texel, compared with depthCompare; lit outside the map
+  return 1.0f;
+}
+
+}  // namespace shadowlab::ex02

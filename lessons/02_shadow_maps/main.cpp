@@ -1,0 +1,334 @@
+// Lesson 02: shadow maps (Williams 1978, as Boreskov's tutorial builds them: seeds 002; seeds 004).
+//
+//   pass 1: render depth from the light into a depth texture (no colour, polygon offset on)
+//   pass 2: render from the eye; T = translate(0.5) * scale(0.5) * P_light * V_light takes each
+//           point into the map, and V = (depth - bias <= stored depth) ? 1 : 0
+//
+// A spot light (its cone fits the light's perspective frustum), a depth texture in 16, 24 or 32F
+// bits, the hardware comparison (sampler2DShadow, ARB_shadow) or the same comparison written in
+// the shader, glPolygonOffset(factor, units) as sliders, and alpha-tested casters (leaf cards, a
+// fence) whose holes must be discarded in the depth pass too.
+//
+// Controls: left drag orbit, right drag pan, wheel zoom; V cycles the view, C the comparison,
+// F the depth format, T the depth pass's alpha test, I the map inset, A animates the light, M the
+// ground-truth overlays (error, aliasing), O the god view with the light's frustum; F1 help.
+// Exercises (exercises.hpp): the texture matrix, the depth comparison, a CPU shadow-map lookup.
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app/lesson.hpp"
+#include "core/mesh_gen.hpp"
+#include "core/scene_gen.hpp"
+#include "core/shadow_math.hpp"
+#include "exercises.hpp"
+#include "gl/mesh_gpu.hpp"
+#include "gl/program.hpp"
+#include "gl/shadow_map.hpp"
+
+using namespace shadowlab;
+
+namespace {
+
+enum class View { Lit, Visibility, LightDepth, ShadowMap };
+enum class Compare { Hardware, Manual, CpuVertex, Off };
+enum class Impl { Reference, Student };
+const std::vector<std::string> kMapSizes{"256", "512", "1024", "2048", "4096"};
+
+struct Params {
+  int scene = 2;                         // forest: leaf cards and a fence are alpha-tested casters
+  int triangles = 100000;                // scene size: the depth pass draws all of it again
+  int mapSize = 3;                       // index into kMapSizes: 2048^2 texels
+  gl::DepthFormat format = gl::DepthFormat::Depth24;  // 16 bits shows banding and acne first
+  Compare compare = Compare::Hardware;   // ARB_shadow in the sampler, or the same test by hand
+  float offsetFactor = 4.0f;             // glPolygonOffset factor: bias grows with the depth slope
+  float offsetUnits = 4.0f;              // glPolygonOffset units: constant, in depth-format steps
+  float bias = 0.0f;                     // in-shader constant bias (texture depth units)
+  bool alphaTest = true;                 // discard the cards' holes in the depth pass too
+  View view = View::Lit;
+  bool inset = true;                     // the shadow map in a corner
+  Impl impl = Impl::Reference;           // student: your texture matrix and (cpu_vertex) lookup
+  float lightNear = 2.0f, lightFar = 80.0f;  // the light frustum's depth range: precision lives here
+  float ambient = 0.12f;
+  bool animate = false;                  // swing the spot around the scene
+  Light spot;
+};
+
+}  // namespace
+
+class ShadowMapLesson : public Lesson {
+ public:
+  LessonInfo info() const override {
+    return {"02", "02_shadow_maps", "Shadow maps",
+            "Depth from the light into a texture, then a depth comparison through the texture matrix: a spot light's hard shadows.",
+            2,
+            "Pass 1 renders depth from the spot light; pass 2 compares every pixel's light-space depth.\n"
+            "Try: polygon offset 0 0 (acne everywhere); format 16 bits; compare=manual (same image);\n"
+            "alpha_test off (leaf cards cast solid shadows); map_size 256 (blocky edges);\n"
+            "view=shadow_map; O: the god view with the light frustum; M: error and aliasing heatmaps.",
+            true};
+  }
+
+  void declare(ParamRegistry& r) override {
+    camera.target = {0, 1.5f, 0};
+    camera.distance = 30.0f;
+    camera.pitch = 0.55f;
+    r.addChoice("scene", &p_.scene, sceneNames(), "procedural scene (forest: alpha-tested leaves and fence)");
+    r.add("triangles", &p_.triangles, 10000, 1000000, "scene size: both passes draw every triangle");
+    r.addChoice("map_size", &p_.mapSize, kMapSizes, "shadow-map resolution: texels per side");
+    r.addChoice("format", &p_.format, {"16", "24", "32f"}, "depth texture format (ARB_depth_texture: 16, 24, 32F bits)").hotkey = "F";
+    r.addChoice("compare", &p_.compare, {"hardware", "manual", "cpu_vertex", "off"},
+                "sampler2DShadow (ARB_shadow), the comparison in the shader, your CPU lookup per vertex, or none").hotkey = "C";
+    r.add("offset.factor", &p_.offsetFactor, 0, 10, "glPolygonOffset factor: scales with the depth slope of each triangle");
+    r.add("offset.units", &p_.offsetUnits, 0, 100, "glPolygonOffset units: the smallest depth step of the format, times this");
+    r.add("bias", &p_.bias, 0, 0.05f, "constant bias subtracted in the shader before the comparison");
+    r.add("alpha_test", &p_.alphaTest, "discard alpha-tested texels in the depth pass (holes cast holes)").hotkey = "T";
+    r.addChoice("view", &p_.view, {"lit", "visibility", "light_depth", "shadow_map"},
+                "lit, V alone, the fragment's depth in the light, or the map (linearised)").hotkey = "V";
+    r.add("inset", &p_.inset, "show the shadow map in a corner").hotkey = "I";
+    r.addChoice("impl", &p_.impl, {"reference", "student"}, "whose exercise code: your texture matrix and CPU lookup");
+    r.add("light.near", &p_.lightNear, 0.05f, 50, "the light frustum's near plane: depth precision depends on far/near");
+    r.add("light.far", &p_.lightFar, 1, 500, "the light frustum's far plane");
+    r.add("ambient", &p_.ambient, 0, 1, "ka Ia: what remains in the shadow");
+    r.add("animate", &p_.animate, "swing the spot light around the scene").hotkey = "A";
+    Light& s = p_.spot;
+    s = {LightKind::Spot, {14.0f, 26.0f, 10.0f}};
+    s.direction = glm::normalize(glm::vec3(-14.0f, -26.0f, -10.0f));
+    s.color = {1.0f, 0.95f, 0.85f};
+    s.intensity = 1.6f;
+    s.attenuation = {1.0f, 0.0f, 0.0f};
+    s.spotInner = 0.45f;
+    s.spotOuter = 0.6f;
+    r.add("light.position", &s.position, -100, 100, "where the spot light is");
+    r.add("light.direction", &s.direction, -1, 1, "the spot's axis (where it points)");
+    r.add("light.intensity", &s.intensity, 0, 10, "I: the light's strength");
+    r.add("light.spot_inner", &s.spotInner, 0.01f, 1.2f, "half-angle of the full-strength core (radians)");
+    r.add("light.spot_outer", &s.spotOuter, 0.02f, 1.2f, "half-angle of the cone; the light frustum's fov is twice it");
+  }
+
+  void init() override {
+    depthProgram_.build();
+    sceneProgram_.build();
+    mapView_.build();
+    unlit_.build();
+    compareNearest_ = gl::makeCompareSampler(false, "02 compare sampler");
+    rawDepth_ = gl::makeRawDepthSampler("02 raw depth sampler");
+    emptyVao_ = gl::makeVertexArray("02 fullscreen");
+    gizmo_ = gl::uploadMesh(makeSphere(0.25f, 16, 8), "02 light gizmo");
+    loadScene();
+  }
+
+  MeasureSource measureSource() override {
+    return {&scene_, std::uint64_t(builtScene_ * 10000000 + builtTriangles_), {p_.spot}};
+  }
+
+  void update(const FrameInfo& f) override {
+    if (p_.scene != builtScene_ || p_.triangles != builtTriangles_) loadScene();
+    const int size = std::stoi(kMapSizes[std::size_t(p_.mapSize)]);
+    if (map_.size != size || map_.format != p_.format) map_ = gl::makeShadowMap(size, p_.format, "02 shadow map");
+    if (p_.animate) {
+      const float a = float(f.time) * 0.4f;
+      p_.spot.position = {18.0f * std::cos(a), p_.spot.position.y, 18.0f * std::sin(a)};
+      p_.spot.direction = glm::normalize(glm::vec3(0, 1.5f, 0) - p_.spot.position);
+    }
+  }
+
+  void render(const FrameInfo& f) override {
+    // The light camera: a perspective frustum around the spot's cone (seeds 002: good for spots).
+    const glm::mat4 lightView = shadow::lightViewAlong(p_.spot.position, p_.spot.direction);
+    const glm::mat4 lightProj = glm::perspective(std::min(2.0f * p_.spot.spotOuter + 0.05f, 3.0f), 1.0f,
+                                                 p_.lightNear, std::max(p_.lightFar, p_.lightNear + 0.1f));
+    const bool student = p_.impl == Impl::Student;
+    const glm::mat4 textureMatrix = student ? ex02::shadowTextureMatrix(lightProj, lightView) : shadow::textureMatrix(lightProj, lightView);
+    debug.frustum(lightProj * lightView, {1.0f, 0.9f, 0.3f, 1.0f});
+    debug.cone(p_.spot.position, glm::normalize(p_.spot.direction), p_.spot.spotOuter, 12.0f, {1.0f, 0.7f, 0.2f, 1.0f});
+
+    // ==== 1. shadow map: depth from the light ======================================================
+    // The god view re-renders the frame from outside: the map the viewer's frame made is reused.
+    if (!f.godView) {
+      auto t = scope("shadow map");
+      gl::beginShadowPass(map_);
+      glEnable(GL_DEPTH_TEST);
+      glEnable(GL_POLYGON_OFFSET_FILL);  // seeds 002: glPolygonOffset(4, 4) against self-shadowing
+      glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
+      depthProgram_.use();
+      depthProgram_.set("uLightViewProj", lightProj * lightView);
+      depthProgram_.set("uAlphaTest", p_.alphaTest);
+      depthProgram_.set("uTexture", 0);
+      std::size_t triangles = 0;
+      for (const SceneObject& o : scene_.objects) {
+        if (!o.castsShadow) continue;
+        const Material& m = scene_.materials[o.material];
+        const GLuint tex = gpu_.materialTextures[o.material].id();
+        depthProgram_.set("uModel", o.model);
+        depthProgram_.set("uAlphaCutoff", m.alphaCutoff);
+        depthProgram_.set("uUseTexture", tex != 0);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, tex);
+        m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
+        gpu_.meshes[o.mesh].draw();
+        triangles += scene_.meshes[o.mesh].indices.size() / 3;
+      }
+      glDisable(GL_POLYGON_OFFSET_FILL);
+      glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer);
+      glViewport(0, 0, f.width, f.height);
+      shadowTriangles_ = triangles;
+    }
+    counters = {{"shadow triangles", std::to_string(shadowTriangles_)},
+                {"culled casters", "0"},
+                {"shadow map", std::to_string(map_.size) + "^2 " + gl::depthFormatName(map_.format)},
+                {"comparison", p_.compare == Compare::Hardware ? "sampler2DShadow" : p_.compare == Compare::Manual ? "in the shader"
+                               : p_.compare == Compare::CpuVertex ? (student ? "CPU per vertex, student code" : "CPU per vertex") : "off"}};
+
+    // ==== 1b. CPU lookup per vertex (compare=cpu_vertex: the exercises' lookup on a read-back) =====
+    if (p_.compare == Compare::CpuVertex && !f.godView) {
+      auto t = scope("cpu lookup");
+      lookUpVerticesOnCpu(textureMatrix, student);
+    }
+
+    // ==== 2. the scene from the eye, V from the map ================================================
+    {
+      auto t = scope("scene");
+      glEnable(GL_DEPTH_TEST);
+      glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      if (p_.view != View::ShadowMap) drawScene(f, textureMatrix);
+    }
+
+    // ==== 3. views: the shadow map (full screen or inset), the light ==============================
+    if (p_.view == View::ShadowMap || (p_.inset && !f.godView)) {
+      auto t = scope("map view");
+      const int side = p_.view == View::ShadowMap ? std::min(f.width, f.height) : std::min(f.width, f.height) / 3;
+      glViewport(p_.view == View::ShadowMap ? (f.width - side) / 2 : f.width - side - 8, p_.view == View::ShadowMap ? 0 : 8, side, side);
+      glDisable(GL_DEPTH_TEST);
+      mapView_.use();
+      mapView_.set("uDepth", 2);
+      mapView_.set("uPerspective", true);
+      mapView_.set("uNear", p_.lightNear);
+      mapView_.set("uFar", p_.lightFar);
+      glActiveTexture(GL_TEXTURE2);
+      glBindTexture(GL_TEXTURE_2D, map_.texture.id());
+      glBindSampler(2, rawDepth_.id());
+      glBindVertexArray(emptyVao_.id());
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glBindSampler(2, 0);
+      glViewport(0, 0, f.width, f.height);
+      glEnable(GL_DEPTH_TEST);
+    }
+    if (p_.view != View::ShadowMap) {
+      unlit_.use();
+      unlit_.set("uMvp", f.projection * f.view * glm::translate(glm::mat4(1), p_.spot.position));
+      unlit_.set("uColor", glm::vec4(1.0f, 0.9f, 0.4f, 1.0f));
+      gizmo_.draw();
+    }
+  }
+
+ private:
+  void loadScene() {
+    scene_ = makeScene(sceneNames()[std::size_t(p_.scene)], 1, std::size_t(p_.triangles));
+    gpu_ = gl::uploadScene(scene_, "02 scene");
+    cpuVisibility_.clear();
+    builtScene_ = p_.scene;
+    builtTriangles_ = p_.triangles;
+  }
+
+  void drawScene(const FrameInfo& f, const glm::mat4& textureMatrix) {
+    sceneProgram_.use();
+    sceneProgram_.set("uViewProj", f.projection * f.view);
+    sceneProgram_.set("uEye", f.eye);
+    sceneProgram_.set("uTextureMatrix", textureMatrix);
+    sceneProgram_.set("uAmbient", glm::vec3(p_.ambient));
+    sceneProgram_.set("uCompare", int(p_.compare));
+    sceneProgram_.set("uBias", p_.bias);
+    sceneProgram_.set("uMapSize", float(map_.size));
+    sceneProgram_.set("uView", int(p_.view));
+    sceneProgram_.set("uMeasureLight", f.measureLight);
+    sceneProgram_.set("uTexture", 0);
+    sceneProgram_.set("uShadowMap", 1);   // one texture on two units: one sampler type each
+    sceneProgram_.set("uShadowDepth", 2);
+    const Light& s = p_.spot;
+    sceneProgram_.set("uSpot.kind", int(s.kind));
+    sceneProgram_.set("uSpot.enabled", s.enabled);
+    sceneProgram_.set("uSpot.position", s.position);
+    sceneProgram_.set("uSpot.direction", glm::normalize(s.direction));
+    sceneProgram_.set("uSpot.color", s.color * s.intensity);
+    sceneProgram_.set("uSpot.attenuation", s.attenuation);
+    sceneProgram_.set("uSpot.cosInner", std::cos(s.spotInner));
+    sceneProgram_.set("uSpot.cosOuter", std::cos(s.spotOuter));
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, map_.texture.id());
+    glBindSampler(1, compareNearest_.id());
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, map_.texture.id());
+    glBindSampler(2, rawDepth_.id());
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+      const SceneObject& o = scene_.objects[i];
+      const Material& m = scene_.materials[o.material];
+      const GLuint tex = gpu_.materialTextures[o.material].id();
+      sceneProgram_.set("uModel", o.model);
+      sceneProgram_.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(o.model)));
+      sceneProgram_.set("uAlbedo", m.albedo);
+      sceneProgram_.set("uSpecular", m.specular);
+      sceneProgram_.set("uShininess", m.shininess);
+      sceneProgram_.set("uTwoSided", m.twoSided);
+      sceneProgram_.set("uUseTexture", tex != 0);
+      sceneProgram_.set("uAlphaCutoff", m.alphaCutoff);
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, tex);
+      m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
+      const gl::GpuMesh& mesh = gpu_.meshes[o.mesh];
+      glBindVertexArray(mesh.vao.id());
+      if (p_.compare == Compare::CpuVertex && i < cpuVisibility_.size()) {
+        glBindBuffer(GL_ARRAY_BUFFER, cpuVisibility_[i].id());
+        glEnableVertexAttribArray(3);
+        glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+      } else {
+        glDisableVertexAttribArray(3);
+        glVertexAttrib1f(3, 1.0f);
+      }
+      mesh.draw();
+      glDisableVertexAttribArray(3);
+    }
+    glBindSampler(1, 0);
+    glBindSampler(2, 0);
+    glActiveTexture(GL_TEXTURE0);
+  }
+
+  // The map read back (row 0 is v = 0, as shadow::DepthMap wants), and V per vertex with the
+  // chosen implementation of the lookup: what the GPU does per pixel, done by hand.
+  void lookUpVerticesOnCpu(const glm::mat4& textureMatrix, bool student) {
+    std::vector<float> texels(std::size_t(map_.size) * std::size_t(map_.size));
+    glBindTexture(GL_TEXTURE_2D, map_.texture.id());
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
+    const shadow::DepthMap map(map_.size, map_.size, std::move(texels));
+    while (cpuVisibility_.size() < scene_.objects.size()) cpuVisibility_.push_back(gl::makeBuffer(GL_ARRAY_BUFFER, "02 cpu visibility"));
+    std::vector<float> v;
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+      const SceneObject& o = scene_.objects[i];
+      const Mesh& mesh = scene_.meshes[o.mesh];
+      v.resize(mesh.positions.size());
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        const glm::vec3 uvz = shadow::shadowCoord(textureMatrix, glm::vec3(o.model * glm::vec4(mesh.positions[k], 1)));
+        v[k] = student ? ex02::shadowLookup(map, uvz, p_.bias) : shadow::shadowLookup(map, uvz, p_.bias);
+      }
+      glBindBuffer(GL_ARRAY_BUFFER, cpuVisibility_[i].id());
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(float)), v.data(), GL_STREAM_DRAW);
+    }
+  }
+
+  Params p_;
+  Scene scene_;
+  gl::GpuScene gpu_;
+  gl::ShadowMap map_;
+  gl::Sampler compareNearest_, rawDepth_;
+  gl::VertexArray emptyVao_;
+  gl::Program depthProgram_{"02 depth", {"02_shadow_maps/depth.vert", "02_shadow_maps/depth.frag"}};
+  gl::Program sceneProgram_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"}};
+  gl::Program mapView_{"02 map view", {"common/fullscreen.vert", "02_shadow_maps/depth_view.frag"}};
+  gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};
+  gl::GpuMesh gizmo_;
+  std::vector<gl::Buffer> cpuVisibility_;  // per object, V per vertex (compare=cpu_vertex)
+  std::size_t shadowTriangles_ = 0;
+  int builtScene_ = -1, builtTriangles_ = -1;
+};
+
+int main(int argc, char** argv) { return runLesson<ShadowMapLesson>(argc, argv); }

@@ -1,0 +1,15 @@
+#version 410 core
+// Pass 1 (seeds 002): the scene seen from the light, depth only. Lesson 03 reuses it for every
+// light camera (spot, fitted directional, cube faces).
+layout(location = 0) in vec3 aPosition;
+layout(location = 2) in vec2 aUv;
+
+uniform mat4 uLightViewProj;  // P_light * V_light
+uniform mat4 uModel;
+
+out vec2 vUv;
+
+void main() {
+  vUv = aUv;
+  gl_Position = uLightViewProj * uModel * vec4(aPosition, 1.0);
+}

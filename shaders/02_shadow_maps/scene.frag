@@ -1,0 +1,59 @@
+#version 410 core
+// Pass 2, fragment: the lecture's model with V from the shadow map (seeds 002, 004).
+#include "common/lighting.glsl"
+#include "common/measure.glsl"
+
+in vec3 vWorldPos;
+in vec3 vNormal;
+in vec2 vUv;
+in vec4 vShadow;
+in float vCpuVisibility;
+
+uniform Light uSpot;
+uniform vec3 uEye;
+uniform vec3 uAmbient;
+uniform vec3 uAlbedo;
+uniform float uSpecular, uShininess;
+uniform bool uUseTexture;
+uniform sampler2D uTexture;
+uniform float uAlphaCutoff;
+uniform bool uTwoSided;
+
+uniform sampler2DShadow uShadowMap;  // compare mode R-to-texture, LEQUAL (ARB_shadow)
+uniform sampler2D uShadowDepth;      // the same texture, no comparison
+uniform int uCompare;                // 0 hardware, 1 manual in the shader, 2 CPU per vertex, 3 off
+uniform float uBias;                 // in-shader constant bias, in texture depth units
+uniform float uMapSize;
+uniform int uView;                   // 0 lit, 1 visibility, 2 light-space depth
+
+out vec4 fragColor;
+
+float shadowVisibility(vec4 s) {
+  if (uCompare == 2) return vCpuVisibility;
+  if (uCompare == 3 || s.w <= 0.0) return 1.0;  // behind the light: the spot cone is zero there
+  vec3 p = s.xyz / s.w;
+  if (p.z > 1.0) return 1.0;                     // beyond the light's far plane: nothing known
+  if (uCompare == 0) return textureProj(uShadowMap, vec4(s.xy, s.z - uBias * s.w, s.w));
+  if (any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)))) return 1.0;
+  float stored = texture(uShadowDepth, p.xy).r;
+  return p.z - uBias <= stored ? 1.0 : 0.0;      // the comparison ARB_shadow does in hardware
+}
+
+void main() {
+  vec4 texel = uUseTexture ? texture(uTexture, vUv) : vec4(1.0);
+  if (uAlphaCutoff > 0.0 && texel.a < uAlphaCutoff) discard;  // the holes of leaf cards and fences
+  vec3 N = normalize(vNormal);
+  vec3 V = normalize(uEye - vWorldPos);
+  if (uTwoSided && dot(N, V) < 0.0) N = -N;
+  float visibility = shadowVisibility(vShadow);
+  vec2 uv = vShadow.w > 0.0 ? vShadow.xy / vShadow.w : vec2(0.0);
+  writeMeasurement(vWorldPos, N, visibility, uv * uMapSize);
+
+  if (uView == 1) { fragColor = vec4(vec3(visibility), 1.0); return; }
+  if (uView == 2) { fragColor = vec4(vec3(vShadow.w > 0.0 ? vShadow.z / vShadow.w : 1.0), 1.0); return; }
+  vec3 kd = uAlbedo * texel.rgb;
+  vec3 L = toLight(uSpot, vWorldPos);
+  vec3 color = uAmbient * kd + lightContribution(N, L, V, incidentRadiance(uSpot, vWorldPos), visibility, kd,
+                                                 uSpecular, uShininess, true);
+  fragColor = vec4(toDisplay(color), 1.0);
+}
