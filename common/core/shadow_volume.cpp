@@ -153,12 +153,25 @@ glm::vec4 homogeneousLight(const Light& light) {
                                               : glm::vec4(light.position, 1.0f);
 }
 
-std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::vec4& light) {
+std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::vec4& light, SilhouetteTest test) {
+  // The corner of face f that is not on edge (a, b).
+  auto third = [&](std::int32_t f, std::uint32_t a, std::uint32_t b) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = adj.triangles[3 * std::size_t(f) + k];
+      if (v != a && v != b) return adj.positions[v];
+    }
+    return adj.positions[a];
+  };
   std::vector<SilhouetteEdge> out;
   for (const Edge& e : adj.edges) {
     const bool lit0 = facesLight(adj.planes[std::size_t(e.face0)], light);
     if (e.face1 < 0) {
       if (lit0) out.push_back({e.a, e.b});
+      continue;
+    }
+    if (test) {
+      if (test(adj.positions[e.a], adj.positions[e.b], third(e.face0, e.a, e.b), third(e.face1, e.a, e.b), light))
+        out.push_back(lit0 ? SilhouetteEdge{e.a, e.b} : SilhouetteEdge{e.b, e.a});
       continue;
     }
     const bool lit1 = facesLight(adj.planes[std::size_t(e.face1)], light);
@@ -177,9 +190,9 @@ bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, co
 }
 
 VolumeCounts buildVolume(const EdgeAdjacency& adj, const glm::vec4& light, bool caps, std::vector<glm::vec4>& out,
-                         std::vector<SilhouetteEdge>* silhouette) {
+                         std::vector<SilhouetteEdge>* silhouette, SilhouetteTest test) {
   VolumeCounts n;
-  const std::vector<SilhouetteEdge> edges = findSilhouette(adj, light);
+  const std::vector<SilhouetteEdge> edges = findSilhouette(adj, light, test);
   n.silhouetteEdges = edges.size();
   for (const SilhouetteEdge& e : edges) {
     const glm::vec3 &a = adj.positions[e.a], &b = adj.positions[e.b];

@@ -60,9 +60,14 @@ inline bool facesLight(const glm::vec4& plane, const glm::vec4& light) { return 
 struct SilhouetteEdge {
   std::uint32_t a = 0, b = 0;
 };
+// A silhouette test on an edge (a, b) between the faces (a, b, c) and (b, a, d): isSilhouette
+// below, or a student's version of it (lesson 04, exercise 04.1).
+using SilhouetteTest = bool (*)(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
+                                const glm::vec4& light);
 // Edges between a face toward the light and a face away from it, plus the boundary edges of faces
 // toward the light (what an open mesh's volume needs under z-pass). `light` in the mesh's space.
-std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::vec4& light);
+// With `test`, paired edges are judged by it instead of the faces' planes.
+std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::vec4& light, SilhouetteTest test = nullptr);
 // The same test written on four points, as the exercise asks: edge (a, b) shared by the faces
 // (a, b, c) and (b, a, d) is a silhouette when exactly one of them faces the light.
 bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
@@ -81,7 +86,7 @@ struct VolumeCounts {
   std::size_t silhouetteEdges = 0, sideTriangles = 0, capTriangles = 0;
 };
 VolumeCounts buildVolume(const EdgeAdjacency& adj, const glm::vec4& light, bool caps, std::vector<glm::vec4>& out,
-                         std::vector<SilhouetteEdge>* silhouette = nullptr);
+                         std::vector<SilhouetteEdge>* silhouette = nullptr, SilhouetteTest test = nullptr);
 
 // ---- Projection ------------------------------------------------------------------------------------
 // OpenGL perspective (depth in [-1, 1]) with the far plane at infinity: a point at infinity, (x, y,

@@ -112,26 +112,17 @@ class ShadowVolumeLesson : public Lesson {
     r.add("shininess", &p_.shininess, 1, 256, "the specular exponent");
     r.add("animate", &p_.animate, "orbit the point light: its volumes are rebuilt every frame").hotkey = "A";
 
+    // A sun, a warm point light (both on), a spot and a green point light (off; see many_lights).
+    auto make = [](LightKind k, glm::vec3 pos, glm::vec3 dir, glm::vec3 color, float intensity, glm::vec3 att, bool on) {
+      Light l{k, pos};
+      l.direction = glm::normalize(dir), l.color = color, l.intensity = intensity, l.attenuation = att, l.enabled = on;
+      return l;
+    };
     Light* l = p_.lights;
-    l[0] = {LightKind::Directional};
-    l[0].direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
-    l[0].color = {1.0f, 0.95f, 0.85f};
-    l[0].intensity = 0.7f;
-    l[1] = {LightKind::Point, {3.0f, 3.0f, 2.0f}};
-    l[1].color = {1.0f, 0.6f, 0.3f};
-    l[1].intensity = 2.0f;
-    l[1].attenuation = {1.0f, 0.1f, 0.05f};
-    l[2] = {LightKind::Spot, {-3.0f, 5.0f, 3.0f}};
-    l[2].direction = glm::normalize(glm::vec3(0.5f, -1.0f, -0.5f));
-    l[2].color = {0.4f, 0.6f, 1.0f};
-    l[2].intensity = 3.0f;
-    l[2].attenuation = {1.0f, 0.05f, 0.02f};
-    l[2].enabled = false;
-    l[3] = {LightKind::Point, {-3.0f, 2.5f, -2.5f}};
-    l[3].color = {0.5f, 1.0f, 0.5f};
-    l[3].intensity = 2.0f;
-    l[3].attenuation = {1.0f, 0.2f, 0.1f};
-    l[3].enabled = false;
+    l[0] = make(LightKind::Directional, {}, {-0.4f, -1.0f, -0.3f}, {1.0f, 0.95f, 0.85f}, 0.7f, {1, 0, 0}, true);
+    l[1] = make(LightKind::Point, {3.0f, 3.0f, 2.0f}, {0, -1, 0}, {1.0f, 0.6f, 0.3f}, 2.0f, {1.0f, 0.1f, 0.05f}, true);
+    l[2] = make(LightKind::Spot, {-3.0f, 5.0f, 3.0f}, {0.5f, -1.0f, -0.5f}, {0.4f, 0.6f, 1.0f}, 3.0f, {1.0f, 0.05f, 0.02f}, false);
+    l[3] = make(LightKind::Point, {-3.0f, 2.5f, -2.5f}, {0, -1, 0}, {0.5f, 1.0f, 0.5f}, 2.0f, {1.0f, 0.2f, 0.1f}, false);
     for (int i = 0; i < kLights; ++i) {
       const std::string n = "light" + std::to_string(i) + ".";
       r.add(n + "enabled", &l[i].enabled, "switch this light on or off").hotkey = std::to_string(i + 1);
@@ -147,7 +138,7 @@ class ShadowVolumeLesson : public Lesson {
   }
 
   void init() override {
-    for (gl::Program* p : {&ambient_, &lit_, &volume_, &volumeGs_, &heat_, &lines_}) p->build();
+    for (gl::Program* p : {&ambient_, &lit_, &volume_, &volumeGs_, &heat_}) p->build();
     emptyVao_ = gl::makeVertexArray("fullscreen triangle");
     lineVao_ = gl::makeVertexArray("silhouette lines");
     lineBuffer_ = gl::makeBuffer(GL_ARRAY_BUFFER, "silhouette lines");
@@ -195,7 +186,8 @@ class ShadowVolumeLesson : public Lesson {
     int zPass = 0, zFail = 0;
     for (int i = 0; i < kLights; ++i) {
       const Light& light = p_.lights[i];
-      if (!light.enabled) continue;
+      // A disabled light that is being measured still gets its count (its V), but adds no colour.
+      if (!light.enabled && i != f.measureLight) continue;
       if (p_.view == View::Stencil && i != p_.viewLight) continue;
       const glm::vec4 L = volume::homogeneousLight(light);
       VolumeCache& cache = caches_[i];
@@ -274,10 +266,11 @@ class ShadowVolumeLesson : public Lesson {
           const GLboolean on = i == f.measureLight ? GL_TRUE : GL_FALSE;
           glColorMaski(a, on, on, on, on);
         }
+        if (!light.enabled) glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         lit_.use();
         setLight(light);
         drawScene(lit_, viewProj, f.eye);
-        for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        for (GLuint a = 0; a <= 3; ++a) glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDisable(GL_BLEND);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
@@ -360,31 +353,10 @@ class ShadowVolumeLesson : public Lesson {
       const volume::EdgeAdjacency& adj = adjacency_[obj.mesh];
       const glm::vec4 Lo = glm::inverse(obj.model) * L;
       local.clear();
-      const volume::VolumeCounts n = volume::buildVolume(adj, Lo, adj.closed(), local, &edges);
-      if (p_.impl == Impl::Student) {  // the same volume, with the student's silhouette test deciding the sides
-        local.erase(local.begin(), local.begin() + std::ptrdiff_t(n.sideTriangles * 3));
-        std::vector<glm::vec4> sides;
-        edges.clear();
-        for (const volume::Edge& e : adj.edges) {
-          if (e.face1 < 0) continue;
-          const auto& T = adj.triangles;
-          const auto third = [&](std::int32_t f, std::uint32_t a, std::uint32_t b) {
-            for (int k = 0; k < 3; ++k)
-              if (T[3 * f + k] != a && T[3 * f + k] != b) return adj.positions[T[3 * f + k]];
-            return adj.positions[a];
-          };
-          const glm::vec3 &a = adj.positions[e.a], &b = adj.positions[e.b];
-          if (!ex04::isSilhouette(a, b, third(e.face0, e.a, e.b), third(e.face1, e.a, e.b), Lo)) continue;
-          const bool lit0 = volume::facesLight(adj.planes[std::size_t(e.face0)], Lo);
-          edges.push_back(lit0 ? volume::SilhouetteEdge{e.a, e.b} : volume::SilhouetteEdge{e.b, e.a});
-          const glm::vec3 &p = adj.positions[edges.back().a], &q = adj.positions[edges.back().b];
-          sides.insert(sides.end(), {glm::vec4(q, 1), glm::vec4(p, 1), glm::vec4(p, 0), glm::vec4(q, 1), glm::vec4(p, 0), glm::vec4(q, 0)});
-        }
-        local.insert(local.begin(), sides.begin(), sides.end());
-        c.sides.back() = GLsizei(sides.size());
-      } else {
-        c.sides.back() = GLsizei(n.sideTriangles * 3);
-      }
+      // impl=student: the student's silhouette test decides the sides.
+      const volume::VolumeCounts n = volume::buildVolume(adj, Lo, adj.closed(), local, &edges,
+                                                         p_.impl == Impl::Student ? &ex04::isSilhouette : nullptr);
+      c.sides.back() = GLsizei(n.sideTriangles * 3);
       c.caps.back() = GLsizei(local.size()) - c.sides.back();
       for (const glm::vec4& v : local) c.triangles.push_back(glm::vec4(glm::vec3(obj.model * glm::vec4(glm::vec3(v), 1)), v.w));
       for (const auto& e : edges) {
@@ -463,23 +435,19 @@ class ShadowVolumeLesson : public Lesson {
 
   // The stencil count as colours: one full-screen triangle per count, where the stencil equals it.
   void drawStencilHeatmap() {
-    static const glm::vec4 ramp[] = {{0.1f, 0.1f, 0.6f, 1}, {0.1f, 0.6f, 0.9f, 1}, {0.2f, 0.8f, 0.3f, 1},
-                                     {0.9f, 0.9f, 0.2f, 1}, {1.0f, 0.5f, 0.1f, 1}};
+    static const glm::vec3 ramp[] = {{0.1f, 0.1f, 0.6f}, {0.1f, 0.6f, 0.9f}, {0.2f, 0.8f, 0.3f}, {0.9f, 0.9f, 0.2f}, {1.0f, 0.5f, 0.1f}};
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     heat_.use();
     glBindVertexArray(emptyVao_.id());
-    glStencilFunc(GL_NOTEQUAL, 0, 0xff);  // every count not listed below (and wrapped negatives): red
-    heat_.set("uColor", glm::vec4(0.9f, 0.1f, 0.1f, 0.7f));
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    for (int k = 1; k <= 5; ++k) {
-      glStencilFunc(GL_EQUAL, k, 0xff);
-      heat_.set("uColor", glm::vec4(glm::vec3(ramp[k - 1]), 0.7f));
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-    }
-    for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    masked([&] {
+      for (int k = 0; k <= 5; ++k) {  // k = 0: every count not listed (6+, and wrapped negatives) in red
+        glStencilFunc(k == 0 ? GL_NOTEQUAL : GL_EQUAL, k, 0xff);
+        heat_.set("uColor", glm::vec4(k == 0 ? glm::vec3(0.9f, 0.1f, 0.1f) : ramp[k - 1], 0.7f));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+      }
+    });
     glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
   }
@@ -490,39 +458,43 @@ class ShadowVolumeLesson : public Lesson {
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
-    for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     if (wire) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     volume_.use();
     volume_.set("uViewProj", viewProj);
     volume_.set("uLight", c.light);
-    volume_.set("uColor", wire ? glm::vec4(1.0f, 0.85f, 0.2f, 0.9f) : glm::vec4(1.0f, 0.85f, 0.2f, 0.18f));
+    volume_.set("uColor", glm::vec4(1.0f, 0.85f, 0.2f, wire ? 0.9f : 0.18f));
     glBindVertexArray(c.vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(c.triangles.size()));
+    masked([&] { glDrawArrays(GL_TRIANGLES, 0, GLsizei(c.triangles.size())); });
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glEnable(GL_CULL_FACE);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
   }
 
+  // The silhouette edges as lines (the volume shader draws w = 1 points where they are).
   void drawSilhouettes(const VolumeCache& c, const glm::mat4& viewProj) {
-    struct V { glm::vec3 p; glm::vec4 color; };
-    std::vector<V> v;
-    v.reserve(c.silhouette.size());
-    for (const glm::vec3& p : c.silhouette) v.push_back({p, {1.0f, 0.2f, 0.9f, 1.0f}});
+    std::vector<glm::vec4> v;
+    for (const glm::vec3& p : c.silhouette) v.push_back(glm::vec4(p, 1));
     glBindVertexArray(lineVao_.id());
     glBindBuffer(GL_ARRAY_BUFFER, lineBuffer_.id());
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(V)), v.data(), GL_STREAM_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(glm::vec4)), v.data(), GL_STREAM_DRAW);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(V), nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(V), reinterpret_cast<void*>(sizeof(glm::vec3)));
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
+    masked([&] {
+      glDepthFunc(GL_LEQUAL);
+      volume_.use();
+      volume_.set("uViewProj", viewProj);
+      volume_.set("uColor", glm::vec4(1.0f, 0.2f, 0.9f, 1.0f));
+      glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
+      glDepthFunc(GL_LESS);
+    });
+  }
+
+  // Overlays must not touch the measurement attachments (1-3): the surfaces under them stay measured.
+  template <class F>
+  void masked(F&& draw) {
     for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glDepthFunc(GL_LEQUAL);
-    lines_.use();
-    lines_.set("uViewProj", viewProj);
-    glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
-    glDepthFunc(GL_LESS);
+    draw();
     for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
 
@@ -594,7 +566,6 @@ class ShadowVolumeLesson : public Lesson {
   gl::Program volume_{"04 volume", {"04_shadow_volumes/volume.vert", "04_shadow_volumes/volume.frag"}};
   gl::Program volumeGs_{"04 volume gs", {"04_shadow_volumes/volume_gs.vert", "04_shadow_volumes/volume.geom", "04_shadow_volumes/volume.frag"}};
   gl::Program heat_{"04 stencil heatmap", {"common/fullscreen.vert", "04_shadow_volumes/heat.frag"}};
-  gl::Program lines_{"04 silhouettes", {"common/lines.vert", "common/lines.frag"}};
   gl::VertexArray emptyVao_, lineVao_;
   gl::Buffer lineBuffer_;
   int builtScene_ = -1, builtTriangles_ = -1, revision_ = 0;

@@ -251,3 +251,12 @@ TEST_CASE("volume.scissor: a light's reach and its rectangle on screen") {
   const glm::mat4 P = glm::perspective(1.0f, 1.0f, 0.1f, 100.0f);
   CHECK(scissorForSphere({0, 0, 0}, 2.0f, P, 64, 48) == ScissorRect{0, 0, 64, 48});
 }
+
+TEST_CASE("volume.silhouette: a custom test replaces the plane test on paired edges") {
+  const EdgeAdjacency adj = buildAdjacency(makeBox(glm::vec3(1)));
+  const glm::vec4 L(10, 10, 3, 1);
+  CHECK(findSilhouette(adj, L, &isSilhouette).size() == findSilhouette(adj, L).size());
+  // A test that says yes to everything: all 18 edges, each oriented by its lit face where one is lit.
+  const SilhouetteTest always = [](const glm::vec3&, const glm::vec3&, const glm::vec3&, const glm::vec3&, const glm::vec4&) { return true; };
+  CHECK(findSilhouette(adj, L, always).size() == 18);
+}
