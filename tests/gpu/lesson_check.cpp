@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
       // A doctored copy of the data the lessons read: shaders, textures, lesson presets.
       const fs::path copy = fs::temp_directory_path() / ("lesson_check_root_" + std::to_string(getpid()));
       fs::remove_all(copy);
+      fs::create_directories(copy);
       for (const char* dir : {"shaders", "textures", "lessons"})
         fs::copy(fs::path(SHADOWLAB_SOURCE_ROOT) / dir, copy / dir, fs::copy_options::recursive);
       if (!fs::remove(copy / argv[++i])) {
