@@ -93,3 +93,13 @@ if(TARGET lesson_01_lighting AND TARGET shadowlab_bench)
     set_tests_properties(bench.01_lighting.page PROPERTIES FIXTURES_REQUIRED bench_report LABELS web)
   endif()
 endif()
+
+# The launcher: its window under Xvfb lists the lessons; headless it renders the tour.
+if(TARGET shadowlab)
+  if(XVFB_RUN)
+    add_test(NAME gpu.launcher.window COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x720x24"
+             $<TARGET_FILE:lesson_check> $<TARGET_FILE:shadowlab> --png ${shots}/launcher.png
+             -- --frames 5 --screenshot ${shots}/launcher.png)
+    set_tests_properties(gpu.launcher.window PROPERTIES LABELS gpu)
+  endif()
+endif()

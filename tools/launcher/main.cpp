@@ -22,7 +22,9 @@
 #include <vector>
 
 #include "app/context.hpp"
+#include "core/image.hpp"
 #include "gl/gl.hpp"
+#include "gl/texture.hpp"
 #include "lesson_list.hpp"
 
 extern char** environ;
@@ -135,7 +137,8 @@ int tour(const std::vector<LessonEntry>& lessons, const fs::path& dir) {
   return failures == 0 ? 0 : 1;
 }
 
-int launcherWindow(const std::vector<LessonEntry>& lessons) {
+// `frames` > 0 (tests): close after that many frames, saving the last one to `screenshot`.
+int launcherWindow(const std::vector<LessonEntry>& lessons, int frames, const std::string& screenshot) {
   auto context = shadowlab::createWindowContext({900, 560, "shadowlab: lessons", false, false});
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -147,7 +150,7 @@ int launcherWindow(const std::vector<LessonEntry>& lessons) {
   ImGui_ImplGlfw_InitForOpenGL(context->window(), true);
   ImGui_ImplOpenGL3_Init("#version 410 core");
   std::string status = "Choose a lesson. Each opens in its own window; F1 there shows its help.";
-  while (!context->shouldClose()) {
+  for (int frame = 0; !context->shouldClose() && (frames <= 0 || frame < frames); ++frame) {
     context->pollEvents();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -169,7 +172,9 @@ int launcherWindow(const std::vector<LessonEntry>& lessons) {
         ImGui::TextUnformatted(l.number.c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(l.title.c_str());
-        ImGui::TextDisabled("%s", l.summary.c_str());
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", l.summary.c_str());
+        ImGui::PopStyleColor();
         ImGui::TableNextColumn();
         ImGui::Text("%s", std::string(std::size_t(l.difficulty), '*').c_str());
         ImGui::TableNextColumn();
@@ -189,6 +194,8 @@ int launcherWindow(const std::vector<LessonEntry>& lessons) {
     glClearColor(0.08f, 0.08f, 0.1f, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (frames > 0 && frame + 1 == frames && !screenshot.empty())
+      shadowlab::savePng(screenshot, shadowlab::gl::readPixels(0, context->width(), context->height()));
     context->present();
     while (waitpid(-1, nullptr, WNOHANG) > 0) {}  // reap lessons that were closed
   }
@@ -202,16 +209,19 @@ int launcherWindow(const std::vector<LessonEntry>& lessons) {
 
 int main(int argc, char** argv) {
   const fs::path binDir = fs::canonical("/proc/self/exe").parent_path();
-  std::string tourDir;
+  std::string tourDir, screenshot;
+  int frames = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--tour" && i + 1 < argc) tourDir = argv[++i];
+    else if (a == "--frames" && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--screenshot" && i + 1 < argc) screenshot = argv[++i];
     else if (a == "--help") {
       std::cout << "usage: shadowlab [--tour DIR]\n  with a display: the lesson launcher\n"
                    "  without one, or with --tour: render every lesson and preset into DIR (default out/tour)\n";
       return 0;
     } else {
-      std::cerr << "shadowlab: unknown argument '" << a << "'; valid: --tour DIR, --help\n";
+      std::cerr << "shadowlab: unknown argument '" << a << "'; valid: --tour DIR, --frames N, --screenshot FILE, --help\n";
       return 2;
     }
   }
@@ -228,7 +238,7 @@ int main(int argc, char** argv) {
     return tour(lessons, tourDir);
   }
   try {
-    return launcherWindow(lessons);
+    return launcherWindow(lessons, frames, screenshot);
   } catch (const std::exception& e) {
     std::cerr << "shadowlab: " << e.what() << "\n";
     return 1;
