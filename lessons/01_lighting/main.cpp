@@ -20,6 +20,7 @@
 #include "exercises.hpp"
 #include "gl/mesh_gpu.hpp"
 #include "gl/program.hpp"
+#include "gl/scene_draw.hpp"
 
 using namespace shadowlab;
 
@@ -166,7 +167,12 @@ class LightingLesson : public Lesson {
       sceneProgram_.set("uTexture", 0);
       sceneProgram_.set("uMeasureLight", f.measureLight);
       setLightUniforms();
-      for (std::size_t i = 0; i < scene.objects.size(); ++i) drawObject(i);
+      gl::SceneDrawOptions draw;
+      draw.textures = p_.textures;
+      draw.specular = p_.specular;
+      draw.shininess = p_.shininess;
+      draw.beforeDraw = [this](std::size_t i) { bindVertexColors(i); };
+      gl::drawScene(sceneProgram_, scene, gpu_, draw);  // beforeDraw sets attribute 3 for every object
     }
 
     // ==== 3. light gizmos ===========================================================================
@@ -209,23 +215,9 @@ class LightingLesson : public Lesson {
     }
   }
 
-  void drawObject(std::size_t i) {
-    const SceneObject& o = scene.objects[i];
-    const Material& m = scene.materials[o.material];
-    sceneProgram_.set("uModel", o.model);
-    sceneProgram_.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(o.model)));
-    sceneProgram_.set("uAlbedo", m.albedo);
-    sceneProgram_.set("uSpecular", p_.specular);
-    sceneProgram_.set("uShininess", p_.shininess);
-    sceneProgram_.set("uTwoSided", m.twoSided);
-    const GLuint tex = gpu_.materialTextures[o.material].id();
-    sceneProgram_.set("uUseTexture", p_.textures && tex != 0);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
-    const gl::GpuMesh& mesh = gpu_.meshes[o.mesh];
-    glBindVertexArray(mesh.vao.id());
-    if (i < colors_.size()) {  // CPU-shaded colours for this object at attribute 3
+  // The CPU-shaded colours of object i at attribute 3 (vertex_cpu shading), or a constant.
+  void bindVertexColors(std::size_t i) {
+    if (i < colors_.size()) {
       glBindBuffer(GL_ARRAY_BUFFER, colors_[i].id());
       glEnableVertexAttribArray(3);
       glVertexAttribPointer(3, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
@@ -233,8 +225,6 @@ class LightingLesson : public Lesson {
       glDisableVertexAttribArray(3);
       glVertexAttrib3f(3, 0, 0, 0);
     }
-    mesh.draw();
-    glDisableVertexAttribArray(3);
   }
 
   // The same model as the shader, evaluated per vertex with the chosen implementation: with

@@ -1,0 +1,35 @@
+#include "gl/scene_draw.hpp"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+namespace shadowlab::gl {
+
+std::size_t drawScene(const Program& program, const Scene& scene, const GpuScene& gpu, const SceneDrawOptions& o) {
+  std::size_t triangles = 0;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    if (o.filter && !o.filter(i)) continue;
+    const SceneObject& object = scene.objects[i];
+    const Material& m = scene.materials[object.material];
+    const GLuint texture = o.textures ? gpu.materialTextures[object.material].id() : 0;
+    program.set("uModel", object.model);
+    program.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(object.model)));
+    program.set("uAlbedo", m.albedo);
+    program.set("uSpecular", o.specular.value_or(m.specular));
+    program.set("uShininess", o.shininess.value_or(m.shininess));
+    program.set("uTwoSided", m.twoSided);
+    program.set("uUseTexture", texture != 0);
+    program.set("uAlphaCutoff", m.alphaCutoff);
+    glActiveTexture(o.textureUnit);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
+    const GpuMesh& mesh = gpu.meshes[object.mesh];
+    glBindVertexArray(mesh.vao.id());
+    if (o.beforeDraw) o.beforeDraw(i);
+    mesh.draw();
+    triangles += std::size_t(mesh.indexCount) / 3;
+  }
+  glEnable(GL_CULL_FACE);
+  return triangles;
+}
+
+}  // namespace shadowlab::gl

@@ -1,0 +1,30 @@
+#pragma once
+// Drawing a scene's objects with a course scene shader: per object it sets the uniforms every
+// scene shader in the course names the same way (uModel, uNormalMatrix, uAlbedo, uSpecular,
+// uShininess, uTwoSided, uUseTexture, uAlphaCutoff; unused ones cost nothing), binds the material
+// texture, culls back faces except on two-sided materials, and draws. Lessons keep the passes;
+// this keeps the bookkeeping in one place.
+#include <functional>
+#include <optional>
+
+#include "core/scene.hpp"
+#include "gl/mesh_gpu.hpp"
+#include "gl/program.hpp"
+
+namespace shadowlab::gl {
+
+struct SceneDrawOptions {
+  bool textures = true;                // bind material textures (uUseTexture says whether there is one)
+  std::optional<float> specular;       // override every material's k_s (a lesson's slider)
+  std::optional<float> shininess;      // override every material's exponent
+  GLenum textureUnit = GL_TEXTURE0;    // where the material texture goes (uTexture's unit)
+  // Draw only objects for which this returns true (caster culling, receivers only...); empty: all.
+  std::function<bool(std::size_t object)> filter;
+  // Called after the object's VAO is bound and its uniforms set, right before it is drawn.
+  std::function<void(std::size_t object)> beforeDraw;
+};
+
+// Returns the number of triangles drawn.
+std::size_t drawScene(const Program& program, const Scene& scene, const GpuScene& gpu, const SceneDrawOptions& options = {});
+
+}  // namespace shadowlab::gl
