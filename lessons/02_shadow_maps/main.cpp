@@ -215,6 +215,7 @@ class ShadowMapLesson : public Lesson {
       glEnable(GL_DEPTH_TEST);
     }
     if (p_.view != View::ShadowMap) {
+      auto t = scope("gizmo");
       unlit_.use();
       unlit_.set("uMvp", f.projection * f.view * glm::translate(glm::mat4(1), p_.spot.position));
       unlit_.set("uColor", glm::vec4(1.0f, 0.9f, 0.4f, 1.0f));
