@@ -195,6 +195,19 @@ void declareCamera(ParamRegistry& params, OrbitCamera& c) {
   params.add("camera.far", &c.farZ, 0.1f, 1e7f, "far plane distance").hidden = true;
 }
 
+void declareLight(ParamRegistry& r, int index, Light& l) {
+  const std::string n = "light" + std::to_string(index) + ".";
+  r.add(n + "enabled", &l.enabled, "switch this light on or off").hotkey = std::to_string(index + 1);
+  r.addChoice(n + "kind", &l.kind, {"point", "spot", "directional"}, "point, spot (a cone) or directional (the sun)");
+  r.add(n + "position", &l.position, -50, 50, "where a point or spot light is");
+  r.add(n + "direction", &l.direction, -1, 1, "spot axis, or the direction sunlight travels");
+  r.addColor(n + "color", &l.color, "I_i: the light's colour");
+  r.add(n + "intensity", &l.intensity, 0, 20, "I_i: the light's strength");
+  r.add(n + "attenuation", &l.attenuation, 0, 10, "c0 c1 c2 of f_att = 1 / (c0 + c1 d + c2 d^2)");
+  r.add(n + "spot_inner", &l.spotInner, 0.01f, 1.5f, "half-angle of the spot's full-strength core (radians)");
+  r.add(n + "spot_outer", &l.spotOuter, 0.01f, 1.5f, "half-angle where the spot fades to zero (radians)");
+}
+
 int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, char** argv) {
   // Declaration order matters: the lesson (and its GL objects) is destroyed before the context.
   std::unique_ptr<Context> context;

@@ -88,5 +88,8 @@ int runLesson(int argc, char** argv) {
 
 // The camera's pose as hidden parameters (camera.yaw, ...), so presets snapshot it.
 void declareCamera(ParamRegistry& params, OrbitCamera& camera);
+// Light `index` as parameters lightN.enabled (hotkey N+1), .kind, .position, .direction, .color,
+// .intensity, .attenuation, .spot_inner, .spot_outer: every lesson's lights look the same.
+void declareLight(ParamRegistry& params, int index, Light& light);
 
 }  // namespace shadowlab

@@ -31,6 +31,16 @@ namespace measure {
 class GroundTruth;
 }
 
+// Draws what is not a measured surface (overlays, lines, translucent volumes) into a measured frame
+// without touching the measurement attachments 1-3, so the surfaces under it stay measured: the
+// alternative to writeNoMeasurement() in the shader, for overlays that must not erase what is below.
+template <class Draw>
+void withoutMeasurement(Draw&& draw) {
+  for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  draw();
+  for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
 // What a lesson hands the framework so it can be measured.
 struct MeasureSource {
   const Scene* scene = nullptr;     // everything that casts shadows, on the CPU

@@ -5,6 +5,8 @@
 // V_i in {0,1} (or [0,1] for soft shadows) is what the rest of the course computes. These are the
 // reference implementations; shaders/common/lighting.glsl mirrors them for the GPU, and lesson 01's
 // exercises ask students to write them.
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "core/light.hpp"
@@ -33,6 +35,10 @@ glm::vec3 lightContributionBlinn(const glm::vec3& N, const glm::vec3& L, const g
 // translate(0.5) * scale(0.5): maps [-1,1]^3 (NDC) onto [0,1]^3 (texture coordinates and depth),
 // the last step of every shadow-map lookup (seeds 002).
 glm::mat4 ndcToTexture();
+
+// The course's standard rig, so lessons start from the same lights: a sun (directional), a warm
+// point light, a blue spot (off) and a green point light (off).
+std::vector<Light> courseLights();
 
 // f_att, spot cone and colour of `light` at point p (everything but V and the material).
 glm::vec3 incidentRadiance(const Light& light, const glm::vec3& p);

@@ -319,4 +319,29 @@ ScissorRect scissorForSphere(const glm::vec3& centre, float radius, const glm::m
   return {x0, y0, x1 - x0, y1 - y0};
 }
 
+void buildSceneVolumes(const Scene& scene, const std::vector<EdgeAdjacency>& adjacency, const glm::vec4& lightWorld,
+                       const std::function<bool(std::size_t)>& casts, SilhouetteTest test, SceneVolumes& out) {
+  out.triangles.clear(), out.first.clear(), out.sides.clear(), out.caps.clear(), out.silhouette.clear();
+  std::vector<glm::vec4> local;
+  std::vector<SilhouetteEdge> edges;
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    out.first.push_back(int(out.triangles.size()));
+    out.sides.push_back(0);
+    out.caps.push_back(0);
+    if (!casts(o)) continue;
+    const SceneObject& obj = scene.objects[o];
+    const EdgeAdjacency& adj = adjacency[obj.mesh];
+    local.clear();
+    // In the object's space: the model matrix goes on afterwards, vertex by vertex.
+    const VolumeCounts n = buildVolume(adj, glm::inverse(obj.model) * lightWorld, adj.closed(), local, &edges, test);
+    out.sides.back() = int(n.sideTriangles * 3);
+    out.caps.back() = int(local.size()) - out.sides.back();
+    for (const glm::vec4& v : local) out.triangles.push_back(glm::vec4(glm::vec3(obj.model * glm::vec4(glm::vec3(v), 1)), v.w));
+    for (const auto& e : edges) {
+      out.silhouette.push_back(glm::vec3(obj.model * glm::vec4(adj.positions[e.a], 1)));
+      out.silhouette.push_back(glm::vec3(obj.model * glm::vec4(adj.positions[e.b], 1)));
+    }
+  }
+}
+
 }  // namespace shadowlab::volume

@@ -12,12 +12,14 @@
 // directional one (the direction TOWARD the light at infinity).
 #include <cstdint>
 #include <string>
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "core/light.hpp"
 #include "core/mesh.hpp"
+#include "core/scene.hpp"
 
 namespace shadowlab::volume {
 
@@ -145,5 +147,18 @@ struct ScissorRect {
 };
 ScissorRect scissorForSphere(const glm::vec3& centre, float radius, const glm::mat4& viewProj, int width,
                              int height);
+
+// Every caster's volume for one light, in world space, as a lesson draws them: per object its side
+// triangles first, then its caps (z-pass draws only the sides; a mesh that is not closed gets no
+// caps), and the silhouette edges (two world-space end points each) for the views.
+struct SceneVolumes {
+  std::vector<glm::vec4> triangles;  // w = 0: extruded to infinity
+  std::vector<int> first, sides, caps;  // per object: first vertex, side and cap vertex counts
+  std::vector<glm::vec3> silhouette;
+};
+// `lightWorld`: (position, 1) or (-direction, 0). `casts(o)` picks the casters (others get empty
+// ranges, so indices stay per object).
+void buildSceneVolumes(const Scene& scene, const std::vector<EdgeAdjacency>& adjacency, const glm::vec4& lightWorld,
+                       const std::function<bool(std::size_t)>& casts, SilhouetteTest test, SceneVolumes& out);
 
 }  // namespace shadowlab::volume

@@ -1,8 +1,21 @@
 #include "gl/scene_draw.hpp"
 
+#include <cmath>
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace shadowlab::gl {
+
+void setLight(const Program& program, const std::string& name, const Light& l) {
+  program.set((name + ".kind").c_str(), int(l.kind));
+  program.set((name + ".enabled").c_str(), l.enabled);
+  program.set((name + ".position").c_str(), l.position);
+  program.set((name + ".direction").c_str(), glm::normalize(l.direction));
+  program.set((name + ".color").c_str(), l.color * l.intensity);
+  program.set((name + ".attenuation").c_str(), l.attenuation);
+  program.set((name + ".cosInner").c_str(), std::cos(l.spotInner));
+  program.set((name + ".cosOuter").c_str(), std::cos(l.spotOuter));
+}
 
 std::size_t drawScene(const Program& program, const Scene& scene, const GpuScene& gpu, const SceneDrawOptions& o) {
   std::size_t triangles = 0;

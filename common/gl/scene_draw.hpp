@@ -6,7 +6,9 @@
 // this keeps the bookkeeping in one place.
 #include <functional>
 #include <optional>
+#include <string>
 
+#include "core/light.hpp"
 #include "core/scene.hpp"
 #include "gl/mesh_gpu.hpp"
 #include "gl/program.hpp"
@@ -23,6 +25,10 @@ struct SceneDrawOptions {
   // Called after the object's VAO is bound and its uniforms set, right before it is drawn.
   std::function<void(std::size_t object)> beforeDraw;
 };
+
+// Sets a `Light` uniform struct of shaders/common/lighting.glsl (`name` is e.g. "uLight" or
+// "uLights[2]"): kind, enabled, position, direction, colour times intensity, attenuation, cone.
+void setLight(const Program& program, const std::string& name, const Light& light);
 
 // Returns the number of triangles drawn.
 std::size_t drawScene(const Program& program, const Scene& scene, const GpuScene& gpu, const SceneDrawOptions& options = {});

@@ -79,36 +79,9 @@ class LightingLesson : public Lesson {
     r.add("gizmos", &p_.gizmos, "draw the lights").hotkey = "G";
     r.add("animate", &p_.animate, "orbit the point light around the scene").hotkey = "A";
 
-    Light& sun = p_.lights[0];
-    sun = {LightKind::Directional};
-    sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
-    sun.color = {1.0f, 0.95f, 0.85f};
-    sun.intensity = 0.7f;
-    Light& bulb = p_.lights[1];
-    bulb = {LightKind::Point, {3.0f, 3.0f, 2.0f}};
-    bulb.color = {1.0f, 0.6f, 0.3f};
-    bulb.intensity = 2.0f;
-    bulb.attenuation = {1.0f, 0.1f, 0.05f};
-    Light& spot = p_.lights[2];
-    spot = {LightKind::Spot, {-3.0f, 5.0f, 3.0f}};
-    spot.direction = glm::normalize(glm::vec3(0.5f, -1.0f, -0.5f));
-    spot.color = {0.4f, 0.6f, 1.0f};
-    spot.intensity = 3.0f;
-    spot.attenuation = {1.0f, 0.05f, 0.02f};
-    spot.enabled = false;
-    for (int i = 0; i < kLightCount; ++i) {
-      const std::string n = "light" + std::to_string(i) + ".";
-      Light& l = p_.lights[i];
-      r.add(n + "enabled", &l.enabled, "switch this light on or off").hotkey = std::to_string(i + 1);
-      r.addChoice(n + "kind", &l.kind, {"point", "spot", "directional"}, "point, spot (a cone) or directional (the sun)");
-      r.add(n + "position", &l.position, -50, 50, "where a point or spot light is");
-      r.add(n + "direction", &l.direction, -1, 1, "spot axis, or the direction sunlight travels");
-      r.addColor(n + "color", &l.color, "I_i: the light's colour");
-      r.add(n + "intensity", &l.intensity, 0, 20, "I_i: the light's strength");
-      r.add(n + "attenuation", &l.attenuation, 0, 10, "c0 c1 c2 of f_att = 1 / (c0 + c1 d + c2 d^2)");
-      r.add(n + "spot_inner", &l.spotInner, 0.01f, 1.5f, "half-angle of the spot's full-strength core (radians)");
-      r.add(n + "spot_outer", &l.spotOuter, 0.01f, 1.5f, "half-angle where the spot fades to zero (radians)");
-    }
+    // The course's rig: the sun and a warm point light on, a blue spot off.
+    const std::vector<Light> rig = lighting::courseLights();
+    for (int i = 0; i < kLightCount; ++i) declareLight(r, i, p_.lights[i] = rig[std::size_t(i)]);
   }
 
   void init() override {
@@ -201,18 +174,7 @@ class LightingLesson : public Lesson {
 
   void setLightUniforms() {
     sceneProgram_.set("uLightCount", kLightCount);
-    for (int i = 0; i < kLightCount; ++i) {
-      const Light& l = p_.lights[i];
-      const std::string n = "uLights[" + std::to_string(i) + "].";
-      sceneProgram_.set((n + "kind").c_str(), int(l.kind));
-      sceneProgram_.set((n + "enabled").c_str(), l.enabled);
-      sceneProgram_.set((n + "position").c_str(), l.position);
-      sceneProgram_.set((n + "direction").c_str(), glm::normalize(l.direction));
-      sceneProgram_.set((n + "color").c_str(), l.color * l.intensity);
-      sceneProgram_.set((n + "attenuation").c_str(), l.attenuation);
-      sceneProgram_.set((n + "cosInner").c_str(), std::cos(l.spotInner));
-      sceneProgram_.set((n + "cosOuter").c_str(), std::cos(l.spotOuter));
-    }
+    for (int i = 0; i < kLightCount; ++i) gl::setLight(sceneProgram_, "uLights[" + std::to_string(i) + "]", p_.lights[i]);
   }
 
   // The CPU-shaded colours of object i at attribute 3 (vertex_cpu shading), or a constant.

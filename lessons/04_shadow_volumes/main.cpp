@@ -18,14 +18,14 @@
 #include <algorithm>
 #include <cmath>
 
-#include <glm/gtc/matrix_inverse.hpp>
-
 #include "app/lesson.hpp"
+#include "core/lighting.hpp"
 #include "core/scene_gen.hpp"
 #include "core/shadow_volume.hpp"
 #include "exercises.hpp"
 #include "gl/mesh_gpu.hpp"
 #include "gl/program.hpp"
+#include "gl/scene_draw.hpp"
 
 using namespace shadowlab;
 
@@ -63,16 +63,11 @@ GLenum toGl(volume::StencilOp op) {
   return op == volume::StencilOp::IncrWrap ? GL_INCR_WRAP : op == volume::StencilOp::DecrWrap ? GL_DECR_WRAP : GL_KEEP;
 }
 
-// One light's volumes for every caster, in world space, built on the CPU and kept until the light,
-// the scene or the implementation changes. Per object: sides first, then caps, so z-pass draws
-// only the sides.
-struct VolumeCache {
+// One light's volumes for every caster (core/shadow_volume: per object sides, then caps), built on
+// the CPU and kept on the GPU until the light, the scene or the implementation changes.
+struct VolumeCache : volume::SceneVolumes {
   glm::vec4 light{0.0f};
   int built = -1;  // scene revision it was built for
-  std::vector<glm::vec4> triangles;
-  std::vector<GLint> first;
-  std::vector<GLsizei> sides, caps;
-  std::vector<glm::vec3> silhouette;  // world-space edge end points, two per edge
   gl::Buffer buffer;
   gl::VertexArray vao;
 };
@@ -112,29 +107,9 @@ class ShadowVolumeLesson : public Lesson {
     r.add("shininess", &p_.shininess, 1, 256, "the specular exponent");
     r.add("animate", &p_.animate, "orbit the point light: its volumes are rebuilt every frame").hotkey = "A";
 
-    // A sun, a warm point light (both on), a spot and a green point light (off; see many_lights).
-    auto make = [](LightKind k, glm::vec3 pos, glm::vec3 dir, glm::vec3 color, float intensity, glm::vec3 att, bool on) {
-      Light l{k, pos};
-      l.direction = glm::normalize(dir), l.color = color, l.intensity = intensity, l.attenuation = att, l.enabled = on;
-      return l;
-    };
-    Light* l = p_.lights;
-    l[0] = make(LightKind::Directional, {}, {-0.4f, -1.0f, -0.3f}, {1.0f, 0.95f, 0.85f}, 0.7f, {1, 0, 0}, true);
-    l[1] = make(LightKind::Point, {3.0f, 3.0f, 2.0f}, {0, -1, 0}, {1.0f, 0.6f, 0.3f}, 2.0f, {1.0f, 0.1f, 0.05f}, true);
-    l[2] = make(LightKind::Spot, {-3.0f, 5.0f, 3.0f}, {0.5f, -1.0f, -0.5f}, {0.4f, 0.6f, 1.0f}, 3.0f, {1.0f, 0.05f, 0.02f}, false);
-    l[3] = make(LightKind::Point, {-3.0f, 2.5f, -2.5f}, {0, -1, 0}, {0.5f, 1.0f, 0.5f}, 2.0f, {1.0f, 0.2f, 0.1f}, false);
-    for (int i = 0; i < kLights; ++i) {
-      const std::string n = "light" + std::to_string(i) + ".";
-      r.add(n + "enabled", &l[i].enabled, "switch this light on or off").hotkey = std::to_string(i + 1);
-      r.addChoice(n + "kind", &l[i].kind, {"point", "spot", "directional"}, "point, spot or directional (the sun)");
-      r.add(n + "position", &l[i].position, -50, 50, "where a point or spot light is");
-      r.add(n + "direction", &l[i].direction, -1, 1, "spot axis, or the direction sunlight travels");
-      r.addColor(n + "color", &l[i].color, "I_i: the light's colour");
-      r.add(n + "intensity", &l[i].intensity, 0, 20, "I_i: the light's strength");
-      r.add(n + "attenuation", &l[i].attenuation, 0, 10, "c0 c1 c2 of f_att; with the intensity they set the scissor's reach");
-      r.add(n + "spot_inner", &l[i].spotInner, 0.01f, 1.5f, "half-angle of the spot's full-strength core (radians)");
-      r.add(n + "spot_outer", &l[i].spotOuter, 0.01f, 1.5f, "half-angle where the spot fades to zero (radians)");
-    }
+    // The course's rig: a sun, a warm point light (both on), a spot and a green point light (off; see many_lights).
+    const std::vector<Light> rig = lighting::courseLights();
+    for (int i = 0; i < kLights; ++i) declareLight(r, i, p_.lights[i] = rig[std::size_t(i)]);
   }
 
   void init() override {
@@ -341,29 +316,9 @@ class ShadowVolumeLesson : public Lesson {
     const int key = revision_ * 4 + int(p_.impl) * 2 + int(p_.openMeshes);
     if (c.built == key && c.light == L) return;
     auto t = scope("cpu volumes");
-    c.triangles.clear(), c.first.clear(), c.sides.clear(), c.caps.clear(), c.silhouette.clear();
-    std::vector<glm::vec4> local;
-    std::vector<volume::SilhouetteEdge> edges;
-    for (std::size_t o = 0; o < scene_.objects.size(); ++o) {
-      c.first.push_back(GLint(c.triangles.size()));
-      c.sides.push_back(0);
-      c.caps.push_back(0);
-      if (!casts(o)) continue;
-      const SceneObject& obj = scene_.objects[o];
-      const volume::EdgeAdjacency& adj = adjacency_[obj.mesh];
-      const glm::vec4 Lo = glm::inverse(obj.model) * L;
-      local.clear();
-      // impl=student: the student's silhouette test decides the sides.
-      const volume::VolumeCounts n = volume::buildVolume(adj, Lo, adj.closed(), local, &edges,
-                                                         p_.impl == Impl::Student ? &ex04::isSilhouette : nullptr);
-      c.sides.back() = GLsizei(n.sideTriangles * 3);
-      c.caps.back() = GLsizei(local.size()) - c.sides.back();
-      for (const glm::vec4& v : local) c.triangles.push_back(glm::vec4(glm::vec3(obj.model * glm::vec4(glm::vec3(v), 1)), v.w));
-      for (const auto& e : edges) {
-        c.silhouette.push_back(glm::vec3(obj.model * glm::vec4(adj.positions[e.a], 1)));
-        c.silhouette.push_back(glm::vec3(obj.model * glm::vec4(adj.positions[e.b], 1)));
-      }
-    }
+    // impl=student: the student's silhouette test decides the sides.
+    volume::buildSceneVolumes(scene_, adjacency_, L, [this](std::size_t o) { return casts(o); },
+                              p_.impl == Impl::Student ? &ex04::isSilhouette : nullptr, c);
     if (!c.vao) {
       c.vao = gl::makeVertexArray("volumes");
       c.buffer = gl::makeBuffer(GL_ARRAY_BUFFER, "volumes");
@@ -441,7 +396,7 @@ class ShadowVolumeLesson : public Lesson {
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     heat_.use();
     glBindVertexArray(emptyVao_.id());
-    masked([&] {
+    withoutMeasurement([&] {
       for (int k = 0; k <= 5; ++k) {  // k = 0: every count not listed (6+, and wrapped negatives) in red
         glStencilFunc(k == 0 ? GL_NOTEQUAL : GL_EQUAL, k, 0xff);
         heat_.set("uColor", glm::vec4(k == 0 ? glm::vec3(0.9f, 0.1f, 0.1f) : ramp[k - 1], 0.7f));
@@ -464,7 +419,7 @@ class ShadowVolumeLesson : public Lesson {
     volume_.set("uLight", c.light);
     volume_.set("uColor", glm::vec4(1.0f, 0.85f, 0.2f, wire ? 0.9f : 0.18f));
     glBindVertexArray(c.vao.id());
-    masked([&] { glDrawArrays(GL_TRIANGLES, 0, GLsizei(c.triangles.size())); });
+    withoutMeasurement([&] { glDrawArrays(GL_TRIANGLES, 0, GLsizei(c.triangles.size())); });
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glEnable(GL_CULL_FACE);
     glDepthMask(GL_TRUE);
@@ -480,7 +435,7 @@ class ShadowVolumeLesson : public Lesson {
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(glm::vec4)), v.data(), GL_STREAM_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
-    masked([&] {
+    withoutMeasurement([&] {
       glDepthFunc(GL_LEQUAL);
       volume_.use();
       volume_.set("uViewProj", viewProj);
@@ -488,14 +443,6 @@ class ShadowVolumeLesson : public Lesson {
       glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
       glDepthFunc(GL_LESS);
     });
-  }
-
-  // Overlays must not touch the measurement attachments (1-3): the surfaces under them stay measured.
-  template <class F>
-  void masked(F&& draw) {
-    for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    draw();
-    for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
 
   // The god view: the shown light's silhouette and a stub of each side quad toward infinity.
@@ -513,35 +460,13 @@ class ShadowVolumeLesson : public Lesson {
     prog.set("uViewProj", viewProj);
     prog.set("uEye", eye);
     prog.set("uTexture", 0);
-    prog.set("uSpecular", p_.specular);
-    prog.set("uShininess", p_.shininess);
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      const SceneObject& o = scene_.objects[i];
-      const Material& m = scene_.materials[o.material];
-      prog.set("uModel", o.model);
-      prog.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(o.model)));
-      prog.set("uAlbedo", m.albedo);
-      prog.set("uTwoSided", m.twoSided);
-      const GLuint tex = gpu_.materialTextures[o.material].id();
-      prog.set("uUseTexture", tex != 0);
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, tex);
-      m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
-      gpu_.meshes[o.mesh].draw();
-    }
-    glEnable(GL_CULL_FACE);
+    gl::SceneDrawOptions draw;
+    draw.specular = p_.specular;
+    draw.shininess = p_.shininess;
+    gl::drawScene(prog, scene_, gpu_, draw);
   }
 
-  void setLight(const Light& l) {
-    lit_.set("uLight.kind", int(l.kind));
-    lit_.set("uLight.enabled", true);
-    lit_.set("uLight.position", l.position);
-    lit_.set("uLight.direction", glm::normalize(l.direction));
-    lit_.set("uLight.color", l.color * l.intensity);
-    lit_.set("uLight.attenuation", l.attenuation);
-    lit_.set("uLight.cosInner", std::cos(l.spotInner));
-    lit_.set("uLight.cosOuter", std::cos(l.spotOuter));
-  }
+  void setLight(const Light& l) { gl::setLight(lit_, "uLight", l); }
 
   struct AdjacencyMesh {
     gl::VertexArray vao;
