@@ -206,6 +206,9 @@ void declareLight(ParamRegistry& r, int index, Light& l) {
   r.add(n + "attenuation", &l.attenuation, 0, 10, "c0 c1 c2 of f_att = 1 / (c0 + c1 d + c2 d^2)");
   r.add(n + "spot_inner", &l.spotInner, 0.01f, 1.5f, "half-angle of the spot's full-strength core (radians)");
   r.add(n + "spot_outer", &l.spotOuter, 0.01f, 1.5f, "half-angle where the spot fades to zero (radians)");
+  // (AreaShape::Rectangle needs a size and a tangent as well; no lesson exposes it yet.)
+  r.addChoice(n + "area", &l.area, {"none", "sphere"}, "a spherical emitter: soft shadows, and the soft ground truth");
+  r.add(n + "radius", &l.radius, 0.0f, 10.0f, "the spherical emitter's radius");
 }
 
 int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, char** argv) {
