@@ -45,11 +45,17 @@ grade: build
 	@$(BUILD)/bin/grade_ex$(LESSON) --reporters=junit --out=out/grades/ex$(LESSON).xml --score-json=out/grades/ex$(LESSON).json >/dev/null; \
 	  status=$$?; cat out/grades/ex$(LESSON).json; echo "JUnit: out/grades/ex$(LESSON).xml"; exit $$status
 
+# Benchmarks, apart from the tests: the PSM light-camera set-up against receiver count, and lesson 01
+# over its presets against ground truth (report in out/bench/). Lessons add their own sweeps:
+# tools/shadow_bench.sh, tools/volume_bench.sh, filter_sweep (see the README).
 bench: build
-	@bash tools/bench.sh $(BUILD)
+	@mkdir -p out/bench
+	@$(BUILD)/bin/bench_psm_setup out/bench/psm_setup.csv
+	@$(BUILD)/bin/shadowlab_bench $(BUILD)/bin/lesson_01_lighting --out out/bench/01_lighting \
+	  --preset default --preset three_lights --preset spot_only --repeat 3 --frames 6
 
 soak: build
-	@SHADOWLAB_STRESS_CONFIGS=10000000 $(BUILD)/bin/stress_tests
+	@cmake --build --preset $(PRESET) --target stress_soak
 
 stub-hashes:
 	@sha256sum lessons/*/exercises.cpp > tests/grading/pristine.sha256 && cat tests/grading/pristine.sha256
