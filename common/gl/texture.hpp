@@ -9,8 +9,8 @@
 namespace shadowlab::gl {
 
 // uv convention: v = 0 is the image file's top row (uploaded unflipped; see texture.cpp).
-// Loads textures/<name> with a full mip chain, trilinear filtering and repeat wrapping (anisotropic
-// 8x when the extension is there). Throws std::runtime_error naming the path when it cannot be read.
+// Loads textures/<name> with a full mip chain, trilinear filtering and repeat wrapping (no
+// anisotropy: see lesson 06). Throws std::runtime_error naming the path when it cannot be read.
 Texture loadTexture(const std::string& name);
 Texture uploadTexture(const Image8& image, const std::string& label, bool mipmaps = true);
 
