@@ -33,7 +33,7 @@ key 1   8 10 26      0 2 0     0 8 0   -0.45 -1 -0.3
 key 2   -14 6 10     4 1 -2    0 8 0   -0.45 -1 -0.3
 PATH
 
-# Each key as the orbit camera's parameters: forward = (target - eye) / d, pitch = asin(f.y),
+# Each key as the orbit camera's parameters: forward = (target - eye) / d, pitch = -asin(f.y) (positive looks down),
 # yaw = atan2(-f.x, -f.z) (core/camera.cpp: forward = (-sin yaw cos p, sin p, -cos yaw cos p)).
 poses=$(python3 - "$path" <<'PY'
 import math, sys
@@ -42,7 +42,7 @@ for line in open(sys.argv[1]):
     if not t or t[0] != "key": continue
     e, g = [float(x) for x in t[2:5]], [float(x) for x in t[5:8]]
     d = [g[i] - e[i] for i in range(3)]; n = math.sqrt(sum(x * x for x in d)); f = [x / n for x in d]
-    print(f"camera.yaw={math.atan2(-f[0], -f[2]):.6f},camera.pitch={math.asin(f[1]):.6f},camera.distance={n:.6f},camera.target={g[0]} {g[1]} {g[2]}")
+    print(f"camera.yaw={math.atan2(-f[0], -f[2]):.6f},camera.pitch={-math.asin(f[1]):.6f},camera.distance={n:.6f},camera.target={g[0]} {g[1]} {g[2]}")
 PY
 )
 

@@ -46,11 +46,11 @@ struct Params {
   int pcfSize = 3;                    // N of N x N PCF (odd)
   float poissonRadius = 2.0f;         // Poisson disk radius in texels
   float constantBias = 0.0005f;       // depth units subtracted before the comparison
-  float slopeBias = 0.001f;           // times tan(theta): steep receivers need more
-  float maxBias = 0.01f;              // clamp: tan(theta) grows without bound at grazing light
-  float offsetFactor = 1.5f;          // glPolygonOffset factor (slope-scaled, in the depth pass)
-  float offsetUnits = 2.0f;           // glPolygonOffset units (constant, in format steps)
-  float normalOffset = 1.0f;          // lookup point moved this many texels along the normal
+  float slopeBias = 0.0005f;          // times tan(theta): steep receivers need more
+  float maxBias = 0.003f;              // clamp: tan(theta) grows without bound at grazing light
+  float offsetFactor = 1.0f;          // glPolygonOffset factor (slope-scaled, in the depth pass)
+  float offsetUnits = 1.0f;           // glPolygonOffset units (constant, in format steps)
+  float normalOffset = 0.5f;          // lookup point moved this many texels along the normal
   bool receiverPlane = false;         // filter taps compare against the receiver's plane
   bool cullFront = false;             // depth pass draws back faces: the bias is the object's thickness
   Fit fit = Fit::View;                // sun frustum around the whole scene, or only what the view needs
@@ -182,9 +182,9 @@ class ShadowQualityLesson : public Lesson {
     std::vector<Aabb> keptBoxes;
     int culled = 0;
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      bool keep = scene_.objects[i].castsShadow;
-      if (keep && p_.cullCasters)
-        keep = student ? ex03::casterMayShadow(boxes_[i], viewVolume, sunDir) : shadow::casterMayShadow(boxes_[i], viewVolume, sunDir);
+      if (!scene_.objects[i].castsShadow) { sunCasters[i] = 0; continue; }
+      const bool keep = !p_.cullCasters || (student ? ex03::casterMayShadow(boxes_[i], viewVolume, sunDir)
+                                                    : shadow::casterMayShadow(boxes_[i], viewVolume, sunDir));
       sunCasters[i] = keep;
       if (keep) keptBoxes.push_back(boxes_[i]);
       else if (p_.lights[kSun].enabled) ++culled;
@@ -295,8 +295,9 @@ class ShadowQualityLesson : public Lesson {
   std::vector<char> cullAgainst(const shadow::ConvexVolume& lightVolume, int& culled) {
     std::vector<char> keep(scene_.objects.size(), 1);
     for (std::size_t i = 0; i < keep.size(); ++i) {
-      keep[i] = scene_.objects[i].castsShadow && (!p_.cullCasters || shadow::volumesMayIntersect(shadow::volumeFromBox(boxes_[i]), lightVolume));
-      if (!keep[i]) ++culled;
+      if (!scene_.objects[i].castsShadow) { keep[i] = 0; continue; }
+      keep[i] = !p_.cullCasters || shadow::volumesMayIntersect(shadow::volumeFromBox(boxes_[i]), lightVolume);
+      if (!keep[i]) ++culled;  // counted per light camera: a caster can be culled from several
     }
     return keep;
   }
