@@ -172,9 +172,13 @@ class LightingLesson : public Lesson {
     builtTriangles_ = p_.triangles;
   }
 
+  // Only the enabled lights go to the shader: a software rasteriser runs every loop iteration for
+  // every pixel, so a switched-off light must cost nothing.
   void setLightUniforms() {
-    sceneProgram_.set("uLightCount", kLightCount);
-    for (int i = 0; i < kLightCount; ++i) gl::setLight(sceneProgram_, "uLights[" + std::to_string(i) + "]", p_.lights[i]);
+    int n = 0;
+    for (const Light& l : p_.lights)
+      if (l.enabled) gl::setLight(sceneProgram_, "uLights[" + std::to_string(n++) + "]", l);
+    sceneProgram_.set("uLightCount", n);
   }
 
   // The CPU-shaded colours of object i at attribute 3 (vertex_cpu shading), or a constant.
