@@ -5,7 +5,7 @@
 # and cube-face skipping, as a ratio against drawing everything, in one run. Usage:
 #   tools/shadow_bench.sh [BUILD_DIR (build/default)] [OUT_DIR (out/shadow_bench)] [SIZE (640x360)]
 # Environment: SCENES ("city forest"), MAPS ("512 1024 2048 4096"), TRIANGLES (60000),
-# FRAMES (timed frames of the culling run, 20).
+# FRAMES (timed frames of the culling runs, 20), REPEATS (of each culling run, interleaved, 3), SWEEP (0: only the culling runs, keeping the CSV).
 # Writes OUT_DIR/shadow_bench.csv (one row per scene, map size, filter, fit and path pose),
 # OUT_DIR/culling.csv and OUT_DIR/summary.txt. Figures from a software renderer (llvmpipe) rank
 # configurations; they do not predict a GPU's milliseconds.
@@ -17,6 +17,7 @@ scenes=${SCENES:-city forest}
 maps=${MAPS:-512 1024 2048 4096}
 triangles=${TRIANGLES:-60000}
 frames=${FRAMES:-20}
+repeats=${REPEATS:-3}
 bin=$build/bin/lesson_03_shadow_quality
 [[ -x $bin ]] || { echo "shadow_bench: $bin not built (cmake --build $build --target lesson_03_shadow_quality)" >&2; exit 2; }
 [[ $size =~ ^[0-9]+x[0-9]+$ ]] || { echo "shadow_bench: size '$size' is not WxH" >&2; exit 2; }
@@ -47,7 +48,6 @@ PY
 )
 
 csv=$out/shadow_bench.csv
-echo "scene,map_size,filter,fit,pose,misclassified_pct,edge_tolerant_pct,leak_pct,false_shadow_pct,aliasing_mean,aliasing_p95,aliasing_share_above_1,gpu_shadow_ms,gpu_scene_ms,shadow_triangles,culled_casters,cube_faces_skipped" > "$csv"
 row() {  # json scene map filter fit pose
   python3 - "$@" <<'PY'
 import json, sys
@@ -60,6 +60,10 @@ print(",".join(str(x) for x in [scene, size, filt, fit, pose, h["misclassified_p
 PY
 }
 
+sweep=${SWEEP:-1}
+[[ $sweep == 1 || -f $csv ]] || { echo "shadow_bench: SWEEP=0 needs an earlier $csv" >&2; exit 2; }
+if [[ $sweep == 1 ]]; then
+echo "scene,map_size,filter,fit,pose,misclassified_pct,edge_tolerant_pct,leak_pct,false_shadow_pct,aliasing_mean,aliasing_p95,aliasing_share_above_1,gpu_shadow_ms,gpu_scene_ms,shadow_triangles,culled_casters,cube_faces_skipped" > "$csv"
 total=$(( $(wc -w <<<"$scenes") * $(wc -w <<<"$maps") * 4 * $(wc -l <<<"$poses") )); n=0
 for scene in $scenes; do
   for map in $maps; do
@@ -82,21 +86,32 @@ for scene in $scenes; do
   done
 done
 echo >&2
+fi
 
-# Caster culling and face skipping: the same frames with both on and both off (all three lights,
-# the path's middle pose), shadow passes' GPU ms averaged after 5 warm-up frames.
+# Caster culling and face skipping: the same frames with both on and both off, all three lights,
+# shadow passes' GPU ms averaged after 5 warm-up frames. Three setups: the path's middle pose with
+# the default maps (2048^2 sun and spot, 1024^2 cube faces), the same with small maps (512^2, 256^2:
+# less fill, so the triangles saved show), and the first pose with the point light behind the
+# camera (cube faces skipped).
 culling=$out/culling.csv
-echo "scene,culling,gpu_shadow_ms,frame_ms,shadow_triangles,culled_casters,cube_faces_skipped" > "$culling"
-mid=$(sed -n 2p <<<"$poses")
+echo "scene,setup,repeat,culling,gpu_shadow_ms,frame_ms,shadow_triangles,culled_casters,cube_faces_skipped" > "$culling"
+first=$(sed -n 1p <<<"$poses"); mid=$(sed -n 2p <<<"$poses")
+setups=("default_maps|$mid|point.position=6 5 4"
+        "small_maps|$mid|point.position=6 5 4,map_size=512,cube_size=256"
+        "light_behind|$first|point.position=36 26 36")
+for rep in $(seq 1 "$repeats"); do  # on and off interleaved, repeated: the machine's load drifts
 for scene in $scenes; do
-  for cull in true false; do
-    sets=(--set scene=$scene --set triangles=$triangles --set point.enabled=true --set spot.enabled=true
-          --set cull_casters=$cull --set skip_faces=$cull --set point.position="6 5 4")
-    IFS=, read -ra cam <<<"$mid"
-    for kv in "${cam[@]}"; do sets+=(--set "$kv"); done
-    "$bin" --headless --size "$size" --frames $((frames + 5)) "${sets[@]}" --bench "$out/cull_${scene}_$cull.csv" \
-      --measure "$out/cull_${scene}_$cull.json" >/dev/null
-    python3 - "$out/cull_${scene}_$cull.csv" "$out/cull_${scene}_$cull.json" "$scene" "$cull" >> "$culling" <<'PY'
+  for setup in "${setups[@]}"; do
+    IFS='|' read -r name pose extra <<<"$setup"
+    for cull in true false; do
+      sets=(--set scene=$scene --set triangles=$triangles --set point.enabled=true --set spot.enabled=true
+            --set cull_casters=$cull --set skip_faces=$cull)
+      IFS=, read -ra kvs <<<"$pose,$extra"
+      for kv in "${kvs[@]}"; do sets+=(--set "$kv"); done
+      tag=cull_${scene}_${name}_${cull}_$rep
+      printf '\rshadow_bench: culling %s %s %s (repeat %d)   ' "$scene" "$name" "$cull" "$rep" >&2
+      "$bin" --headless --size "$size" --frames $((frames + 5)) "${sets[@]}" --bench "$out/$tag.csv" --measure "$out/$tag.json" >/dev/null
+      python3 - "$out/$tag.csv" "$out/$tag.json" "$scene" "$name" "$rep" "$cull" >> "$culling" <<'PY'
 import csv, json, sys, collections
 shadow = collections.defaultdict(float); frame = {}
 for r in csv.reader(open(sys.argv[1])):
@@ -105,10 +120,13 @@ for r in csv.reader(open(sys.argv[1])):
     frame[int(r[0])] = float(r[4])
 c = json.load(open(sys.argv[2]))["counters"]
 mean = lambda d: sum(d.values()) / max(len(d), 1)
-print(f"{sys.argv[3]},{sys.argv[4]},{mean(shadow):.3f},{mean(frame):.1f},{c['shadow triangles']},{c['culled casters']},{c['cube faces skipped']}")
+print(f"{sys.argv[3]},{sys.argv[4]},{sys.argv[5]},{sys.argv[6]},{mean(shadow):.3f},{mean(frame):.1f},{c['shadow triangles']},{c['culled casters']},{c['cube faces skipped']}")
 PY
+    done
   done
 done
+done
+echo >&2
 
 python3 - "$csv" "$culling" <<'PY' | tee "$out/summary.txt"
 import csv, sys, collections
@@ -120,12 +138,16 @@ for k in sorted(groups):
     g = groups[k]; avg = lambda f: sum(float(r[f]) for r in g if r[f] != "") / max(len([r for r in g if r[f] != ""]), 1)
     print(f"  {k[0]:7s} {k[1]:8s} fit={k[2]:5s} {k[3]:5d}: misclassified {avg('misclassified_pct'):6.3f} % ({avg('edge_tolerant_pct'):6.3f} %)"
           f"  aliasing mean {avg('aliasing_mean'):7.3f} p95 {avg('aliasing_p95'):7.3f}  gpu shadow {avg('gpu_shadow_ms'):8.2f} ms scene {avg('gpu_scene_ms'):8.2f} ms")
-cull = {(r["scene"], r["culling"]): r for r in csv.DictReader(open(sys.argv[2]))}
-for scene in sorted({s for s, _ in cull}):
-    on, off = cull.get((scene, "true")), cull.get((scene, "false"))
+import statistics
+runs = collections.defaultdict(list)
+for r in csv.DictReader(open(sys.argv[2])): runs[(r["scene"], r["setup"], r["culling"])].append(r)
+med = lambda rs, f: statistics.median(float(r[f]) for r in rs)
+print("caster culling and cube-face skipping: shadow-pass GPU ms with / without (median of the repeats), one run")
+for scene, setup in sorted({(s, u) for s, u, _ in runs}):
+    on, off = runs.get((scene, setup, "true")), runs.get((scene, setup, "false"))
     if on and off:
-        ratio = float(on["gpu_shadow_ms"]) / max(float(off["gpu_shadow_ms"]), 1e-9)
-        print(f"  {scene}: shadow passes {on['gpu_shadow_ms']} ms with culling and face skipping, {off['gpu_shadow_ms']} ms drawing everything:"
-              f" ratio {ratio:.2f} ({on['shadow_triangles']} vs {off['shadow_triangles']} shadow triangles, {on['culled_casters']} culled casters,"
-              f" {on['cube_faces_skipped']} cube faces skipped)")
+        ratio = med(on, "gpu_shadow_ms") / max(med(off, "gpu_shadow_ms"), 1e-9)
+        print(f"  {scene:7s} {setup:13s}: {med(on, 'gpu_shadow_ms'):.1f} ms vs {med(off, 'gpu_shadow_ms'):.1f} ms, ratio {ratio:.2f};"
+              f" frame {med(on, 'frame_ms'):.1f} vs {med(off, 'frame_ms'):.1f} ms; {on[0]['shadow_triangles']} vs {off[0]['shadow_triangles']}"
+              f" shadow triangles, {on[0]['culled_casters']} culled casters, {on[0]['cube_faces_skipped']} cube faces skipped")
 PY
