@@ -271,6 +271,10 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
   }
   gl::installDebugOutput();
   const gl::Caps& caps = gl::caps();
+  // Software renderers rasterise deferred: time passes synchronously there (see GpuTimers).
+  bool syncTimers = caps.renderer.find("llvmpipe") != std::string::npos || caps.renderer.find("softpipe") != std::string::npos;
+  if (const char* s = std::getenv("SHADOWLAB_SYNC_TIMERS")) syncTimers = std::string(s) == "1";
+  lesson.timers.setSynchronous(syncTimers);
 
   Input input;
   g_input = &input;

@@ -72,7 +72,7 @@ void Ui::header(const HeaderData& d) {
   if (d.passes && !d.passes->empty() && ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingFixedFit)) {
     ImGui::TableSetupColumn("pass");
     ImGui::TableSetupColumn("GPU ms");
-    ImGui::TableSetupColumn("CPU ms");
+    ImGui::TableSetupColumn("CPU ms");  // with synchronous timers: what the pass really cost
     ImGui::TableHeadersRow();
     for (const auto& p : *d.passes) {
       ImGui::TableNextRow();

@@ -41,6 +41,7 @@ void GpuTimers::begin(const std::string& name) {
     // The ring wrapped before the GPU answered: drop that sample rather than stall.
     slot.pending = false;
   }
+  if (sync_) glFinish();  // earlier work must not be billed to this pass
   glQueryCounter(slot.start.id(), GL_TIMESTAMP);
   openCpuStart_ = cpuNowMs();
 }
@@ -51,6 +52,7 @@ void GpuTimers::end() {
   Pass& p = passes_[open_];
   Slot& slot = p.ring[p.next];
   glQueryCounter(slot.stop.id(), GL_TIMESTAMP);
+  if (sync_) glFinish();
   slot.cpuMs = cpuNowMs() - openCpuStart_;
   slot.frame = frame_;
   slot.pending = true;

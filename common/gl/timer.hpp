@@ -30,6 +30,12 @@ class GpuTimers {
   static constexpr int kRing = 6;      // frames in flight before a query pair is reused
   static constexpr int kWindow = 30;   // frames in the average
 
+  // Synchronous: glFinish at both ends of every pass, so a pass's CPU ms is what it really cost.
+  // A software rasteriser (llvmpipe) does its work deferred, at a later flush: its timestamp
+  // queries then report next to nothing for the pass that caused it. The app turns this on for
+  // software renderers (SHADOWLAB_SYNC_TIMERS=0/1 overrides); it costs the overlap between passes.
+  void setSynchronous(bool on) { sync_ = on; }
+  bool synchronous() const { return sync_; }
   // Off: begin/end do nothing (the god view re-renders the lesson; its passes must not be counted).
   void setEnabled(bool on) { enabled_ = on; }
   void begin(const std::string& pass);
@@ -64,6 +70,7 @@ class GpuTimers {
   std::vector<TimingSample> samples_;
   bool keep_ = false;
   bool enabled_ = true;
+  bool sync_ = false;
   int frame_ = 0;
   int open_ = -1;
   double openCpuStart_ = 0;
