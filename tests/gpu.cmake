@@ -61,7 +61,17 @@ if(TARGET lesson_01_lighting)
   add_test(NAME gpu.01_lighting.missing_texture COMMAND lesson_check $<TARGET_FILE:lesson_01_lighting>
            --without textures/checker.png --expect-exit 1 --expect-stderr "textures/checker.png"
            -- --headless --frames 1)
-  set_tests_properties(gpu.01_lighting.missing_shader gpu.01_lighting.missing_texture PROPERTIES LABELS gpu)
+  # A malformed preset file: the error names the file and the line (exit 2), whatever preset is asked for.
+  add_test(NAME gpu.01_lighting.malformed_presets COMMAND lesson_check $<TARGET_FILE:lesson_01_lighting>
+           --write lessons/01_lighting/presets.txt "[ok]\nambient = 0.5\n\n[broken]\nambient 0.5\n"
+           --expect-exit 2 --expect-stderr "lessons/01_lighting/presets.txt:5: expected 'name = value'"
+           -- --headless --frames 1)
+  add_test(NAME gpu.01_lighting.preset_bad_value COMMAND lesson_check $<TARGET_FILE:lesson_01_lighting>
+           --write lessons/01_lighting/presets.txt "[loud]\nambient = 7\n"
+           --expect-exit 2 --expect-stderr "presets.txt:2: in preset 'loud': bad value '7' for ambient (float); valid: [0, 1]"
+           -- --headless --frames 1)
+  set_tests_properties(gpu.01_lighting.missing_shader gpu.01_lighting.missing_texture
+                       gpu.01_lighting.malformed_presets gpu.01_lighting.preset_bad_value PROPERTIES LABELS gpu)
 endif()
 
 # Measurement against ground truth (issue: reference visibility): lesson 01's errors are all leaks.

@@ -5,6 +5,7 @@
 // --root: run with SHADOWLAB_ROOT=DIR (a doctored source tree: a missing shader or texture).
 // --without REL: run against a copy of the source tree (SHADOWLAB_SOURCE_ROOT) with REL removed,
 //   to prove a missing shader or texture is reported by name and never crashes.
+// --write REL TEXT: like --without, but REL is replaced by TEXT (a malformed preset file...).
 // --all-presets: run once per preset (from --list-presets), each with --preset NAME added.
 #include <spawn.h>
 #include <sys/wait.h>
@@ -101,20 +102,24 @@ int main(int argc, char** argv) {
     else if (a == "--png" && i + 1 < argc) png = argv[++i];
     else if (a == "--root" && i + 1 < argc) root = argv[++i];
     else if (a == "--all-presets") allPresets = true;
-    else if (a == "--without" && i + 1 < argc) {
+    else if ((a == "--without" && i + 1 < argc) || (a == "--write" && i + 2 < argc)) {
       // A doctored copy of the data the lessons read: shaders, textures, lesson presets.
       const fs::path copy = fs::temp_directory_path() / ("lesson_check_root_" + std::to_string(getpid()));
-      fs::remove_all(copy);
-      fs::create_directories(copy);
-      for (const char* dir : {"shaders", "textures", "lessons"})
-        fs::copy(fs::path(SHADOWLAB_SOURCE_ROOT) / dir, copy / dir, fs::copy_options::recursive);
-      if (!fs::remove(copy / argv[++i])) {
-        std::cerr << "lesson_check: --without " << argv[i] << ": no such file in the source tree\n";
+      if (root.empty()) {
+        fs::remove_all(copy);
+        fs::create_directories(copy);
+        for (const char* dir : {"shaders", "textures", "lessons"})
+          fs::copy(fs::path(SHADOWLAB_SOURCE_ROOT) / dir, copy / dir, fs::copy_options::recursive);
+      }
+      const fs::path target = copy / argv[++i];
+      if (!fs::exists(target)) {
+        std::cerr << "lesson_check: " << a << " " << argv[i] << ": no such file in the source tree\n";
         return 2;
       }
+      if (a == "--without") fs::remove(target);
+      else std::ofstream(target) << argv[++i];
       root = copy.string();
-    }
-    else {
+    } else {
       std::cerr << "lesson_check: unknown argument '" << a << "'\n";
       return 2;
     }
