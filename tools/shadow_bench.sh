@@ -142,12 +142,16 @@ import statistics
 runs = collections.defaultdict(list)
 for r in csv.DictReader(open(sys.argv[2])): runs[(r["scene"], r["setup"], r["culling"])].append(r)
 med = lambda rs, f: statistics.median(float(r[f]) for r in rs)
-print("caster culling and cube-face skipping: shadow-pass GPU ms with / without (median of the repeats), one run")
+print("caster culling and cube-face skipping: shadow-pass GPU ms with / without, over the repeats, one run")
 for scene, setup in sorted({(s, u) for s, u, _ in runs}):
     on, off = runs.get((scene, setup, "true")), runs.get((scene, setup, "false"))
     if on and off:
-        ratio = med(on, "gpu_shadow_ms") / max(med(off, "gpu_shadow_ms"), 1e-9)
-        print(f"  {scene:7s} {setup:13s}: {med(on, 'gpu_shadow_ms'):.1f} ms vs {med(off, 'gpu_shadow_ms'):.1f} ms, ratio {ratio:.2f};"
+        # The machine is shared: the least disturbed repeat (the minimum) is the best estimate of
+        # each side's cost; the median shows how much the load moved it.
+        lo = lambda rs: min(float(r["gpu_shadow_ms"]) for r in rs)
+        ratio, ratioMed = lo(on) / max(lo(off), 1e-9), med(on, "gpu_shadow_ms") / max(med(off, "gpu_shadow_ms"), 1e-9)
+        print(f"  {scene:7s} {setup:13s}: min {lo(on):.1f} ms vs {lo(off):.1f} ms, ratio {ratio:.2f} (medians {med(on, 'gpu_shadow_ms'):.1f} vs"
+              f" {med(off, 'gpu_shadow_ms'):.1f} ms, ratio {ratioMed:.2f});"
               f" frame {med(on, 'frame_ms'):.1f} vs {med(off, 'frame_ms'):.1f} ms; {on[0]['shadow_triangles']} vs {off[0]['shadow_triangles']}"
               f" shadow triangles, {on[0]['culled_casters']} culled casters, {on[0]['cube_faces_skipped']} cube faces skipped")
 PY
