@@ -99,9 +99,9 @@ class ShadowQualityLesson : public Lesson {
                 "one comparison, GL_LINEAR compare (2x2), N x N taps, or 16 rotated Poisson taps").hotkey = "P";
     r.add("pcf.size", &p_.pcfSize, 1, 9, "N of the N x N kernel (odd)");
     r.add("pcf.radius", &p_.poissonRadius, 0.5f, 8, "Poisson disk radius in texels");
-    r.add("bias.constant", &p_.constantBias, 0, 0.02f, "constant depth bias in the shader");
+    r.add("bias.constant", &p_.constantBias, 0, 0.1f, "constant depth bias in the shader");
     r.add("bias.slope", &p_.slopeBias, 0, 0.02f, "slope-scaled bias in the shader: times tan(theta)");
-    r.add("bias.max", &p_.maxBias, 0, 0.05f, "upper clamp of the in-shader bias");
+    r.add("bias.max", &p_.maxBias, 0, 0.1f, "upper clamp of the in-shader bias");
     r.add("offset.factor", &p_.offsetFactor, 0, 10, "glPolygonOffset factor: slope-scaled, in the depth pass");
     r.add("offset.units", &p_.offsetUnits, 0, 100, "glPolygonOffset units: constant, in depth-format steps");
     r.add("bias.normal_offset", &p_.normalOffset, 0, 4, "look up from a point this many texels along the normal").hotkey = "N";
