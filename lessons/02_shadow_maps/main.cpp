@@ -13,7 +13,6 @@
 // F the depth format, T the depth pass's alpha test, I the map inset, A animates the light, M the
 // ground-truth overlays (error, aliasing), O the god view with the light's frustum; F1 help.
 // Exercises (exercises.hpp): the texture matrix, the depth comparison, a CPU shadow-map lookup.
-#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/lesson.hpp"
@@ -23,6 +22,7 @@
 #include "exercises.hpp"
 #include "gl/mesh_gpu.hpp"
 #include "gl/program.hpp"
+#include "gl/scene_draw.hpp"
 #include "gl/shadow_map.hpp"
 
 using namespace shadowlab;
@@ -261,23 +261,8 @@ class ShadowMapLesson : public Lesson {
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_2D, map_.texture.id());
     glBindSampler(2, rawDepth_.id());
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      const SceneObject& o = scene_.objects[i];
-      const Material& m = scene_.materials[o.material];
-      const GLuint tex = gpu_.materialTextures[o.material].id();
-      sceneProgram_.set("uModel", o.model);
-      sceneProgram_.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(o.model)));
-      sceneProgram_.set("uAlbedo", m.albedo);
-      sceneProgram_.set("uSpecular", m.specular);
-      sceneProgram_.set("uShininess", m.shininess);
-      sceneProgram_.set("uTwoSided", m.twoSided);
-      sceneProgram_.set("uUseTexture", tex != 0);
-      sceneProgram_.set("uAlphaCutoff", m.alphaCutoff);
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, tex);
-      m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
-      const gl::GpuMesh& mesh = gpu_.meshes[o.mesh];
-      glBindVertexArray(mesh.vao.id());
+    gl::SceneDrawOptions draw;
+    draw.beforeDraw = [this](std::size_t i) {  // compare=cpu_vertex: V per vertex at attribute 3
       if (p_.compare == Compare::CpuVertex && i < cpuVisibility_.size()) {
         glBindBuffer(GL_ARRAY_BUFFER, cpuVisibility_[i].id());
         glEnableVertexAttribArray(3);
@@ -286,9 +271,8 @@ class ShadowMapLesson : public Lesson {
         glDisableVertexAttribArray(3);
         glVertexAttrib1f(3, 1.0f);
       }
-      mesh.draw();
-      glDisableVertexAttribArray(3);
-    }
+    };
+    gl::drawScene(sceneProgram_, scene_, gpu_, draw);
     glBindSampler(1, 0);
     glBindSampler(2, 0);
     glActiveTexture(GL_TEXTURE0);

@@ -14,7 +14,6 @@
 // lights, V the view, M the ground-truth overlays, O the god view; F1 help.
 // Exercises (exercises.hpp): slope-scaled bias, PCF weights, cube face selection, the caster
 // culling test, the orthographic fit.
-#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/lesson.hpp"
@@ -23,6 +22,7 @@
 #include "exercises.hpp"
 #include "gl/mesh_gpu.hpp"
 #include "gl/program.hpp"
+#include "gl/scene_draw.hpp"
 #include "gl/shadow_map.hpp"
 
 using namespace shadowlab;
@@ -372,23 +372,7 @@ class ShadowQualityLesson : public Lesson {
       glBindTexture(maps[u].first, maps[u].second);
       glBindSampler(GLuint(1 + u), sampler);
     }
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      const SceneObject& o = scene_.objects[i];
-      const Material& m = scene_.materials[o.material];
-      const GLuint tex = gpu_.materialTextures[o.material].id();
-      s.set("uModel", o.model);
-      s.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(o.model)));
-      s.set("uAlbedo", m.albedo);
-      s.set("uSpecular", m.specular);
-      s.set("uShininess", m.shininess);
-      s.set("uTwoSided", m.twoSided);
-      s.set("uUseTexture", tex != 0);
-      s.set("uAlphaCutoff", m.alphaCutoff);
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, tex);
-      m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
-      gpu_.meshes[o.mesh].draw();
-    }
+    gl::drawScene(s, scene_, gpu_);
     for (int u = 1; u <= 3; ++u) glBindSampler(GLuint(u), 0);
     glActiveTexture(GL_TEXTURE0);
   }
