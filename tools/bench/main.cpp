@@ -3,7 +3,7 @@
 // HTML page with a run-time-against-error scatter per scene (Pareto front marked), tables and
 // thumbnails of the image and its error heatmap.
 //
-//   shadowlab_bench build/default/bin/lesson_03_shadow_quality --out out/bench/l03 \
+//   shadowlab_bench build/default/bin/lesson_03_shadow_quality --out out/bench/l03
 //       --config "pcf 3x3: filter=pcf3 map_size=2048" --preset acne --scenes city,forest \
 //       --path paths/city.path --path-samples 4 --repeat 3 --size 1280x720 --frames 8
 //
