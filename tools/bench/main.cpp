@@ -4,7 +4,7 @@
 // thumbnails of the image and its error heatmap.
 //
 //   shadowlab_bench build/default/bin/lesson_03_shadow_quality --out out/bench/l03
-//       --config "pcf 3x3: filter=pcf3 map_size=2048" --preset acne --scenes city,forest \
+//       --config "pcf 3x3: filter=pcf_nxn map_size=2048" --preset acne --scenes city,forest
 //       --path paths/city.path --path-samples 4 --repeat 3 --size 1280x720 --frames 8
 //
 // Each configuration is a label and `--set` assignments ("label: name=value name=value"), or a
