@@ -174,6 +174,7 @@ class ShadowMapLesson : public Lesson {
       shadowTriangles_ = triangles;
     }
     counters = {{"shadow triangles", std::to_string(shadowTriangles_)},
+                {"shadow texels", std::to_string(std::uint64_t(map_.size) * std::uint64_t(map_.size))},
                 {"culled casters", "0"},
                 {"shadow map", std::to_string(map_.size) + "^2 " + gl::depthFormatName(map_.format)},
                 {"comparison", p_.compare == Compare::Hardware ? "sampler2DShadow" : p_.compare == Compare::Manual ? "in the shader"

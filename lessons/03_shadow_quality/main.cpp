@@ -242,7 +242,12 @@ class ShadowQualityLesson : public Lesson {
       glViewport(0, 0, f.width, f.height);
       stats_ = {triangles, culled, skipped};
     }
+    // Texels drawn into this frame: the sun's and spot's maps, and the cube faces not skipped.
+    const std::uint64_t mapSide = std::stoull(kSizes[std::size_t(p_.mapSize)]), cubeSide = std::stoull(kSizes[std::size_t(p_.cubeSize)]);
+    const std::uint64_t texels = std::uint64_t(p_.lights[kSun].enabled + spot.enabled) * mapSide * mapSide +
+                                 (p_.lights[kPoint].enabled ? std::uint64_t(6 - stats_.skipped) * cubeSide * cubeSide : 0);
     counters = {{"shadow triangles", std::to_string(stats_.triangles)},
+                {"shadow texels", std::to_string(texels)},
                 {"culled casters", std::to_string(stats_.culled)},
                 {"cube faces skipped", std::to_string(stats_.skipped)},
                 {"sun texel", std::to_string(fit.texelWorld * 100.0f).substr(0, 5) + " cm"}};
