@@ -34,6 +34,14 @@ foreach(lesson IN LISTS SHADOWLAB_LESSONS)
            -- --headless --frames 2 --size 640x360 --set ab.enabled=true --show-ui --screenshot ${shots}/${name}_ab.png)
   set_tests_properties(gpu.${name}.headless gpu.${name}.presets gpu.${name}.ui gpu.${name}.bench
                        gpu.${name}.god_view gpu.${name}.ab_split PROPERTIES LABELS gpu)
+  # Same pictures as before a refactor: every preset against the images recorded in
+  # tests/data/golden/NAME (SHADOWLAB_RECORD_GOLDEN=1 ctest -R golden records them anew).
+  if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/${name})
+    add_test(NAME gpu.${name}.golden COMMAND lesson_check ${bin} --all-presets --png ${shots}/${name}_golden.png
+             --golden ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/${name}
+             -- --headless --frames 2 --size 320x180 --screenshot ${shots}/${name}_golden.png)
+    set_tests_properties(gpu.${name}.golden PROPERTIES LABELS gpu)
+  endif()
   # Bad input: one-line errors naming the value and the choices (exit 2), missing files named (exit 1).
   add_test(NAME cli.${name}.unknown_flag COMMAND lesson_check ${bin} --expect-exit 2
            --expect-stderr "unknown flag '--frobnicate'; valid: --headless" -- --frobnicate)

@@ -7,6 +7,10 @@
 //   to prove a missing shader or texture is reported by name and never crashes.
 // --write REL TEXT: like --without, but REL is replaced by TEXT (a malformed preset file...).
 // --all-presets: run once per preset (from --list-presets), each with --preset NAME added.
+// --golden DIR: the --png of each run (with --all-presets: of each preset) must match DIR/NAME.png
+//   (NAME: the preset, or "default") within the stated tolerance: at most 0.2 % of the pixels
+//   with a channel more than 2 levels off, and an RMSE of at most 1 level. The worst difference
+//   is printed. SHADOWLAB_RECORD_GOLDEN=1 writes DIR/NAME.png instead (record before a refactor).
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -67,6 +71,35 @@ Result run(const std::vector<std::string>& args, const std::string& root) {
   return r;
 }
 
+// Same image as before, within a tiny tolerance (see --golden above).
+bool checkGolden(const std::string& png, const fs::path& golden) {
+  try {
+    const shadowlab::Image8 now = shadowlab::loadImage(png, 3);  // RGB: alpha is always opaque
+    if (const char* rec = std::getenv("SHADOWLAB_RECORD_GOLDEN"); rec && std::string(rec) == "1") {
+      fs::create_directories(golden.parent_path());
+      shadowlab::savePng(golden.string(), now);
+      std::cout << "recorded: " << golden.string() << '\n';
+      return true;
+    }
+    const shadowlab::Image8 before = shadowlab::loadImage(golden.string(), 3);
+    const shadowlab::ImageDiff d = shadowlab::compareImages(now, before, 2);
+    const double share = 100.0 * double(d.differingPixels) / double(std::size_t(now.width) * now.height);
+    const bool ok = share <= 0.2 && d.rmse <= 1.0;
+    std::cout << (ok ? "ok: " : "FAIL: ") << png << " against " << golden.string() << ": worst channel difference "
+              << d.maxAbs << ", " << d.differingPixels << " pixels (" << share << " %) off by more than 2, RMSE " << d.rmse
+              << '\n';
+    if (!ok) {
+      const std::string diff = png.substr(0, png.size() - 4) + "_golden_diff.png";
+      shadowlab::savePng(diff, shadowlab::diffImage(now, before, 8.0f));
+      std::cerr << "FAIL: " << png << " differs from " << golden.string() << " (difference x8: " << diff << ")\n";
+    }
+    return ok;
+  } catch (const std::exception& e) {
+    std::cerr << "FAIL: golden image: " << e.what() << '\n';
+    return false;
+  }
+}
+
 bool checkPng(const std::string& path) {
   try {
     const shadowlab::Image8 img = shadowlab::loadImage(path, 4);
@@ -85,12 +118,12 @@ bool checkPng(const std::string& path) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::cerr << "usage: lesson_check LESSON [--expect-exit N] [--expect-stderr TEXT] [--png FILE] [--root DIR] [--all-presets] -- ARGS\n";
+    std::cerr << "usage: lesson_check LESSON [--expect-exit N] [--expect-stderr TEXT] [--png FILE] [--golden DIR] [--root DIR] [--all-presets] -- ARGS\n";
     return 2;
   }
   const std::string lesson = argv[1];
   int expectExit = 0;
-  std::string expectStderr, png, root;
+  std::string expectStderr, png, root, golden;
   bool allPresets = false;
   std::vector<std::string> extra;
   for (int i = 2; i < argc; ++i) {
@@ -100,6 +133,7 @@ int main(int argc, char** argv) {
     } else if (a == "--expect-exit" && i + 1 < argc) expectExit = std::atoi(argv[++i]);
     else if (a == "--expect-stderr" && i + 1 < argc) expectStderr = argv[++i];
     else if (a == "--png" && i + 1 < argc) png = argv[++i];
+    else if (a == "--golden" && i + 1 < argc) golden = argv[++i];
     else if (a == "--root" && i + 1 < argc) root = argv[++i];
     else if (a == "--all-presets") allPresets = true;
     else if ((a == "--without" && i + 1 < argc) || (a == "--write" && i + 2 < argc)) {
@@ -159,6 +193,8 @@ int main(int argc, char** argv) {
       continue;
     }
     if (!png.empty() && !checkPng(png)) ++failures;
+    else if (!png.empty() && !golden.empty() && !checkGolden(png, fs::path(golden) / ((preset.empty() ? "default" : preset) + ".png")))
+      ++failures;
     std::cout << "ok: " << what << " exit " << r.exit << (r.err.empty() ? "" : ", stderr: " + r.err) << '\n';
   }
   if (root.find("lesson_check_root_") != std::string::npos) fs::remove_all(root);
