@@ -51,8 +51,9 @@ int main(int argc, char** argv) {
     }
     std::nth_element(us.begin(), us.begin() + us.size() / 2, us.end());
     const double med = us[us.size() / 2];
-    const char* status = fitter.result().status == FitStatus::Ok ? "ok"
-                         : fitter.result().status == FitStatus::ConeTooWide ? "cone-too-wide" : "no-receivers";
+    const char* status = fitter.result().status == FitStatus::Ok            ? "ok"
+                         : fitter.result().status == FitStatus::ConeTooWide ? "cone-too-wide"
+                                                                            : "no-receivers";
     std::printf("%-10d %12.2f %14.1f %12zu   %s\n", n, med, med * 1000.0 / n, fitter.worldKeyPoints().size(), status);
     csv << n << ',' << med << ',' << med * 1000.0 / n << ',' << fitter.worldKeyPoints().size() << ',' << status << '\n';
   }

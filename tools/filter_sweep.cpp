@@ -51,9 +51,10 @@ struct Result {
 };
 
 [[noreturn]] void usage(const std::string& error) {
-  std::cerr << "filter_sweep: " << error << "\n"
-            << "usage: filter_sweep --lesson PATH --out DIR [--size WxH] [--frames N] [--supersample S] [--modes a,b,...]\n"
-            << "modes:";
+  std::cerr
+      << "filter_sweep: " << error << "\n"
+      << "usage: filter_sweep --lesson PATH --out DIR [--size WxH] [--frames N] [--supersample S] [--modes a,b,...]\n"
+      << "modes:";
   for (const Mode& m : allModes()) std::cerr << ' ' << m.name;
   std::cerr << '\n';
   std::exit(2);
@@ -93,7 +94,8 @@ double sceneGpuMs(const std::string& csv) {
   return n ? sum / n : NAN;
 }
 
-Result run(const std::string& lesson, const Mode& m, const std::string& out, const std::string& size, int frames, int ss) {
+Result run(const std::string& lesson, const Mode& m, const std::string& out, const std::string& size, int frames,
+           int ss) {
   Result r{m};
   const std::string bench = out + "/bench_" + m.name + ".csv";
   const std::string cmd = "'" + lesson + "' --headless --size " + size + " --frames " + std::to_string(frames) +
@@ -106,7 +108,8 @@ Result run(const std::string& lesson, const Mode& m, const std::string& out, con
   while (std::fgets(line, sizeof line, p)) {
     int frame;
     double rmse, flicker, refFlicker;
-    if (std::sscanf(line, "measure frame=%d rmse=%lf flicker=%lf ref_flicker=%lf", &frame, &rmse, &flicker, &refFlicker) == 4) {
+    if (std::sscanf(line, "measure frame=%d rmse=%lf flicker=%lf ref_flicker=%lf", &frame, &rmse, &flicker,
+                    &refFlicker) == 4) {
       r.rmse += rmse;
       ++r.frames;
       if (flicker >= 0) {
@@ -118,7 +121,8 @@ Result run(const std::string& lesson, const Mode& m, const std::string& out, con
   }
   const int status = pclose(p);
   if (status != 0 || r.frames == 0)
-    throw std::runtime_error("mode " + m.name + ": the lesson failed (status " + std::to_string(status) + ") or printed no measurements:\n  " + cmd);
+    throw std::runtime_error("mode " + m.name + ": the lesson failed (status " + std::to_string(status) +
+                             ") or printed no measurements:\n  " + cmd);
   r.rmse /= r.frames;
   if (flickerFrames) {
     r.flicker /= flickerFrames;
@@ -140,15 +144,20 @@ std::string svg(const std::vector<Result>& rs) {
   auto X = [&](double v) { return L + (W - L - R) * v / xmax; };
   auto Y = [&](double v) { return H - B - (H - T - B) * v / ymax; };
   std::ostringstream s;
-  s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H << "' font-family='sans-serif' font-size='11'>\n";
+  s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H
+    << "' font-family='sans-serif' font-size='11'>\n";
   s << "<line x1='" << L << "' y1='" << H - B << "' x2='" << W - R << "' y2='" << H - B << "' stroke='black'/>\n";
   s << "<line x1='" << L << "' y1='" << T << "' x2='" << L << "' y2='" << H - B << "' stroke='black'/>\n";
   for (int i = 0; i <= 4; ++i) {
-    s << "<text x='" << X(xmax * i / 4) << "' y='" << H - B + 15 << "' text-anchor='middle'>" << fmt(xmax * i / 4, 2) << "</text>\n";
-    s << "<text x='" << L - 6 << "' y='" << Y(ymax * i / 4) + 4 << "' text-anchor='end'>" << fmt(ymax * i / 4, 1) << "</text>\n";
+    s << "<text x='" << X(xmax * i / 4) << "' y='" << H - B + 15 << "' text-anchor='middle'>" << fmt(xmax * i / 4, 2)
+      << "</text>\n";
+    s << "<text x='" << L - 6 << "' y='" << Y(ymax * i / 4) + 4 << "' text-anchor='end'>" << fmt(ymax * i / 4, 1)
+      << "</text>\n";
   }
-  s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 12 << "' text-anchor='middle'>GPU ms, scene pass (mean)</text>\n";
-  s << "<text transform='translate(16," << (T + H - B) / 2 << ") rotate(-90)' text-anchor='middle'>RMSE vs supersampled reference (0-255)</text>\n";
+  s << "<text x='" << (L + W - R) / 2 << "' y='" << H - 12
+    << "' text-anchor='middle'>GPU ms, scene pass (mean)</text>\n";
+  s << "<text transform='translate(16," << (T + H - B) / 2
+    << ") rotate(-90)' text-anchor='middle'>RMSE vs supersampled reference (0-255)</text>\n";
   // The curve: modes ordered by time.
   std::vector<const Result*> sorted;
   for (const Result& r : rs)
@@ -185,9 +194,7 @@ int main(int argc, char** argv) {
       else if (a == "--modes") modeList = value();
       else if (a == "--help" || a == "-h") usage("help");
       else usage("unknown flag '" + a + "'");
-    } catch (const std::invalid_argument&) {
-      usage("'" + a + "' needs an integer");
-    }
+    } catch (const std::invalid_argument&) { usage("'" + a + "' needs an integer"); }
   }
   if (lesson.empty() || out.empty()) usage("--lesson and --out are required");
   if (!std::filesystem::exists(lesson)) usage("no lesson program at '" + lesson + "'");
@@ -224,20 +231,27 @@ int main(int argc, char** argv) {
   std::ofstream csv(out + "/filter_sweep.csv");
   csv << "mode,settings,gpu_ms,gpu_ms_vs_trilinear,rmse,flicker,reference_flicker,frames\n";
   for (const Result& r : results)
-    csv << r.mode.name << ",\"" << r.mode.sets << "\"," << fmt(r.gpuMs, 4) << ',' << fmt(r.gpuMs / trilinearMs, 3) << ','
-        << fmt(r.rmse, 4) << ',' << fmt(r.flicker, 4) << ',' << fmt(r.refFlicker, 4) << ',' << r.frames << '\n';
+    csv << r.mode.name << ",\"" << r.mode.sets << "\"," << fmt(r.gpuMs, 4) << ',' << fmt(r.gpuMs / trilinearMs, 3)
+        << ',' << fmt(r.rmse, 4) << ',' << fmt(r.flicker, 4) << ',' << fmt(r.refFlicker, 4) << ',' << r.frames << '\n';
   std::ofstream html(out + "/filter_sweep.html");
   html << "<!doctype html><html><head><meta charset='utf-8'><title>Lesson 06 filter sweep</title>"
        << "<style>body{font-family:sans-serif;margin:2em}td,th{padding:2px 10px;text-align:right}"
        << "td:first-child,th:first-child{text-align:left}</style></head><body>\n"
        << "<h1>Lesson 06: texture filter modes, GPU time against aliasing error</h1>\n"
-       << "<p>" << size << " pixels, " << frames << " frames of a sideways camera move over the fine checker; error against the same frame rendered at "
-       << ss << "x" << ss << " the pixels with trilinear + 16x anisotropic filtering and box-filtered down. Flicker: mean absolute frame-to-frame change "
-       << "(the reference's own is the motion that should be there). Times come from GL timer queries on a shared machine: compare them as ratios within this run.</p>\n"
-       << svg(results) << "<table><tr><th>mode</th><th>GPU ms</th><th>x trilinear</th><th>RMSE</th><th>flicker</th><th>reference flicker</th></tr>\n";
+       << "<p>" << size << " pixels, " << frames
+       << " frames of a sideways camera move over the fine checker; error against the same frame rendered at " << ss
+       << "x" << ss
+       << " the pixels with trilinear + 16x anisotropic filtering and box-filtered down. Flicker: mean absolute "
+          "frame-to-frame change "
+       << "(the reference's own is the motion that should be there). Times come from GL timer queries on a shared "
+          "machine: compare them as ratios within this run.</p>\n"
+       << svg(results)
+       << "<table><tr><th>mode</th><th>GPU ms</th><th>x trilinear</th><th>RMSE</th><th>flicker</th><th>reference "
+          "flicker</th></tr>\n";
   for (const Result& r : results)
-    html << "<tr><td>" << r.mode.name << "</td><td>" << fmt(r.gpuMs) << "</td><td>" << fmt(r.gpuMs / trilinearMs, 2) << "</td><td>"
-         << fmt(r.rmse) << "</td><td>" << fmt(r.flicker) << "</td><td>" << fmt(r.refFlicker) << "</td></tr>\n";
+    html << "<tr><td>" << r.mode.name << "</td><td>" << fmt(r.gpuMs) << "</td><td>" << fmt(r.gpuMs / trilinearMs, 2)
+         << "</td><td>" << fmt(r.rmse) << "</td><td>" << fmt(r.flicker) << "</td><td>" << fmt(r.refFlicker)
+         << "</td></tr>\n";
   html << "</table></body></html>\n";
   std::cerr << "filter_sweep: wrote " << out << "/filter_sweep.csv and filter_sweep.html\n";
   return 0;

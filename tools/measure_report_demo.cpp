@@ -102,7 +102,12 @@ int main(int argc, char** argv) {
     ImageF reference = truth.hardVisibility(view, light);
     savePng(outDir + "/thumbs/reference.png", greyscale(reference));
 
-    struct Variant { const char* technique; const char* parameters; int dx, dy; double shadowMs; };
+    struct Variant {
+      const char* technique;
+      const char* parameters;
+      int dx, dy;
+      double shadowMs;
+    };
     const Variant variants[] = {{"shadow map", "map=512", 2, 1, 0.4},
                                 {"shadow map", "map=1024", 1, 0, 0.7},
                                 {"shadow map", "map=2048", 1, 1, 1.6},

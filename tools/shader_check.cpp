@@ -95,8 +95,9 @@ bool checkShader(const std::string& path, const std::vector<std::string>& includ
     const ShaderSource source = loadShaderSource(path, includeDirs);
 
     // The pid and a serial keep parallel ctest runs from overwriting each other's temporaries.
-    const fs::path temporary = fs::temp_directory_path() / ("shader_check-" + std::to_string(getpid()) + "-" +
-                                                            std::to_string(serial) + std::string(stageExtension(stage)));
+    const fs::path temporary =
+        fs::temp_directory_path() / ("shader_check-" + std::to_string(getpid()) + "-" + std::to_string(serial) +
+                                     std::string(stageExtension(stage)));
     {
       std::ofstream out(temporary, std::ios::binary);
       out << source.text;

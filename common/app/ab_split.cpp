@@ -64,7 +64,8 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
   glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.fbo.id());
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, frame.framebuffer);
-  glBlitFramebuffer(x0, 0, frame.width, frame.height, x0, 0, frame.width, frame.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBlitFramebuffer(x0, 0, frame.width, frame.height, x0, 0, frame.width, frame.height, GL_COLOR_BUFFER_BIT,
+                    GL_NEAREST);
   // The divider itself.
   glEnable(GL_SCISSOR_TEST);
   glScissor(x0 - 1, 0, 2, frame.height);

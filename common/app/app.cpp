@@ -38,7 +38,10 @@ std::string jsonEscape(const std::string& s) {
   std::string out;
   for (char c : s) {
     if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') { out += "\\n"; continue; }
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
     out += c;
   }
   return out;
@@ -140,25 +143,28 @@ struct BenchLog {
 void writeMeasurement(const std::string& path, const LessonInfo& info, const MeasureResult& r,
                       const std::vector<Counter>& counters, const gl::GpuTimers& timers) {
   if (!r.valid) throw std::runtime_error("--measure: nothing was measured (does the lesson describe its scene?)");
-  const std::string stem = path.size() > 5 && path.substr(path.size() - 5) == ".json" ? path.substr(0, path.size() - 5) : path;
+  const std::string stem =
+      path.size() > 5 && path.substr(path.size() - 5) == ".json" ? path.substr(0, path.size() - 5) : path;
   const std::filesystem::path p(path);
   if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
   std::ofstream out(path);
   if (!out) throw std::runtime_error("--measure: cannot write " + path);
   out << "{\n  \"lesson\": \"" << info.name << "\",\n  \"width\": " << r.width << ", \"height\": " << r.height << ",\n";
   if (r.soft) {
-    out << "  \"soft\": {\"pixels\": " << r.soft_.pixels << ", \"rmse\": " << r.soft_.rmse << ", \"max_abs\": " << r.soft_.maxAbs << "},\n";
+    out << "  \"soft\": {\"pixels\": " << r.soft_.pixels << ", \"rmse\": " << r.soft_.rmse
+        << ", \"max_abs\": " << r.soft_.maxAbs << "},\n";
   } else {
     const auto& h = r.hard;
     out << "  \"hard\": {\"facing_pixels\": " << h.facingPixels << ", \"misclassified\": " << h.misclassified
-        << ", \"leaks\": " << h.leaks << ", \"false_shadows\": " << h.falseShadows << ", \"edge_pixels\": " << h.edgePixels
-        << ", \"misclassified_pct\": " << h.misclassifiedPct << ", \"leak_pct\": " << h.leakPct
-        << ", \"false_shadow_pct\": " << h.falseShadowPct << ", \"edge_tolerant_pct\": " << h.edgeTolerantPct << "},\n";
+        << ", \"leaks\": " << h.leaks << ", \"false_shadows\": " << h.falseShadows
+        << ", \"edge_pixels\": " << h.edgePixels << ", \"misclassified_pct\": " << h.misclassifiedPct
+        << ", \"leak_pct\": " << h.leakPct << ", \"false_shadow_pct\": " << h.falseShadowPct
+        << ", \"edge_tolerant_pct\": " << h.edgeTolerantPct << "},\n";
   }
   if (r.hasAliasing) {
     const auto& a = r.aliasing;
-    out << "  \"aliasing\": {\"pixels\": " << a.pixels << ", \"mean\": " << a.mean << ", \"rms\": " << a.rms << ", \"p95\": "
-        << a.p95 << ", \"max\": " << a.max << ", \"share_above_1\": " << a.shareAbove1 << "},\n";
+    out << "  \"aliasing\": {\"pixels\": " << a.pixels << ", \"mean\": " << a.mean << ", \"rms\": " << a.rms
+        << ", \"p95\": " << a.p95 << ", \"max\": " << a.max << ", \"share_above_1\": " << a.shareAbove1 << "},\n";
   }
   out << "  \"ground_truth_ms\": " << r.groundTruthMs << ",\n  \"gpu_ms\": {";
   bool first = true;
@@ -225,7 +231,7 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
   AbSplit ab;
   try {
     cl = parseCommandLine(argc, argv);
-    lesson.declare(params);  // may set the camera's starting pose...
+    lesson.declare(params);                // may set the camera's starting pose...
     declareCamera(params, lesson.camera);  // ...which then is the camera's default
     godView.declare(params);
     if (info.measurable) measurement.declare(params);
@@ -272,7 +278,8 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
   gl::installDebugOutput();
   const gl::Caps& caps = gl::caps();
   // Software renderers rasterise deferred: time passes synchronously there (see GpuTimers).
-  bool syncTimers = caps.renderer.find("llvmpipe") != std::string::npos || caps.renderer.find("softpipe") != std::string::npos;
+  bool syncTimers =
+      caps.renderer.find("llvmpipe") != std::string::npos || caps.renderer.find("softpipe") != std::string::npos;
   if (const char* s = std::getenv("SHADOWLAB_SYNC_TIMERS")) syncTimers = std::string(s) == "1";
   lesson.timers.setSynchronous(syncTimers);
 
@@ -295,9 +302,7 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
     try {
       lesson.init();
       initError.clear();
-    } catch (const std::exception& e) {
-      initError = e.what();
-    }
+    } catch (const std::exception& e) { initError = e.what(); }
   };
   tryInit();
   if (cl.headless) {
@@ -318,7 +323,8 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
       char* end = nullptr;
       replayAt = std::strtod(file.c_str() + at + 1, &end);
       if (end == file.c_str() + at + 1 || *end != '\0' || !(replayAt >= 0)) {
-        std::cerr << info.name << ": --replay " << cl.replay << ": '" << file.substr(at + 1) << "' is not a time >= 0\n";
+        std::cerr << info.name << ": --replay " << cl.replay << ": '" << file.substr(at + 1)
+                  << "' is not a time >= 0\n";
         return 2;
       }
       file = file.substr(0, at);
@@ -420,7 +426,7 @@ int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, ch
     if (lastFrame && !cl.measure.empty()) measurement.requestFullResolution();
     if (!replay.empty()) {
       const double t0 = replay.keys().front().time;
-      const double t = replayAt >= 0 ? t0 + replayAt
+      const double t = replayAt >= 0   ? t0 + replayAt
                        : cl.frames > 1 ? t0 + replay.duration() * double(frame) / double(cl.frames - 1)
                                        : t0 + time;
       const measure::PathKey key = replay.sample(t);

@@ -28,18 +28,34 @@ class EglContext final : public Context {
     if (!eglInitialize(display_, &major, &minor))
       throw std::runtime_error("EGL: eglInitialize failed (" + eglErrorText() + ")");
     if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("EGL: desktop OpenGL is not available");
-    const EGLint configAttribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                    EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_NONE};
+    const EGLint configAttribs[] = {EGL_SURFACE_TYPE,
+                                    EGL_PBUFFER_BIT,
+                                    EGL_RENDERABLE_TYPE,
+                                    EGL_OPENGL_BIT,
+                                    EGL_RED_SIZE,
+                                    8,
+                                    EGL_GREEN_SIZE,
+                                    8,
+                                    EGL_BLUE_SIZE,
+                                    8,
+                                    EGL_NONE};
     EGLConfig config = nullptr;
     EGLint count = 0;
     // Surfaceless contexts need no config on Mesa, but asking for one keeps drivers that require it happy.
     if (!eglChooseConfig(display_, configAttribs, &config, 1, &count) || count == 0) config = EGL_NO_CONFIG_KHR;
-    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 1,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                     EGL_CONTEXT_OPENGL_DEBUG, o.debug ? EGL_TRUE : EGL_FALSE, EGL_NONE};
+    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                     4,
+                                     EGL_CONTEXT_MINOR_VERSION,
+                                     1,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                     EGL_CONTEXT_OPENGL_DEBUG,
+                                     o.debug ? EGL_TRUE : EGL_FALSE,
+                                     EGL_NONE};
     context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttribs);
     if (context_ == EGL_NO_CONTEXT)
-      throw std::runtime_error("EGL: no OpenGL 4.1 core context (" + eglErrorText() + "); the course needs 4.1 or newer");
+      throw std::runtime_error("EGL: no OpenGL 4.1 core context (" + eglErrorText() +
+                               "); the course needs 4.1 or newer");
     if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
       throw std::runtime_error("EGL: eglMakeCurrent without a surface failed (" + eglErrorText() + ")");
     gl::resetCaps();

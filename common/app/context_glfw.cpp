@@ -39,8 +39,16 @@ class GlfwContext final : public Context {
   }
 
   unsigned framebuffer() const override { return 0; }
-  int width() const override { int w, h; glfwGetFramebufferSize(window_, &w, &h); return w; }
-  int height() const override { int w, h; glfwGetFramebufferSize(window_, &w, &h); return h; }
+  int width() const override {
+    int w, h;
+    glfwGetFramebufferSize(window_, &w, &h);
+    return w;
+  }
+  int height() const override {
+    int w, h;
+    glfwGetFramebufferSize(window_, &w, &h);
+    return h;
+  }
   bool headless() const override { return false; }
   bool shouldClose() const override { return glfwWindowShouldClose(window_); }
   void pollEvents() override { glfwPollEvents(); }

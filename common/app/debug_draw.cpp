@@ -4,7 +4,9 @@
 
 namespace shadowlab {
 
-void DebugDraw::line(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color) { lines_.push_back({a, b, color}); }
+void DebugDraw::line(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color) {
+  lines_.push_back({a, b, color});
+}
 
 void DebugDraw::frustum(const glm::mat4& viewProj, const glm::vec4& color) {
   const glm::mat4 inv = glm::inverse(viewProj);

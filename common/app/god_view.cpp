@@ -7,7 +7,8 @@
 namespace shadowlab {
 
 void GodView::declare(ParamRegistry& r) {
-  r.add("view.god", &enabled_, "a second camera outside the scene: the view frustum, light frusta and cones, bounds").hotkey = "O";
+  r.add("view.god", &enabled_, "a second camera outside the scene: the view frustum, light frusta and cones, bounds")
+      .hotkey = "O";
   r.add("view.god_size", &size_, 0.2f, 1.0f, "the god view inset's width, as a fraction of the frame");
   r.add("view.god_distance", &distance_, 1.0f, 10.0f, "how far out the god camera stands, in viewer distances");
   r.add("view.god_yaw", &yaw_, -3.2f, 3.2f, "the god camera's angle around the scene, relative to the viewer");

@@ -22,12 +22,12 @@
 namespace shadowlab {
 
 struct LessonInfo {
-  std::string number;   // "01"
-  std::string name;     // "01_lighting": folder under lessons/ and shaders/
-  std::string title;    // "Lighting"
-  std::string summary;  // one line for the launcher
-  int difficulty = 1;   // 1 (intro) to 5
-  std::string help;     // F1 overlay: controls and what to try (several lines)
+  std::string number;       // "01"
+  std::string name;         // "01_lighting": folder under lessons/ and shaders/
+  std::string title;        // "Lighting"
+  std::string summary;      // one line for the launcher
+  int difficulty = 1;       // 1 (intro) to 5
+  std::string help;         // F1 overlay: controls and what to try (several lines)
   bool measurable = false;  // computes V_i: gets the ground-truth overlay and --measure (measureSource())
 };
 

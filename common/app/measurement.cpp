@@ -47,8 +47,8 @@ ImageF subsample(const ImageF& in, int factor) {
   for (int y = 0; y < out.height; ++y)
     for (int x = 0; x < out.width; ++x)
       for (int c = 0; c < in.channels; ++c)
-        out.at(x, y, c) = in.at(std::min(x * factor + factor / 2, in.width - 1),
-                                std::min(y * factor + factor / 2, in.height - 1), c);
+        out.at(x, y, c) =
+            in.at(std::min(x * factor + factor / 2, in.width - 1), std::min(y * factor + factor / 2, in.height - 1), c);
   return out;
 }
 
@@ -186,8 +186,8 @@ void Measurement::compute(const MeasureSource& source) {
   result_.width = surface.width;
   result_.height = surface.height;
   result_.soft = light.area != AreaShape::None;
-  const ImageF reference = result_.soft ? truth_->softVisibility(surface, light, samples_, 1)
-                                        : truth_->hardVisibility(surface, light);
+  const ImageF reference =
+      result_.soft ? truth_->softVisibility(surface, light, samples_, 1) : truth_->hardVisibility(surface, light);
   result_.groundTruthMs = truth_->lastQueryMs();
   if (result_.soft) {
     result_.soft_ = measure::compareSoft(technique, reference);
@@ -226,7 +226,7 @@ void Measurement::compute(const MeasureSource& source) {
   }
   result_.valid = true;
 
-  const Image8* shown = overlay_ == Overlay::Aliasing ? (anyJ ? &result_.aliasingHeatmap : nullptr)
+  const Image8* shown = overlay_ == Overlay::Aliasing    ? (anyJ ? &result_.aliasingHeatmap : nullptr)
                         : overlay_ == Overlay::Reference ? &result_.referenceImage
                                                          : &result_.errorHeatmap;
   if (shown) overlayTexture_ = gl::uploadTexture(*shown, "measurement overlay", false);
@@ -269,18 +269,21 @@ std::vector<std::pair<std::string, std::string>> Measurement::summary() const {
   }
   char buf[160];
   if (result_.soft) {
-    std::snprintf(buf, sizeof buf, "RMSE %.4f, max %.3f (%zu px)", result_.soft_.rmse, result_.soft_.maxAbs, result_.soft_.pixels);
+    std::snprintf(buf, sizeof buf, "RMSE %.4f, max %.3f (%zu px)", result_.soft_.rmse, result_.soft_.maxAbs,
+                  result_.soft_.pixels);
     out.push_back({"soft error", buf});
   } else {
     const auto& h = result_.hard;
-    std::snprintf(buf, sizeof buf, "%.2f%% (leaks %.2f%%, false shadows %.2f%%)", h.misclassifiedPct, h.leakPct, h.falseShadowPct);
+    std::snprintf(buf, sizeof buf, "%.2f%% (leaks %.2f%%, false shadows %.2f%%)", h.misclassifiedPct, h.leakPct,
+                  h.falseShadowPct);
     out.push_back({"misclassified", buf});
     std::snprintf(buf, sizeof buf, "%.2f%% of %zu facing px", h.edgeTolerantPct, h.facingPixels);
     out.push_back({"edge-tolerant", buf});
   }
   if (result_.hasAliasing) {
     const auto& a = result_.aliasing;
-    std::snprintf(buf, sizeof buf, "mean %.2f p95 %.2f max %.1f, m>1 %.1f%%", a.mean, a.p95, a.max, 100.0 * a.shareAbove1);
+    std::snprintf(buf, sizeof buf, "mean %.2f p95 %.2f max %.1f, m>1 %.1f%%", a.mean, a.p95, a.max,
+                  100.0 * a.shareAbove1);
     out.push_back({"aliasing m", buf});
   }
   std::snprintf(buf, sizeof buf, "%dx%d: rays %.0f ms, read-back %.0f ms%s", result_.width, result_.height,

@@ -146,16 +146,15 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
 
   // Presets: load one, or save the current state under a name.
   const auto names = presets.names();
-  if (ImGui::BeginCombo("preset", presetIndex_ >= 0 && presetIndex_ < int(names.size()) ? names[presetIndex_].c_str() : "(choose)")) {
+  if (ImGui::BeginCombo(
+          "preset", presetIndex_ >= 0 && presetIndex_ < int(names.size()) ? names[presetIndex_].c_str() : "(choose)")) {
     for (int i = 0; i < int(names.size()); ++i) {
       if (ImGui::Selectable(names[i].c_str(), i == presetIndex_)) {
         presetIndex_ = i;
         try {
           presets.apply(names[i], params);
           status = "preset " + names[i];
-        } catch (const ParamError& e) {
-          status = e.what();
-        }
+        } catch (const ParamError& e) { status = e.what(); }
         changed = true;
       }
     }
@@ -168,9 +167,7 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
       presets.capture(presetName_, params);
       presets.save(presets.path);
       status = "saved preset '" + std::string(presetName_) + "' to " + presets.path;
-    } catch (const ParamError& e) {
-      status = e.what();
-    }
+    } catch (const ParamError& e) { status = e.what(); }
   }
   ImGui::SameLine();
   if (ImGui::Button("defaults")) {
@@ -212,8 +209,8 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
       case ParamKind::Vec3: edited = ImGui::SliderFloat3(label, static_cast<float*>(p.target), p.min, p.max); break;
       case ParamKind::Color: edited = ImGui::ColorEdit3(label, static_cast<float*>(p.target)); break;
     }
-    if (ImGui::IsItemHovered() && !p.why.empty()) ImGui::SetTooltip("%s%s%s", p.why.c_str(),
-        p.hotkey.empty() ? "" : "\nhotkey: ", p.hotkey.c_str());
+    if (ImGui::IsItemHovered() && !p.why.empty())
+      ImGui::SetTooltip("%s%s%s", p.why.c_str(), p.hotkey.empty() ? "" : "\nhotkey: ", p.hotkey.c_str());
     if (edited) {
       params.touch();
       changed = true;

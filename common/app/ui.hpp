@@ -16,7 +16,7 @@ class Ui {
   void init(Context& context, float scale);
   void shutdown();
   void newFrame(double dt, int width, int height);  // size: headless only (GLFW knows its own)
-  void render();  // draws into the currently bound framebuffer
+  void render();                                    // draws into the currently bound framebuffer
   bool wantsMouse() const;
   bool wantsKeyboard() const;
 
@@ -25,12 +25,12 @@ class Ui {
 
   struct HeaderData {
     const LessonInfo* info = nullptr;
-    std::string gpu;          // renderer and GL version
-    double frameMs = 0;       // CPU frame time, averaged
+    std::string gpu;     // renderer and GL version
+    double frameMs = 0;  // CPU frame time, averaged
     const std::vector<gl::PassTiming>* passes = nullptr;
     const std::vector<Counter>* counters = nullptr;
     std::vector<std::string> errors;  // shader and file errors, file:line first
-    std::string status;       // transient message ("saved screenshot to ...")
+    std::string status;               // transient message ("saved screenshot to ...")
   };
   void header(const HeaderData& data);
   void help(const LessonInfo& info, const ParamRegistry& params, bool* open);

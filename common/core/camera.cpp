@@ -30,9 +30,7 @@ glm::mat4 perspective(float fovY, float aspect, float nearZ, float farZ) {
 // ---- OrbitCamera: the eye sits on a sphere around the target, pitch lifts it above the horizon.
 glm::vec3 OrbitCamera::forward() const { return direction(yaw, -clampPitch(pitch)); }
 
-glm::vec3 OrbitCamera::position() const {
-  return target - std::clamp(distance, minDistance, maxDistance) * forward();
-}
+glm::vec3 OrbitCamera::position() const { return target - std::clamp(distance, minDistance, maxDistance) * forward(); }
 
 void OrbitCamera::lookFrom(const glm::vec3& eye, const glm::vec3& at) {
   const glm::vec3 d = at - eye;
@@ -72,9 +70,7 @@ glm::vec3 FlyCamera::forward() const { return direction(yaw, clampPitch(pitch));
 
 glm::vec3 FlyCamera::right() const { return {std::cos(yaw), 0.0f, -std::sin(yaw)}; }
 
-glm::mat4 FlyCamera::view() const {
-  return glm::lookAt(position, position + forward(), glm::vec3(0, 1, 0));
-}
+glm::mat4 FlyCamera::view() const { return glm::lookAt(position, position + forward(), glm::vec3(0, 1, 0)); }
 
 glm::mat4 FlyCamera::projection(float aspect) const { return perspective(fovY, aspect, nearZ, farZ); }
 

@@ -19,8 +19,8 @@ struct OrbitCamera {
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
   void orbit(float dYaw, float dPitch);
-  void zoom(float factor);         // distance *= factor
-  void pan(const glm::vec2& delta); // moves target in the view plane, scaled by distance
+  void zoom(float factor);           // distance *= factor
+  void pan(const glm::vec2& delta);  // moves target in the view plane, scaled by distance
   // Sets target, distance, yaw and pitch so the eye is at `eye` looking at `target` (replaying a
   // recorded path). Throws std::invalid_argument when the two points coincide.
   void lookFrom(const glm::vec3& eye, const glm::vec3& target);

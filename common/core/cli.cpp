@@ -43,8 +43,8 @@ int toInt(const std::string& flag, const std::string& v, int lo, int hi) {
   int out = 0;
   auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
   if (ec != std::errc() || p != v.data() + v.size() || out < lo || out > hi)
-    throw CliError(flag + ": '" + v + "' is not a whole number in [" + std::to_string(lo) + ", " +
-                   std::to_string(hi) + "]");
+    throw CliError(flag + ": '" + v + "' is not a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                   "]");
   return out;
 }
 

@@ -16,19 +16,19 @@ struct CliError : std::runtime_error {
 struct CommandLine {
   bool headless = false;
   int width = 1280, height = 720;
-  int frames = -1;                 // -1: run until closed (windowed); headless default 3
-  std::string screenshot;          // write the last frame here (PNG)
-  std::vector<std::string> sets;   // "name=value", applied after the preset, in order
+  int frames = -1;                // -1: run until closed (windowed); headless default 3
+  std::string screenshot;         // write the last frame here (PNG)
+  std::vector<std::string> sets;  // "name=value", applied after the preset, in order
   std::string preset;
-  std::string bench;               // per-pass GPU and CPU ms over the frames, CSV
-  std::string measure;             // ground-truth error figures of the last frame, JSON
-  std::string record;              // record the camera/light path to this file (windowed)
-  std::string replay;              // replay a recorded path over the frames
-  float uiScale = 0;               // 0: automatic (from the monitor's content scale)
-  bool showUi = false;             // headless: draw the UI into the screenshot too
+  std::string bench;    // per-pass GPU and CPU ms over the frames, CSV
+  std::string measure;  // ground-truth error figures of the last frame, JSON
+  std::string record;   // record the camera/light path to this file (windowed)
+  std::string replay;   // replay a recorded path over the frames
+  float uiScale = 0;    // 0: automatic (from the monitor's content scale)
+  bool showUi = false;  // headless: draw the UI into the screenshot too
   bool fullscreen = false;
   bool listParams = false, listPresets = false, help = false, info = false;
-  bool strictGl = false;           // any GL error fails the run (tests); also SHADOWLAB_STRICT_GL=1
+  bool strictGl = false;  // any GL error fails the run (tests); also SHADOWLAB_STRICT_GL=1
 };
 
 // argv[0] is skipped. Throws CliError.

@@ -18,8 +18,7 @@ namespace shadowlab {
 
 namespace {
 std::string describe(const Image8& image) {
-  return std::to_string(image.width) + "x" + std::to_string(image.height) + "x" +
-         std::to_string(image.channels);
+  return std::to_string(image.width) + "x" + std::to_string(image.height) + "x" + std::to_string(image.channels);
 }
 
 void requireConsistent(const Image8& image, const char* what) {
@@ -33,8 +32,7 @@ void requireSameShape(const Image8& a, const Image8& b, const char* what) {
   requireConsistent(a, what);
   requireConsistent(b, what);
   if (a.width != b.width || a.height != b.height || a.channels != b.channels)
-    throw std::invalid_argument(std::string(what) + ": images differ in shape, " + describe(a) +
-                                " vs " + describe(b));
+    throw std::invalid_argument(std::string(what) + ": images differ in shape, " + describe(a) + " vs " + describe(b));
 }
 }  // namespace
 
@@ -44,8 +42,8 @@ Image8 loadImage(const std::string& path, int desiredChannels) {
                                 std::to_string(desiredChannels));
   int w = 0, h = 0, fileChannels = 0;
   errno = 0;
-  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-      stbi_load(path.c_str(), &w, &h, &fileChannels, desiredChannels), stbi_image_free);
+  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load(path.c_str(), &w, &h, &fileChannels, desiredChannels),
+                                                   stbi_image_free);
   if (!pixels) {
     // stb says "can't fopen" for a missing file; errno says why the open failed.
     std::string reason = stbi_failure_reason() ? stbi_failure_reason() : "unknown error";
@@ -65,8 +63,8 @@ void savePng(const std::string& path, const Image8& image) {
   if (image.width == 0 || image.height == 0)
     throw std::invalid_argument("savePng('" + path + "'): image is empty (" + describe(image) + ")");
   errno = 0;
-  const int ok = stbi_write_png(path.c_str(), image.width, image.height, image.channels,
-                                image.data.data(), image.width * image.channels);
+  const int ok = stbi_write_png(path.c_str(), image.width, image.height, image.channels, image.data.data(),
+                                image.width * image.channels);
   if (!ok) {
     const std::string reason = errno != 0 ? std::strerror(errno) : "stb_image_write failed";
     throw std::runtime_error("cannot write PNG '" + path + "': " + reason);

@@ -27,8 +27,8 @@ Image8 loadImage(const std::string& path, int desiredChannels = 4);
 void savePng(const std::string& path, const Image8& image);
 
 struct ImageDiff {
-  double rmse = 0;        // over all channels, in [0,255] units
-  int maxAbs = 0;         // largest channel difference
+  double rmse = 0;                  // over all channels, in [0,255] units
+  int maxAbs = 0;                   // largest channel difference
   std::size_t differingPixels = 0;  // pixels with any channel differing by more than the tolerance
 };
 // Throws std::invalid_argument when sizes or channel counts differ (naming both).

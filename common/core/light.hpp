@@ -18,9 +18,9 @@ struct Light {
   glm::vec3 attenuation{1.0f, 0.0f, 0.01f};
   float spotInner = 0.35f, spotOuter = 0.5f;  // half-angles in radians (smooth fall-off between)
   AreaShape area = AreaShape::None;
-  float radius = 0.5f;                     // Sphere: emitter radius
-  glm::vec2 size{1.0f, 1.0f};              // Rectangle: extent along `tangent` and direction x tangent
-  glm::vec3 tangent{1.0f, 0.0f, 0.0f};     // Rectangle: first edge direction (unit)
+  float radius = 0.5f;                  // Sphere: emitter radius
+  glm::vec2 size{1.0f, 1.0f};           // Rectangle: extent along `tangent` and direction x tangent
+  glm::vec3 tangent{1.0f, 0.0f, 0.0f};  // Rectangle: first edge direction (unit)
   bool enabled = true;
 
   // Unit vector from surface point p toward the light (L in the lecture's formula).

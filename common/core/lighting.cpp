@@ -33,8 +33,9 @@ glm::vec3 lightContribution(const glm::vec3& N, const glm::vec3& L, const glm::v
   return visibility * fatt * lightColor * (kd * NdotL + glm::vec3(ks * std::pow(RdotV, shininess)));
 }
 
-glm::vec3 lightContributionBlinn(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V, const glm::vec3& lightColor,
-                                 float fatt, float visibility, const glm::vec3& kd, float ks, float shininess) {
+glm::vec3 lightContributionBlinn(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V,
+                                 const glm::vec3& lightColor, float fatt, float visibility, const glm::vec3& kd,
+                                 float ks, float shininess) {
   const float NdotL = glm::dot(N, L);
   if (NdotL <= 0.0f) return glm::vec3(0.0f);
   const glm::vec3 H = glm::normalize(L + V);
@@ -52,10 +53,12 @@ std::vector<Light> courseLights() {
     l.direction = glm::normalize(dir), l.color = color, l.intensity = intensity, l.attenuation = att, l.enabled = on;
     return l;
   };
-  return {make(LightKind::Directional, {}, {-0.4f, -1.0f, -0.3f}, {1.0f, 0.95f, 0.85f}, 0.7f, {1, 0, 0}, true),
-          make(LightKind::Point, {3.0f, 3.0f, 2.0f}, {0, -1, 0}, {1.0f, 0.6f, 0.3f}, 2.0f, {1.0f, 0.1f, 0.05f}, true),
-          make(LightKind::Spot, {-3.0f, 5.0f, 3.0f}, {0.5f, -1.0f, -0.5f}, {0.4f, 0.6f, 1.0f}, 3.0f, {1.0f, 0.05f, 0.02f}, false),
-          make(LightKind::Point, {-3.0f, 2.5f, -2.5f}, {0, -1, 0}, {0.5f, 1.0f, 0.5f}, 2.0f, {1.0f, 0.2f, 0.1f}, false)};
+  return {
+      make(LightKind::Directional, {}, {-0.4f, -1.0f, -0.3f}, {1.0f, 0.95f, 0.85f}, 0.7f, {1, 0, 0}, true),
+      make(LightKind::Point, {3.0f, 3.0f, 2.0f}, {0, -1, 0}, {1.0f, 0.6f, 0.3f}, 2.0f, {1.0f, 0.1f, 0.05f}, true),
+      make(LightKind::Spot, {-3.0f, 5.0f, 3.0f}, {0.5f, -1.0f, -0.5f}, {0.4f, 0.6f, 1.0f}, 3.0f, {1.0f, 0.05f, 0.02f},
+           false),
+      make(LightKind::Point, {-3.0f, 2.5f, -2.5f}, {0, -1, 0}, {0.5f, 1.0f, 0.5f}, 2.0f, {1.0f, 0.2f, 0.1f}, false)};
 }
 
 glm::vec3 incidentRadiance(const Light& light, const glm::vec3& p) {
@@ -64,7 +67,8 @@ glm::vec3 incidentRadiance(const Light& light, const glm::vec3& p) {
   if (light.kind == LightKind::Directional) return radiance;
   radiance *= attenuation(light.attenuation, light.distanceTo(p));
   if (light.kind == LightKind::Spot)
-    radiance *= spotFactor(glm::dot(glm::normalize(light.direction), -light.toLight(p)), light.spotInner, light.spotOuter);
+    radiance *=
+        spotFactor(glm::dot(glm::normalize(light.direction), -light.toLight(p)), light.spotInner, light.spotOuter);
   return radiance;
 }
 

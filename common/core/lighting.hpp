@@ -23,14 +23,13 @@ float spotFactor(float cosAngle, float innerHalfAngle, float outerHalfAngle);
 // One light's term: V f_att I [kd (N.L) + ks (R.V)^pow], R = reflect(-L, N). N, L, V are unit
 // vectors (L toward the light, V toward the eye). Back-facing (N.L <= 0) gives 0: no diffuse and no
 // specular highlight leaking around the terminator.
-glm::vec3 lightContribution(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V,
-                            const glm::vec3& lightColor, float fatt, float visibility,
-                            const glm::vec3& kd, float ks, float shininess);
+glm::vec3 lightContribution(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V, const glm::vec3& lightColor,
+                            float fatt, float visibility, const glm::vec3& kd, float ks, float shininess);
 
 // Blinn's variant, (N.H)^pow with H = normalize(L + V): what real-time code usually uses.
 glm::vec3 lightContributionBlinn(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V,
-                                 const glm::vec3& lightColor, float fatt, float visibility,
-                                 const glm::vec3& kd, float ks, float shininess);
+                                 const glm::vec3& lightColor, float fatt, float visibility, const glm::vec3& kd,
+                                 float ks, float shininess);
 
 // translate(0.5) * scale(0.5): maps [-1,1]^3 (NDC) onto [0,1]^3 (texture coordinates and depth),
 // the last step of every shadow-map lookup (seeds 002).

@@ -59,8 +59,8 @@ std::vector<std::uint32_t> weldPositions(const std::vector<glm::vec3>& positions
     for (std::size_t i = 0; i < positions.size(); ++i) {
       std::uint32_t bits[3];
       std::memcpy(bits, &positions[i], sizeof bits);
-      const std::uint64_t key = (std::uint64_t(bits[0]) * 0x9E3779B97F4A7C15ull) ^
-                                (std::uint64_t(bits[1]) * 0xC2B2AE3D27D4EB4Full) ^ bits[2];
+      const std::uint64_t key =
+          (std::uint64_t(bits[0]) * 0x9E3779B97F4A7C15ull) ^ (std::uint64_t(bits[1]) * 0xC2B2AE3D27D4EB4Full) ^ bits[2];
       auto& bucket = exact[key];
       std::uint32_t found = UINT32_MAX;
       for (std::uint32_t r : bucket)
@@ -102,7 +102,10 @@ std::vector<std::uint32_t> weldPositions(const std::vector<glm::vec3>& positions
           if (it == grid.end()) continue;
           for (std::uint32_t r : it->second) {
             const glm::vec3 d = reps[r] - p;
-            if (glm::dot(d, d) <= eps2) { found = r; break; }
+            if (glm::dot(d, d) <= eps2) {
+              found = r;
+              break;
+            }
           }
         }
     if (found == UINT32_MAX) {

@@ -14,8 +14,16 @@ struct Aabb {
   glm::vec3 min{1e30f};
   glm::vec3 max{-1e30f};
   bool empty() const { return min.x > max.x; }
-  void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
-  void extend(const Aabb& b) { if (!b.empty()) { extend(b.min); extend(b.max); } }
+  void extend(const glm::vec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  void extend(const Aabb& b) {
+    if (!b.empty()) {
+      extend(b.min);
+      extend(b.max);
+    }
+  }
   glm::vec3 center() const { return 0.5f * (min + max); }
   glm::vec3 extent() const { return max - min; }
 };
@@ -36,10 +44,10 @@ struct Mesh {
 // Topology checks used by tests and by lessons that need closed meshes (shadow volumes).
 // Positions closer than `weldEpsilon` are the same vertex, so uv seams do not open a mesh.
 struct Topology {
-  std::size_t edges = 0;           // distinct undirected edges
-  std::size_t boundaryEdges = 0;   // used by one triangle only
-  std::size_t nonManifoldEdges = 0;  // used by three or more triangles
-  std::size_t inconsistentEdges = 0; // two triangles walking the edge the same way (flipped winding)
+  std::size_t edges = 0;              // distinct undirected edges
+  std::size_t boundaryEdges = 0;      // used by one triangle only
+  std::size_t nonManifoldEdges = 0;   // used by three or more triangles
+  std::size_t inconsistentEdges = 0;  // two triangles walking the edge the same way (flipped winding)
   bool closed() const { return boundaryEdges == 0 && nonManifoldEdges == 0 && inconsistentEdges == 0; }
 };
 Topology analyseTopology(const Mesh& mesh, float weldEpsilon = 1e-5f);

@@ -59,8 +59,8 @@ constexpr double kPi = 3.1415926535897932384626433832795;
 
 void requireAtLeast(const char* function, const char* what, int value, int minimum) {
   if (value < minimum)
-    throw std::invalid_argument(std::string(function) + ": " + what + " must be >= " +
-                                std::to_string(minimum) + ", got " + std::to_string(value));
+    throw std::invalid_argument(std::string(function) + ": " + what + " must be >= " + std::to_string(minimum) +
+                                ", got " + std::to_string(value));
 }
 
 // Triangulates a grid of (rows+1) x (cols+1) vertices stored row-major from `base`. The winding
@@ -221,8 +221,8 @@ Mesh makeTorusKnot(int p, int q, float radius, float tube, int segments, int sid
                      const double r = 2.0 + std::cos(q * phi), dr = -q * std::sin(q * phi);
                      const double cp = std::cos(p * phi), sp = std::sin(p * phi);
                      centre = scale * glm::dvec3(r * cp, r * sp, std::sin(q * phi));
-                     const glm::dvec3 tangent = glm::normalize(
-                         glm::dvec3(dr * cp - p * r * sp, dr * sp + p * r * cp, q * std::cos(q * phi)));
+                     const glm::dvec3 tangent =
+                         glm::normalize(glm::dvec3(dr * cp - p * r * sp, dr * sp + p * r * cp, q * std::cos(q * phi)));
                      // The tangent always turns around the z axis (p r != 0), so it is never
                      // parallel to the radius vector and this frame never degenerates.
                      b = glm::normalize(glm::cross(tangent, centre));
@@ -282,9 +282,8 @@ Mesh makeTerrain(float size, int resolution, float heightScale, std::uint64_t se
   std::vector<float> h(std::size_t(w) * w);
   for (int j = 0; j < w; ++j)
     for (int i = 0; i < w; ++i)
-      h[std::size_t(j) * w + i] =
-          terrainHeight((float(i - 1) / float(n) - 0.5f) * size, (float(j - 1) / float(n) - 0.5f) * size, size,
-                        heightScale, seed);
+      h[std::size_t(j) * w + i] = terrainHeight((float(i - 1) / float(n) - 0.5f) * size,
+                                                (float(j - 1) / float(n) - 0.5f) * size, size, heightScale, seed);
   auto at = [&](int i, int j) { return h[std::size_t(j + 1) * w + std::size_t(i + 1)]; };
   Mesh mesh;
   reserve(mesh, std::size_t(n + 1) * (n + 1), std::size_t(2) * n * n);
@@ -304,10 +303,10 @@ Mesh makeCard(float width, float height) {
   Mesh mesh;
   reserve(mesh, 4, 2);
   const float hw = 0.5f * width;
-  push(mesh, {-hw, 0.0f, 0.0f}, {0, 0, 1}, {0.0f, 1.0f});   // bottom left
-  push(mesh, {hw, 0.0f, 0.0f}, {0, 0, 1}, {1.0f, 1.0f});    // bottom right
-  push(mesh, {-hw, height, 0.0f}, {0, 0, 1}, {0.0f, 0.0f}); // top left
-  push(mesh, {hw, height, 0.0f}, {0, 0, 1}, {1.0f, 0.0f});  // top right
+  push(mesh, {-hw, 0.0f, 0.0f}, {0, 0, 1}, {0.0f, 1.0f});    // bottom left
+  push(mesh, {hw, 0.0f, 0.0f}, {0, 0, 1}, {1.0f, 1.0f});     // bottom right
+  push(mesh, {-hw, height, 0.0f}, {0, 0, 1}, {0.0f, 0.0f});  // top left
+  push(mesh, {hw, height, 0.0f}, {0, 0, 1}, {1.0f, 0.0f});   // top right
   mesh.indices = {0, 1, 3, 0, 3, 2};
   return mesh;
 }

@@ -50,9 +50,10 @@ bool parseIndex(std::string_view text, long long& out) {
 // Statements of the OBJ format that carry nothing a triangle mesh needs: accepted and skipped.
 const std::unordered_set<std::string_view>& ignoredStatements() {
   static const std::unordered_set<std::string_view> names = {
-      "o", "g", "s", "mg", "usemtl", "mtllib", "usemap", "maplib", "lod", "bevel", "c_interp", "d_interp",
-      "shadow_obj", "trace_obj", "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim",
-      "hole", "scrv", "sp", "end", "con", "ctech", "stech", "call", "csh", "vw", "t"};
+      "o",     "g",        "s",        "mg",         "usemtl",    "mtllib", "usemap", "maplib", "lod",
+      "bevel", "c_interp", "d_interp", "shadow_obj", "trace_obj", "cstype", "deg",    "bmat",   "step",
+      "curv",  "curv2",    "surf",     "parm",       "trim",      "hole",   "scrv",   "sp",     "end",
+      "con",   "ctech",    "stech",    "call",       "csh",       "vw",     "t"};
   return names;
 }
 
@@ -87,8 +88,7 @@ std::size_t validate(const std::string& text, std::string& kept) {
                    std::to_string(n));
       for (std::size_t i = 1; i < tok.size(); ++i) {
         double value;
-        if (!parseNumber(tok[i], value))
-          throw fail("'" + std::string(tok[i]) + "' is not a finite number in " + what);
+        if (!parseNumber(tok[i], value)) throw fail("'" + std::string(tok[i]) + "' is not a finite number in " + what);
       }
     };
     // One corner of a face, line or point: v, v/vt, v//vn or v/vt/vn; negative is relative.
@@ -158,9 +158,7 @@ Mesh loadObj(const std::string& path) {
   std::string kept;
   try {
     faces = validate(text, kept);
-  } catch (const ObjError& e) {
-    throw std::runtime_error(where + e.what());
-  }
+  } catch (const ObjError& e) { throw std::runtime_error(where + e.what()); }
   if (faces == 0) throw std::runtime_error(where + "no faces");
 
   tinyobj::attrib_t attrib;

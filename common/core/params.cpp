@@ -62,8 +62,7 @@ std::string rangeText(const Param& p) {
     case ParamKind::Float:
     case ParamKind::Vec3:
     case ParamKind::Color: return "[" + formatFloat(p.min) + ", " + formatFloat(p.max) + "]";
-    case ParamKind::Int:
-      return "[" + std::to_string(int(p.min)) + ", " + std::to_string(int(p.max)) + "]";
+    case ParamKind::Int: return "[" + std::to_string(int(p.min)) + ", " + std::to_string(int(p.max)) + "]";
     case ParamKind::Bool: return "true|false";
     case ParamKind::Choice: {
       std::string s;
@@ -76,9 +75,8 @@ std::string rangeText(const Param& p) {
 
 bool validName(const std::string& n) {
   if (n.empty()) return false;
-  return std::all_of(n.begin(), n.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.';
-  });
+  return std::all_of(n.begin(), n.end(),
+                     [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.'; });
 }
 
 }  // namespace
@@ -198,8 +196,7 @@ void ParamRegistry::set(const std::string& name, const std::string& rawValue) {
 
 void ParamRegistry::assign(const std::string& assignment) {
   const auto eq = assignment.find('=');
-  if (eq == std::string::npos)
-    throw ParamError("'" + assignment + "' is not name=value; parameters: " + names());
+  if (eq == std::string::npos) throw ParamError("'" + assignment + "' is not name=value; parameters: " + names());
   set(trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
 }
 
@@ -216,9 +213,8 @@ std::map<std::string, std::string> ParamRegistry::snapshot() const {
 std::string ParamRegistry::describe() const {
   std::ostringstream os;
   for (const auto& p : params_) {
-    os << std::left << std::setw(26) << p.name << ' ' << std::setw(7) << kindName(p) << ' '
-       << std::setw(24) << rangeText(p) << " default " << std::setw(10) << p.defaultValue << "  "
-       << p.why << '\n';
+    os << std::left << std::setw(26) << p.name << ' ' << std::setw(7) << kindName(p) << ' ' << std::setw(24)
+       << rangeText(p) << " default " << std::setw(10) << p.defaultValue << "  " << p.why << '\n';
   }
   return os.str();
 }
@@ -302,9 +298,7 @@ void PresetFile::apply(const std::string& name, ParamRegistry& registry) const {
   for (const auto& [param, value] : preset->values) {
     try {
       registry.set(param, value);
-    } catch (const ParamError& e) {
-      throw ParamError(path + ": preset '" + name + "': " + e.what());
-    }
+    } catch (const ParamError& e) { throw ParamError(path + ": preset '" + name + "': " + e.what()); }
   }
 }
 

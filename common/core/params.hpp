@@ -22,15 +22,15 @@ struct ParamError : std::runtime_error {
 enum class ParamKind { Float, Int, Bool, Choice, Vec3, Color };
 
 struct Param {
-  std::string name;     // dotted, e.g. "light1.intensity"
-  std::string why;      // one line: why the parameter exists, shown as the UI tooltip
+  std::string name;  // dotted, e.g. "light1.intensity"
+  std::string why;   // one line: why the parameter exists, shown as the UI tooltip
   ParamKind kind = ParamKind::Float;
   void* target = nullptr;
-  float min = 0, max = 1;              // Float, Int, Vec3 range (inclusive)
-  std::vector<std::string> choices;    // Choice
-  std::string defaultValue;            // captured at registration, in text form
-  bool hidden = false;                 // camera and light poses: in presets, not in the panel
-  std::string hotkey;                  // "" or a key name shown in help ("1".."9", "B", ...)
+  float min = 0, max = 1;            // Float, Int, Vec3 range (inclusive)
+  std::vector<std::string> choices;  // Choice
+  std::string defaultValue;          // captured at registration, in text form
+  bool hidden = false;               // camera and light poses: in presets, not in the panel
+  std::string hotkey;                // "" or a key name shown in help ("1".."9", "B", ...)
 };
 
 class ParamRegistry {

@@ -24,8 +24,8 @@ Aabb Scene::objectBounds(std::size_t object) const {
                             std::to_string(objects.size()));
   const SceneObject& o = objects[object];
   if (o.mesh >= meshes.size())
-    throw std::out_of_range("Scene::objectBounds: object '" + o.name + "' names mesh " +
-                            std::to_string(o.mesh) + " of " + std::to_string(meshes.size()));
+    throw std::out_of_range("Scene::objectBounds: object '" + o.name + "' names mesh " + std::to_string(o.mesh) +
+                            " of " + std::to_string(meshes.size()));
   return transformBox(meshes[o.mesh].bounds(), o.model);
 }
 

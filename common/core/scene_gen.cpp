@@ -23,9 +23,7 @@ int sphereSlicesFor(double budget) {
   return std::max(8, s + (s & 1));
 }
 // Tubes with segments = ratio * sides: 2 ratio sides^2 triangles.
-int tubeSidesFor(double budget, int ratio) {
-  return std::max(4, int(std::lround(std::sqrt(budget / (2.0 * ratio)))));
-}
+int tubeSidesFor(double budget, int ratio) { return std::max(4, int(std::lround(std::sqrt(budget / (2.0 * ratio))))); }
 
 Mesh budgetSphere(float radius, double budget) {
   const int s = sphereSlicesFor(budget);
@@ -111,8 +109,7 @@ Scene makeShowcase(std::uint64_t seed, double target) {
   // Rest it on the ground: lift it by whatever its tilted bounds reach below y = 0.
   const float sink = scene.objectBounds(scene.objects.size() - 1).min.y;
   if (sink < 0.0f) scene.objects.back().model = glm::translate(glm::mat4(1.0f), glm::vec3(0, -sink, 0)) * torusModel;
-  addObject(scene, "knot", scene.addMesh(budgetKnot(1.5f, 0.32f, 0.35 * target)), blue,
-            spotTurned(3, 2.3f));
+  addObject(scene, "knot", scene.addMesh(budgetKnot(1.5f, 0.32f, 0.35 * target)), blue, spotTurned(3, 2.3f));
   return scene;
 }
 
@@ -195,7 +192,7 @@ Scene makeForest(std::uint64_t seed, double target) {
   for (int side = 0; side < 4; ++side)
     for (int k = 0; k < panelsPerSide; ++k) {
       const float along = (float(k) + 0.5f) * 2.0f - fenceHalf;
-      glm::vec2 offset = side == 0 ? glm::vec2(along, -fenceHalf)
+      glm::vec2 offset = side == 0   ? glm::vec2(along, -fenceHalf)
                          : side == 1 ? glm::vec2(fenceHalf, along)
                          : side == 2 ? glm::vec2(-along, fenceHalf)
                                      : glm::vec2(-fenceHalf, -along);
@@ -312,8 +309,8 @@ Scene makeRoom(std::uint64_t seed, double target) {
   addObject(scene, "knot", scene.addMesh(budgetKnot(1.2f, 0.28f, 0.3 * target)), blue,
             placed(at + glm::vec3(0, 1.8f, 0), rng.uniform(0.0f, kPi)));
   at = jitter(-3.0f, 2.5f);
-  glm::mat4 torusModel = glm::rotate(placed(at + glm::vec3(0, 0.95f, 0), rng.uniform(0.0f, kPi)), 0.5f * kPi,
-                                     glm::vec3(1, 0, 0));
+  glm::mat4 torusModel =
+      glm::rotate(placed(at + glm::vec3(0, 0.95f, 0), rng.uniform(0.0f, kPi)), 0.5f * kPi, glm::vec3(1, 0, 0));
   addObject(scene, "torus", scene.addMesh(budgetTorus(0.7f, 0.25f, 0.15 * target)), gold, torusModel);
   // Two pillars floor to ceiling: casters the light cannot get around.
   const int pillarSegments = std::max(8, int(std::lround(0.05 * target / 8.0)));

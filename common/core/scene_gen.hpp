@@ -25,8 +25,7 @@ namespace shadowlab {
 inline constexpr std::size_t kDefaultSceneTriangles = 100'000;
 
 // Throws std::invalid_argument for an unknown name; the message lists the valid names.
-Scene makeScene(const std::string& name, std::uint64_t seed = 1,
-                std::size_t targetTriangles = kDefaultSceneTriangles);
+Scene makeScene(const std::string& name, std::uint64_t seed = 1, std::size_t targetTriangles = kDefaultSceneTriangles);
 // The names makeScene accepts, in the order lessons list them.
 std::vector<std::string> sceneNames();
 

@@ -77,9 +77,7 @@ void advanceCommentState(const std::string& line, bool& inBlockComment) {
   }
 }
 
-std::string location(const std::string& file, std::size_t line) {
-  return file + ":" + std::to_string(line);
-}
+std::string location(const std::string& file, std::size_t line) { return file + ":" + std::to_string(line); }
 
 class Expander {
  public:
@@ -168,8 +166,8 @@ class Expander {
   std::string parseIncludeTarget(const std::string& line, std::size_t rest, const std::string& file,
                                  std::size_t lineNumber) {
     const auto malformed = [&] {
-      return ShaderSourceError(location(file, lineNumber) + ": malformed #include (expected #include \"file\"): " +
-                               line);
+      return ShaderSourceError(location(file, lineNumber) +
+                               ": malformed #include (expected #include \"file\"): " + line);
     };
     std::size_t i = skipSpaces(line, rest);
     if (i >= line.size() || line[i] != '"') throw malformed();

@@ -33,7 +33,8 @@ void planesFromCorners(ConvexVolume& v) {
     // Newell's normal: robust for the tiny near face of a frustum with a huge far/near ratio.
     glm::vec3 n = glm::cross(c - a, d - b);
     const float len = glm::length(n);
-    if (!(len > 0.0f) || !std::isfinite(len)) throw std::invalid_argument("convex volume: degenerate face " + std::to_string(f));
+    if (!(len > 0.0f) || !std::isfinite(len))
+      throw std::invalid_argument("convex volume: degenerate face " + std::to_string(f));
     n /= len;
     const glm::vec3 faceCentre = 0.25f * (a + b + c + d);
     if (glm::dot(n, centre - faceCentre) < 0.0f) n = -n;
@@ -70,13 +71,15 @@ float depthCompare(float fragmentDepth, float storedDepth, float bias) {
 }
 
 DepthMap::DepthMap(int w, int h, std::vector<float> d) : width(w), height(h), depth(std::move(d)) {
-  if (w < 1 || h < 1) throw std::invalid_argument("depth map: size " + std::to_string(w) + "x" + std::to_string(h) + " is below 1x1");
+  if (w < 1 || h < 1)
+    throw std::invalid_argument("depth map: size " + std::to_string(w) + "x" + std::to_string(h) + " is below 1x1");
   if (depth.size() != std::size_t(w) * std::size_t(h))
-    throw std::invalid_argument("depth map: " + std::to_string(depth.size()) + " depths for " + std::to_string(w) + "x" +
-                                std::to_string(h) + " texels");
+    throw std::invalid_argument("depth map: " + std::to_string(depth.size()) + " depths for " + std::to_string(w) +
+                                "x" + std::to_string(h) + " texels");
 }
 
-DepthMap::DepthMap(int w, int h, float fill) : DepthMap(w, h, std::vector<float>(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)), fill)) {}
+DepthMap::DepthMap(int w, int h, float fill)
+    : DepthMap(w, h, std::vector<float>(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)), fill)) {}
 
 float DepthMap::at(int x, int y) const {
   x = std::clamp(x, 0, width - 1);
@@ -110,11 +113,13 @@ float bilinearPcfLookup(const DepthMap& map, const glm::vec3& uvz, float bias) {
   const glm::vec4 w = bilinearPcfWeights(texel);
   const int x0 = int(std::floor(texel.x - 0.5f)), y0 = int(std::floor(texel.y - 0.5f));
   return w[0] * depthCompare(uvz.z, map.at(x0, y0), bias) + w[1] * depthCompare(uvz.z, map.at(x0 + 1, y0), bias) +
-         w[2] * depthCompare(uvz.z, map.at(x0, y0 + 1), bias) + w[3] * depthCompare(uvz.z, map.at(x0 + 1, y0 + 1), bias);
+         w[2] * depthCompare(uvz.z, map.at(x0, y0 + 1), bias) +
+         w[3] * depthCompare(uvz.z, map.at(x0 + 1, y0 + 1), bias);
 }
 
 float boxPcfLookup(const DepthMap& map, const glm::vec3& uvz, float bias, int n) {
-  if (n < 1 || n % 2 == 0) throw std::invalid_argument("PCF kernel size " + std::to_string(n) + " must be odd and >= 1");
+  if (n < 1 || n % 2 == 0)
+    throw std::invalid_argument("PCF kernel size " + std::to_string(n) + " must be odd and >= 1");
   if (uvz.z > 1.0f) return 1.0f;
   const int cx = int(std::floor(uvz.x * float(map.width))), cy = int(std::floor(uvz.y * float(map.height)));
   float lit = 0.0f;
@@ -134,12 +139,36 @@ int cubeFace(const glm::vec3& d) {
 glm::vec2 cubeFaceUv(const glm::vec3& d) {
   float sc = 0, tc = 0, ma = 1;
   switch (cubeFace(d)) {
-    case 0: sc = -d.z; tc = -d.y; ma = d.x; break;
-    case 1: sc = d.z; tc = -d.y; ma = d.x; break;
-    case 2: sc = d.x; tc = d.z; ma = d.y; break;
-    case 3: sc = d.x; tc = -d.z; ma = d.y; break;
-    case 4: sc = d.x; tc = -d.y; ma = d.z; break;
-    case 5: sc = -d.x; tc = -d.y; ma = d.z; break;
+    case 0:
+      sc = -d.z;
+      tc = -d.y;
+      ma = d.x;
+      break;
+    case 1:
+      sc = d.z;
+      tc = -d.y;
+      ma = d.x;
+      break;
+    case 2:
+      sc = d.x;
+      tc = d.z;
+      ma = d.y;
+      break;
+    case 3:
+      sc = d.x;
+      tc = -d.z;
+      ma = d.y;
+      break;
+    case 4:
+      sc = d.x;
+      tc = -d.y;
+      ma = d.z;
+      break;
+    case 5:
+      sc = -d.x;
+      tc = -d.y;
+      ma = d.z;
+      break;
     default: return glm::vec2(0.5f);
   }
   const float m = std::abs(ma);
@@ -175,7 +204,8 @@ ConvexVolume volumeFromBox(const Aabb& box) {
   if (box.empty()) throw std::invalid_argument("convex volume: the box is empty");
   ConvexVolume v;
   for (int i = 0; i < 8; ++i)
-    v.corners[std::size_t(i)] = {i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z};
+    v.corners[std::size_t(i)] = {i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
+                                 i & 4 ? box.max.z : box.min.z};
   v.planes = {glm::vec4(1, 0, 0, -box.min.x), glm::vec4(-1, 0, 0, box.max.x), glm::vec4(0, 1, 0, -box.min.y),
               glm::vec4(0, -1, 0, box.max.y), glm::vec4(0, 0, 1, -box.min.z), glm::vec4(0, 0, -1, box.max.z)};
   return v;
@@ -235,7 +265,8 @@ glm::mat4 lightViewAlong(const glm::vec3& eye, const glm::vec3& direction) {
 OrthoFit fitOrthographic(const glm::vec3& lightDirection, std::span<const glm::vec3> receivers,
                          std::span<const Aabb> casters, int mapSize, bool snap) {
   if (receivers.empty()) throw std::invalid_argument("orthographic fit: no receiver points");
-  if (!(glm::length(lightDirection) > 0.0f)) throw std::invalid_argument("orthographic fit: the light direction is zero");
+  if (!(glm::length(lightDirection) > 0.0f))
+    throw std::invalid_argument("orthographic fit: the light direction is zero");
   if (mapSize < 1) throw std::invalid_argument("orthographic fit: map size " + std::to_string(mapSize) + " is below 1");
   OrthoFit fit;
   fit.view = lightViewAlong(glm::vec3(0.0f), lightDirection);
@@ -268,7 +299,8 @@ OrthoFit fitOrthographic(const glm::vec3& lightDirection, std::span<const glm::v
   const float depthMargin = 0.01f + 0.005f * (hi.z - lo.z);
   fit.lightMin = {centre - half, lo.z - depthMargin};
   fit.lightMax = {centre + half, hi.z + depthMargin};
-  fit.projection = glm::ortho(fit.lightMin.x, fit.lightMax.x, fit.lightMin.y, fit.lightMax.y, -fit.lightMax.z, -fit.lightMin.z);
+  fit.projection =
+      glm::ortho(fit.lightMin.x, fit.lightMax.x, fit.lightMin.y, fit.lightMax.y, -fit.lightMax.z, -fit.lightMin.z);
   fit.texelWorld = 2.0f * std::max(half.x, half.y) / float(mapSize);
   return fit;
 }
@@ -276,10 +308,12 @@ OrthoFit fitOrthographic(const glm::vec3& lightDirection, std::span<const glm::v
 std::span<const glm::vec2> poissonDisk() {
   // The widely used 16-point set (within [-1,1]^2, roughly a disk); shaders/03_shadow_quality/scene.frag.
   static const glm::vec2 disk[16] = {
-      {-0.94201624f, -0.39906216f}, {0.94558609f, -0.76890725f}, {-0.094184101f, -0.92938870f}, {0.34495938f, 0.29387760f},
-      {-0.91588581f, 0.45771432f},  {-0.81544232f, -0.87912464f}, {-0.38277543f, 0.27676845f},  {0.97484398f, 0.75648379f},
-      {0.44323325f, -0.97511554f},  {0.53742981f, -0.47373420f},  {-0.26496911f, -0.41893023f}, {0.79197514f, 0.19090188f},
-      {-0.24188840f, 0.99706507f},  {-0.81409955f, 0.91437590f},  {0.19984126f, 0.78641367f},   {0.14383161f, -0.14100790f}};
+      {-0.94201624f, -0.39906216f}, {0.94558609f, -0.76890725f},  {-0.094184101f, -0.92938870f},
+      {0.34495938f, 0.29387760f},   {-0.91588581f, 0.45771432f},  {-0.81544232f, -0.87912464f},
+      {-0.38277543f, 0.27676845f},  {0.97484398f, 0.75648379f},   {0.44323325f, -0.97511554f},
+      {0.53742981f, -0.47373420f},  {-0.26496911f, -0.41893023f}, {0.79197514f, 0.19090188f},
+      {-0.24188840f, 0.99706507f},  {-0.81409955f, 0.91437590f},  {0.19984126f, 0.78641367f},
+      {0.14383161f, -0.14100790f}};
   return disk;
 }
 

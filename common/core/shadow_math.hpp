@@ -101,7 +101,7 @@ bool casterMayShadow(const Aabb& caster, const ConvexVolume& view, const glm::ve
 struct OrthoFit {
   glm::mat4 view{1.0f}, projection{1.0f};
   glm::vec3 lightMin{0.0f}, lightMax{0.0f};  // the fitted box in light view space
-  float texelWorld = 0.0f;                    // world size of one texel across the map
+  float texelWorld = 0.0f;                   // world size of one texel across the map
 };
 // Light view: from the world origin looking along lightDirection with a fixed up vector, so the
 // texel grid does not turn with the camera. x, y: the bounds of `receivers` in light space; z:

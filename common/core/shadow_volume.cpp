@@ -31,7 +31,8 @@ std::vector<std::uint32_t> weld(const std::vector<glm::vec3>& positions, float e
   std::vector<std::uint32_t> ids(positions.size());
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const glm::vec3& p = positions[i];
-    const Key k{std::int64_t(std::floor(p.x / cell)), std::int64_t(std::floor(p.y / cell)), std::int64_t(std::floor(p.z / cell))};
+    const Key k{std::int64_t(std::floor(p.x / cell)), std::int64_t(std::floor(p.y / cell)),
+                std::int64_t(std::floor(p.z / cell))};
     std::uint32_t found = UINT32_MAX;
     for (int dz = -1; dz <= 1 && found == UINT32_MAX; ++dz)
       for (int dy = -1; dy <= 1 && found == UINT32_MAX; ++dy)
@@ -39,7 +40,10 @@ std::vector<std::uint32_t> weld(const std::vector<glm::vec3>& positions, float e
           auto it = grid.find(Key{k.x + dx, k.y + dy, k.z + dz});
           if (it == grid.end()) continue;
           for (std::uint32_t r : it->second)
-            if (glm::length(reps[r] - p) <= epsilon) { found = r; break; }
+            if (glm::length(reps[r] - p) <= epsilon) {
+              found = r;
+              break;
+            }
         }
     if (found == UINT32_MAX) {
       found = std::uint32_t(reps.size());
@@ -52,10 +56,10 @@ std::vector<std::uint32_t> weld(const std::vector<glm::vec3>& positions, float e
 }
 
 struct HalfEdge {
-  std::uint64_t key;     // (lo << 32) | hi
-  bool forward;          // walked lo -> hi
+  std::uint64_t key;  // (lo << 32) | hi
+  bool forward;       // walked lo -> hi
   std::uint32_t face;
-  int corner;            // the edge starts at the face's corner `corner`
+  int corner;  // the edge starts at the face's corner `corner`
 };
 
 }  // namespace
@@ -77,8 +81,9 @@ EdgeAdjacency buildAdjacency(const Mesh& mesh, float weldEpsilon) {
   EdgeAdjacency adj;
   for (std::size_t i = 0; i < mesh.indices.size(); ++i)
     if (mesh.indices[i] >= mesh.positions.size())
-      throw std::invalid_argument("buildAdjacency: index " + std::to_string(mesh.indices[i]) + " at " + std::to_string(i) +
-                                  " is past the " + std::to_string(mesh.positions.size()) + " positions");
+      throw std::invalid_argument("buildAdjacency: index " + std::to_string(mesh.indices[i]) + " at " +
+                                  std::to_string(i) + " is past the " + std::to_string(mesh.positions.size()) +
+                                  " positions");
   const std::vector<std::uint32_t> id = weld(mesh.positions, weldEpsilon, adj.positions);
 
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
@@ -140,8 +145,8 @@ EdgeAdjacency buildAdjacency(const Mesh& mesh, float weldEpsilon) {
     for (int k = 0; k < 3; ++k) {
       const std::int64_t o = across[3 * f + k];
       // The neighbour's vertex opposite the shared edge: the corner after the edge's end in its walk.
-      const std::uint32_t opposite = o >= 0 ? adj.triangles[3 * (o / 3) + (o % 3 + 2) % 3]
-                                            : adj.triangles[3 * f + (k + 2) % 3];
+      const std::uint32_t opposite =
+          o >= 0 ? adj.triangles[3 * (o / 3) + (o % 3 + 2) % 3] : adj.triangles[3 * f + (k + 2) % 3];
       adj.adjacencyIndices[6 * f + 2 * k] = adj.triangles[3 * f + k];
       adj.adjacencyIndices[6 * f + 2 * k + 1] = opposite;
     }
@@ -181,7 +186,8 @@ std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::
   return out;
 }
 
-bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d, const glm::vec4& light) {
+bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
+                  const glm::vec4& light) {
   auto faces = [&](const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
     const glm::vec3 n = glm::cross(p1 - p0, p2 - p0);
     return facesLight(glm::vec4(n, -glm::dot(n, p0)), light);
@@ -196,7 +202,8 @@ VolumeCounts buildVolume(const EdgeAdjacency& adj, const glm::vec4& light, bool 
   n.silhouetteEdges = edges.size();
   for (const SilhouetteEdge& e : edges) {
     const glm::vec3 &a = adj.positions[e.a], &b = adj.positions[e.b];
-    out.insert(out.end(), {glm::vec4(b, 1), glm::vec4(a, 1), glm::vec4(a, 0), glm::vec4(b, 1), glm::vec4(a, 0), glm::vec4(b, 0)});
+    out.insert(out.end(),
+               {glm::vec4(b, 1), glm::vec4(a, 1), glm::vec4(a, 0), glm::vec4(b, 1), glm::vec4(a, 0), glm::vec4(b, 0)});
     n.sideTriangles += 2;
   }
   if (caps)
@@ -204,8 +211,8 @@ VolumeCounts buildVolume(const EdgeAdjacency& adj, const glm::vec4& light, bool 
       if (facesLight(adj.planes[f], light)) continue;
       const glm::vec3 &p0 = adj.positions[adj.triangles[3 * f]], &p1 = adj.positions[adj.triangles[3 * f + 1]],
                       &p2 = adj.positions[adj.triangles[3 * f + 2]];
-      out.insert(out.end(), {glm::vec4(p0, 1), glm::vec4(p2, 1), glm::vec4(p1, 1),   // near cap, reversed
-                             glm::vec4(p0, 0), glm::vec4(p1, 0), glm::vec4(p2, 0)}); // far cap at infinity
+      out.insert(out.end(), {glm::vec4(p0, 1), glm::vec4(p2, 1), glm::vec4(p1, 1),    // near cap, reversed
+                             glm::vec4(p0, 0), glm::vec4(p1, 0), glm::vec4(p2, 0)});  // far cap at infinity
       n.capTriangles += 2;
     }
   if (silhouette) *silhouette = edges;
@@ -258,7 +265,8 @@ bool volumeMayReachNearPlane(const Aabb& bounds, const NearRect& near, const glm
   const glm::vec3 inside = light.w != 0.0f ? 0.5f * (centre + L / light.w) : centre + size * glm::normalize(L);
   const float lightSide = light.w != 0.0f ? glm::dot(normal, L / light.w - centre) : glm::dot(normal, L);
   // The light (or its direction) in the near plane: the hull is flat; be safe and say yes.
-  if (std::abs(lightSide) <= 1e-6f * glm::length(normal) * (light.w != 0.0f ? std::max(size, glm::length(L / light.w - centre)) : glm::length(L)))
+  if (std::abs(lightSide) <= 1e-6f * glm::length(normal) *
+                                 (light.w != 0.0f ? std::max(size, glm::length(L / light.w - centre)) : glm::length(L)))
     return true;
 
   std::array<std::pair<glm::vec3, glm::vec3>, 5> planes;  // (point, inward normal)
@@ -314,8 +322,10 @@ ScissorRect scissorForSphere(const glm::vec3& centre, float radius, const glm::m
   if (hi.x < -1 || hi.y < -1 || lo.x > 1 || lo.y > 1) return {};
   lo = glm::clamp(lo, glm::vec2(-1), glm::vec2(1));
   hi = glm::clamp(hi, glm::vec2(-1), glm::vec2(1));
-  const int x0 = int(std::floor((lo.x * 0.5f + 0.5f) * float(width))), x1 = int(std::ceil((hi.x * 0.5f + 0.5f) * float(width)));
-  const int y0 = int(std::floor((lo.y * 0.5f + 0.5f) * float(height))), y1 = int(std::ceil((hi.y * 0.5f + 0.5f) * float(height)));
+  const int x0 = int(std::floor((lo.x * 0.5f + 0.5f) * float(width))),
+            x1 = int(std::ceil((hi.x * 0.5f + 0.5f) * float(width)));
+  const int y0 = int(std::floor((lo.y * 0.5f + 0.5f) * float(height))),
+            y1 = int(std::ceil((hi.y * 0.5f + 0.5f) * float(height)));
   return {x0, y0, x1 - x0, y1 - y0};
 }
 
@@ -336,7 +346,8 @@ void buildSceneVolumes(const Scene& scene, const std::vector<EdgeAdjacency>& adj
     const VolumeCounts n = buildVolume(adj, glm::inverse(obj.model) * lightWorld, adj.closed(), local, &edges, test);
     out.sides.back() = int(n.sideTriangles * 3);
     out.caps.back() = int(local.size()) - out.sides.back();
-    for (const glm::vec4& v : local) out.triangles.push_back(glm::vec4(glm::vec3(obj.model * glm::vec4(glm::vec3(v), 1)), v.w));
+    for (const glm::vec4& v : local)
+      out.triangles.push_back(glm::vec4(glm::vec3(obj.model * glm::vec4(glm::vec3(v), 1)), v.w));
     for (const auto& e : edges) {
       out.silhouette.push_back(glm::vec3(obj.model * glm::vec4(adj.positions[e.a], 1)));
       out.silhouette.push_back(glm::vec3(obj.model * glm::vec4(adj.positions[e.b], 1)));

@@ -32,9 +32,9 @@ struct Edge {
 };
 
 struct EdgeAdjacency {
-  std::vector<glm::vec3> positions;     // welded: positions closer than the weld tolerance are one
-  std::vector<std::uint32_t> triangles; // 3 welded indices per face (faces collapsed by welding dropped)
-  std::vector<glm::vec4> planes;        // per face: (unit normal, -normal . corner), positive side = front
+  std::vector<glm::vec3> positions;      // welded: positions closer than the weld tolerance are one
+  std::vector<std::uint32_t> triangles;  // 3 welded indices per face (faces collapsed by welding dropped)
+  std::vector<glm::vec4> planes;         // per face: (unit normal, -normal . corner), positive side = front
   std::vector<Edge> edges;
   // GL_TRIANGLES_ADJACENCY order, 6 per face: v0, opposite(v0 v1), v1, opposite(v1 v2), v2, opposite(v2 v0).
   // A boundary edge gets the face's own third vertex: the "neighbour" (b, a, c) then faces the
@@ -69,7 +69,8 @@ using SilhouetteTest = bool (*)(const glm::vec3& a, const glm::vec3& b, const gl
 // Edges between a face toward the light and a face away from it, plus the boundary edges of faces
 // toward the light (what an open mesh's volume needs under z-pass). `light` in the mesh's space.
 // With `test`, paired edges are judged by it instead of the faces' planes.
-std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::vec4& light, SilhouetteTest test = nullptr);
+std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::vec4& light,
+                                           SilhouetteTest test = nullptr);
 // The same test written on four points, as the exercise asks: edge (a, b) shared by the faces
 // (a, b, c) and (b, a, d) is a silhouette when exactly one of them faces the light.
 bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
@@ -145,14 +146,13 @@ struct ScissorRect {
   int x = 0, y = 0, width = 0, height = 0;
   bool operator==(const ScissorRect&) const = default;
 };
-ScissorRect scissorForSphere(const glm::vec3& centre, float radius, const glm::mat4& viewProj, int width,
-                             int height);
+ScissorRect scissorForSphere(const glm::vec3& centre, float radius, const glm::mat4& viewProj, int width, int height);
 
 // Every caster's volume for one light, in world space, as a lesson draws them: per object its side
 // triangles first, then its caps (z-pass draws only the sides; a mesh that is not closed gets no
 // caps), and the silhouette edges (two world-space end points each) for the views.
 struct SceneVolumes {
-  std::vector<glm::vec4> triangles;  // w = 0: extruded to infinity
+  std::vector<glm::vec4> triangles;     // w = 0: extruded to infinity
   std::vector<int> first, sides, caps;  // per object: first vertex, side and cap vertex counts
   std::vector<glm::vec3> silhouette;
 };

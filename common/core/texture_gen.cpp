@@ -196,8 +196,10 @@ Image8 makeLeavesTexture(int size, std::uint64_t seed) {
     const Leaf& leaf = leaves[i];
     const glm::vec2 tip = leaf.base + leaf.axis * leaf.length;
     const glm::vec2 lo = glm::min(leaf.base, tip) - leaf.width, hi = glm::max(leaf.base, tip) + leaf.width;
-    const int x0 = std::max(0, int(lo.x * float(samples)) - 2), x1 = std::min(samples - 1, int(hi.x * float(samples)) + 2);
-    const int y0 = std::max(0, int(lo.y * float(samples)) - 2), y1 = std::min(samples - 1, int(hi.y * float(samples)) + 2);
+    const int x0 = std::max(0, int(lo.x * float(samples)) - 2),
+              x1 = std::min(samples - 1, int(hi.x * float(samples)) + 2);
+    const int y0 = std::max(0, int(lo.y * float(samples)) - 2),
+              y1 = std::min(samples - 1, int(hi.y * float(samples)) + 2);
     Hit hit{};
     for (int Y = y0; Y <= y1; ++Y)
       for (int X = x0; X <= x1; ++X)
@@ -287,10 +289,10 @@ Image8 makeFenceTexture(int size) {
           const float slot = u * pickets, within = slot - std::floor(slot) - 0.5f;  // [-0.5, 0.5)
           const float halfWidth = 0.5f * picketWidth * pickets;
           // A picket is a strip with a pointed top: its half width grows from 0 at v = 0.02.
-          const bool picket = std::abs(within) < halfWidth && v > 0.02f &&
-                              std::abs(within) < (v - 0.02f) * 1.6f && v < 0.98f;
-          const bool rail = (v > railTop[0] && v < railTop[0] + railHeight) ||
-                            (v > railTop[1] && v < railTop[1] + railHeight);
+          const bool picket =
+              std::abs(within) < halfWidth && v > 0.02f && std::abs(within) < (v - 0.02f) * 1.6f && v < 0.98f;
+          const bool rail =
+              (v > railTop[0] && v < railTop[0] + railHeight) || (v > railTop[1] && v < railTop[1] + railHeight);
           covered += picket || rail;
         }
       const float grain = 0.85f + 0.3f * tilingFbm((float(x) + 0.5f) / float(size) * 0.25f,

@@ -52,8 +52,8 @@ ImageF blank(int w, int h, int channels) {
 void requireImage(const ImageF& img, const char* what) {
   if (img.width < 1 || img.height < 1 || img.channels < 1 ||
       img.data.size() != std::size_t(img.width) * img.height * img.channels)
-    throw std::invalid_argument(std::string(what) + ": empty or inconsistent image (" + std::to_string(img.width) + "x" +
-                                std::to_string(img.height) + "x" + std::to_string(img.channels) + ")");
+    throw std::invalid_argument(std::string(what) + ": empty or inconsistent image (" + std::to_string(img.width) +
+                                "x" + std::to_string(img.height) + "x" + std::to_string(img.channels) + ")");
 }
 
 // Averages the texels (2x + a, 2y + b) for a < fx, b < fy.
@@ -165,7 +165,8 @@ RipAtlas buildRipAtlas(const ImageF& base) {
     for (int i = 0; i < r.levelsX; ++i) {
       for (int ty = 0; ty < level.height; ++ty)
         for (int tx = 0; tx < level.width; ++tx)
-          for (int c = 0; c < base.channels; ++c) r.atlas.at(r.offsetX[i] + tx, r.offsetY[j] + ty, c) = level.at(tx, ty, c);
+          for (int c = 0; c < base.channels; ++c)
+            r.atlas.at(r.offsetX[i] + tx, r.offsetY[j] + ty, c) = level.at(tx, ty, c);
       if (i + 1 < r.levelsX) level = boxDownsampleX(level);
     }
     if (j + 1 < r.levelsY) row = boxDownsampleY(row);
@@ -184,12 +185,9 @@ Footprint footprint(const glm::vec2& dUVdx, const glm::vec2& dUVdy, const glm::i
   f.pmin = std::min(f.px, f.py);
   f.lambda = f.pmax > 0 ? std::log2(f.pmax) : -std::numeric_limits<float>::infinity();
   const int maxN = std::max(1, int(std::floor(maxAniso)));
-  if (f.pmax <= 0)
-    f.probes = 1;
-  else if (f.pmin <= 0)
-    f.probes = maxN;
-  else
-    f.probes = int(std::min<double>(std::ceil(double(f.pmax) / double(f.pmin)), double(maxN)));
+  if (f.pmax <= 0) f.probes = 1;
+  else if (f.pmin <= 0) f.probes = maxN;
+  else f.probes = int(std::min<double>(std::ceil(double(f.pmax) / double(f.pmin)), double(maxN)));
   f.lambdaAniso = f.pmax > 0 ? std::log2(f.pmax / float(f.probes)) : f.lambda;
   return f;
 }

@@ -68,12 +68,12 @@ RipAtlas buildRipAtlas(const ImageF& base);
 // ---- Level of detail and anisotropy (per pixel, from screen-space derivatives) ----------------
 // Derivatives are of (u, v) in [0,1] units; `size` converts them to texels.
 struct Footprint {
-  float px = 0, py = 0;      // |d(uv)/dx|, |d(uv)/dy| in texels: the pixel's footprint axes
+  float px = 0, py = 0;  // |d(uv)/dx|, |d(uv)/dy| in texels: the pixel's footprint axes
   float pmax = 0, pmin = 0;
-  float lambda = 0;          // isotropic: log2(pmax) (GL's rho = max(px, py))
-  int probes = 1;            // anisotropic N = min(ceil(pmax / pmin), maxAniso), 1 when isotropic
-  float lambdaAniso = 0;     // log2(pmax / N): the level each probe reads
-  bool majorIsX = true;      // probes step along d(uv)/dx (else d(uv)/dy)
+  float lambda = 0;       // isotropic: log2(pmax) (GL's rho = max(px, py))
+  int probes = 1;         // anisotropic N = min(ceil(pmax / pmin), maxAniso), 1 when isotropic
+  float lambdaAniso = 0;  // log2(pmax / N): the level each probe reads
+  bool majorIsX = true;   // probes step along d(uv)/dx (else d(uv)/dy)
 };
 // A zero footprint gives lambda = -infinity (pure magnification); pmin = 0 with pmax > 0 gives
 // N = maxAniso (floor(maxAniso), at least 1).
@@ -102,8 +102,8 @@ glm::vec4 sampleBilinear(const ImageF& level, const glm::vec2& uv, Wrap s = Wrap
 // and trilinear = Linear/Linear). lambda <= 0 uses the magnification filter on level 0.
 glm::vec4 sampleLod(const std::vector<ImageF>& chain, const glm::vec2& uv, float lambda, const SamplerState& s);
 // The full path: lambda from the derivatives (+ bias), then anisotropic probes when maxAniso > 1.
-glm::vec4 sample(const std::vector<ImageF>& chain, const glm::vec2& uv, const glm::vec2& dUVdx,
-                 const glm::vec2& dUVdy, const SamplerState& s);
+glm::vec4 sample(const std::vector<ImageF>& chain, const glm::vec2& uv, const glm::vec2& dUVdx, const glm::vec2& dUVdy,
+                 const SamplerState& s);
 
 // ---- Texture-coordinate projections (seeds 004, projecting texture coordinates) ---------------
 // Plane: (x, y) of the point in the projection's frame; here the xz ground plane: (x, z).

@@ -8,13 +8,13 @@ namespace shadowlab::gl {
 struct Caps {
   int major = 0, minor = 0;
   std::string vendor, renderer, version, glsl;
-  bool khrDebug = false;        // debug callback + object labels (4.3 or GL_KHR_debug)
-  bool clipControl = false;     // [0,1] depth (4.5 or GL_ARB_clip_control)
-  bool anisotropic = false;     // GL_EXT/ARB_texture_filter_anisotropic
+  bool khrDebug = false;     // debug callback + object labels (4.3 or GL_KHR_debug)
+  bool clipControl = false;  // [0,1] depth (4.5 or GL_ARB_clip_control)
+  bool anisotropic = false;  // GL_EXT/ARB_texture_filter_anisotropic
   float maxAnisotropy = 1.0f;
   bool computeShaders = false;  // 4.3 or GL_ARB_compute_shader
   bool directStateAccess = false;
-  bool timerQuery = false;      // 3.3 core; still checked (some drivers lie)
+  bool timerQuery = false;  // 3.3 core; still checked (some drivers lie)
   bool atLeast(int ma, int mi) const { return major > ma || (major == ma && minor >= mi); }
   std::string summary() const;  // one line for the UI header and logs
 };

@@ -17,8 +17,8 @@ void record(const std::string& message) {
   std::fprintf(stderr, "GL error: %s\n", message.c_str());
 }
 
-void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
-                          const GLchar* message, const void*) {
+void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length, const GLchar* message,
+                          const void*) {
   // A shader that fails to compile is reported by its Program (file:line, last good program kept),
   // not as a GL error: Mesa also sends the compiler's log through this callback.
   if (type == GL_DEBUG_TYPE_ERROR && source != GL_DEBUG_SOURCE_SHADER_COMPILER) {

@@ -7,9 +7,9 @@
 
 namespace shadowlab::gl {
 
-void installDebugOutput();             // after the context is current
-void checkErrors(const char* where);   // glGetError poll; records any error with `where`
-int errorCount();                      // GL debug messages of type error, and polled errors
+void installDebugOutput();                        // after the context is current
+void checkErrors(const char* where);              // glGetError poll; records any error with `where`
+int errorCount();                                 // GL debug messages of type error, and polled errors
 const std::vector<std::string>& errorMessages();  // the first few, for the report at exit
 
 // Gives a GL object a debug label (no-op without KHR_debug). `identifier`: GL_BUFFER, GL_TEXTURE...

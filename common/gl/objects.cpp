@@ -72,8 +72,11 @@ Sampler makeSampler(const std::string& name) {
 void requireComplete(GLenum target, const std::string& name) {
   const GLenum status = glCheckFramebufferStatus(target);
   if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw std::runtime_error("framebuffer '" + name + "' is incomplete (status 0x" +
-                             [&] { char b[16]; std::snprintf(b, sizeof b, "%04X", status); return std::string(b); }() + ")");
+    throw std::runtime_error("framebuffer '" + name + "' is incomplete (status 0x" + [&] {
+      char b[16];
+      std::snprintf(b, sizeof b, "%04X", status);
+      return std::string(b);
+    }() + ")");
 }
 
 RenderTarget makeRenderTarget(int width, int height, const std::string& name) {
@@ -87,8 +90,8 @@ RenderTarget makeRenderTarget(int width, int height, const std::string& name) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   rt.depthStencil = makeTexture(GL_TEXTURE_2D, name + ".depth");
   glBindTexture(GL_TEXTURE_2D, rt.depthStencil.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, width, height, 0, GL_DEPTH_STENCIL,
-               GL_UNSIGNED_INT_24_8, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, width, height, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+               nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glBindTexture(GL_TEXTURE_2D, 0);

@@ -38,15 +38,33 @@ class Handle {
 };
 
 namespace detail {
-struct BufferTraits { static void destroy(GLuint id) { glDeleteBuffers(1, &id); } };
-struct VertexArrayTraits { static void destroy(GLuint id) { glDeleteVertexArrays(1, &id); } };
-struct TextureTraits { static void destroy(GLuint id) { glDeleteTextures(1, &id); } };
-struct FramebufferTraits { static void destroy(GLuint id) { glDeleteFramebuffers(1, &id); } };
-struct RenderbufferTraits { static void destroy(GLuint id) { glDeleteRenderbuffers(1, &id); } };
-struct QueryTraits { static void destroy(GLuint id) { glDeleteQueries(1, &id); } };
-struct SamplerTraits { static void destroy(GLuint id) { glDeleteSamplers(1, &id); } };
-struct ProgramTraits { static void destroy(GLuint id) { glDeleteProgram(id); } };
-struct ShaderTraits { static void destroy(GLuint id) { glDeleteShader(id); } };
+struct BufferTraits {
+  static void destroy(GLuint id) { glDeleteBuffers(1, &id); }
+};
+struct VertexArrayTraits {
+  static void destroy(GLuint id) { glDeleteVertexArrays(1, &id); }
+};
+struct TextureTraits {
+  static void destroy(GLuint id) { glDeleteTextures(1, &id); }
+};
+struct FramebufferTraits {
+  static void destroy(GLuint id) { glDeleteFramebuffers(1, &id); }
+};
+struct RenderbufferTraits {
+  static void destroy(GLuint id) { glDeleteRenderbuffers(1, &id); }
+};
+struct QueryTraits {
+  static void destroy(GLuint id) { glDeleteQueries(1, &id); }
+};
+struct SamplerTraits {
+  static void destroy(GLuint id) { glDeleteSamplers(1, &id); }
+};
+struct ProgramTraits {
+  static void destroy(GLuint id) { glDeleteProgram(id); }
+};
+struct ShaderTraits {
+  static void destroy(GLuint id) { glDeleteShader(id); }
+};
 }  // namespace detail
 
 using Buffer = Handle<detail::BufferTraits>;

@@ -48,7 +48,8 @@ std::string infoLog(GLuint object, bool isProgram) {
   GLint length = 0;
   isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
   std::string log(std::max(length, 1), '\0');
-  isProgram ? glGetProgramInfoLog(object, length, nullptr, log.data()) : glGetShaderInfoLog(object, length, nullptr, log.data());
+  isProgram ? glGetProgramInfoLog(object, length, nullptr, log.data())
+            : glGetShaderInfoLog(object, length, nullptr, log.data());
   log.resize(std::char_traits<char>::length(log.c_str()));
   return log;
 }
@@ -113,8 +114,9 @@ bool Program::reloadIfChanged() {
   const double t = now();
   if (t - lastPoll_ < 0.25) return false;
   lastPoll_ = t;
-  const bool changed = sources_.size() < files_.size() || std::any_of(sources_.begin(), sources_.end(),
-                                                       [](const ShaderSource& s) { return dependenciesChanged(s); });
+  const bool changed =
+      sources_.size() < files_.size() ||
+      std::any_of(sources_.begin(), sources_.end(), [](const ShaderSource& s) { return dependenciesChanged(s); });
   if (!changed) return false;
   sources_.clear();
   return build();

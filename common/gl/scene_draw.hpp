@@ -16,10 +16,10 @@
 namespace shadowlab::gl {
 
 struct SceneDrawOptions {
-  bool textures = true;                // bind material textures (uUseTexture says whether there is one)
-  std::optional<float> specular;       // override every material's k_s (a lesson's slider)
-  std::optional<float> shininess;      // override every material's exponent
-  GLenum textureUnit = GL_TEXTURE0;    // where the material texture goes (uTexture's unit)
+  bool textures = true;              // bind material textures (uUseTexture says whether there is one)
+  std::optional<float> specular;     // override every material's k_s (a lesson's slider)
+  std::optional<float> shininess;    // override every material's exponent
+  GLenum textureUnit = GL_TEXTURE0;  // where the material texture goes (uTexture's unit)
   // Draw only objects for which this returns true (caster culling, receivers only...); empty: all.
   std::function<bool(std::size_t object)> filter;
   // Called after the object's VAO is bound and its uniforms set, right before it is drawn.
@@ -31,6 +31,7 @@ struct SceneDrawOptions {
 void setLight(const Program& program, const std::string& name, const Light& light);
 
 // Returns the number of triangles drawn.
-std::size_t drawScene(const Program& program, const Scene& scene, const GpuScene& gpu, const SceneDrawOptions& options = {});
+std::size_t drawScene(const Program& program, const Scene& scene, const GpuScene& gpu,
+                      const SceneDrawOptions& options = {});
 
 }  // namespace shadowlab::gl

@@ -41,7 +41,8 @@ void allocate(GLenum target, int size, DepthFormat format) {
       glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GLint(depthInternalFormat(format)), size, size, 0,
                    GL_DEPTH_COMPONENT, type, nullptr);
   } else {
-    glTexImage2D(GL_TEXTURE_2D, 0, GLint(depthInternalFormat(format)), size, size, 0, GL_DEPTH_COMPONENT, type, nullptr);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(depthInternalFormat(format)), size, size, 0, GL_DEPTH_COMPONENT, type,
+                 nullptr);
   }
 }
 
@@ -61,8 +62,7 @@ ShadowMap make(int size, DepthFormat format, bool cube, const std::string& label
   glBindFramebuffer(GL_FRAMEBUFFER, m.fbo.id());
   if (cube)
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X, m.texture.id(), 0);
-  else
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m.texture.id(), 0);
+  else glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m.texture.id(), 0);
   glDrawBuffer(GL_NONE);  // depth only: the light pass writes no colour (seeds 002, pass 1)
   glReadBuffer(GL_NONE);
   try {
@@ -76,14 +76,20 @@ ShadowMap make(int size, DepthFormat format, bool cube, const std::string& label
 }
 }  // namespace
 
-ShadowMap makeShadowMap(int size, DepthFormat format, const std::string& label) { return make(size, format, false, label); }
-ShadowMap makeShadowCube(int size, DepthFormat format, const std::string& label) { return make(size, format, true, label); }
+ShadowMap makeShadowMap(int size, DepthFormat format, const std::string& label) {
+  return make(size, format, false, label);
+}
+ShadowMap makeShadowCube(int size, DepthFormat format, const std::string& label) {
+  return make(size, format, true, label);
+}
 
 void beginShadowPass(const ShadowMap& map, int face) {
   glBindFramebuffer(GL_FRAMEBUFFER, map.fbo.id());
   if (map.cube) {
-    if (face < 0 || face > 5) throw std::invalid_argument("beginShadowPass: cube face " + std::to_string(face) + " is not in 0..5");
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), map.texture.id(), 0);
+    if (face < 0 || face > 5)
+      throw std::invalid_argument("beginShadowPass: cube face " + std::to_string(face) + " is not in 0..5");
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face),
+                           map.texture.id(), 0);
   }
   glViewport(0, 0, map.size, map.size);
   glDepthMask(GL_TRUE);

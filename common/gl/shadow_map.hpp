@@ -16,8 +16,8 @@ GLenum depthInternalFormat(DepthFormat format);  // GL_DEPTH_COMPONENT16 / 24 / 
 const char* depthFormatName(DepthFormat format);
 
 struct ShadowMap {
-  Texture texture;   // GL_TEXTURE_2D or GL_TEXTURE_CUBE_MAP
-  Framebuffer fbo;   // depth attachment only; no colour buffer
+  Texture texture;  // GL_TEXTURE_2D or GL_TEXTURE_CUBE_MAP
+  Framebuffer fbo;  // depth attachment only; no colour buffer
   int size = 0;
   DepthFormat format = DepthFormat::Depth24;
   bool cube = false;

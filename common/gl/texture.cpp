@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstring>
 
-
 #include "core/paths.hpp"
 #include "gl/caps.hpp"
 

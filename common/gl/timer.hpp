@@ -20,15 +20,15 @@ struct TimingSample {
 
 struct PassTiming {
   std::string name;
-  double gpuMs = 0, cpuMs = 0;         // averaged over the window
+  double gpuMs = 0, cpuMs = 0;          // averaged over the window
   double lastGpuMs = 0, lastCpuMs = 0;  // the latest resolved sample
   int samples = 0;
 };
 
 class GpuTimers {
  public:
-  static constexpr int kRing = 6;      // frames in flight before a query pair is reused
-  static constexpr int kWindow = 30;   // frames in the average
+  static constexpr int kRing = 6;     // frames in flight before a query pair is reused
+  static constexpr int kWindow = 30;  // frames in the average
 
   // Synchronous: glFinish at both ends of every pass, so a pass's CPU ms is what it really cost.
   // A software rasteriser (llvmpipe) does its work deferred, at a later flush: its timestamp

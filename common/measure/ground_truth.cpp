@@ -18,10 +18,10 @@ constexpr float kPi = 3.14159265358979323846f;
 
 // What the filter function needs to find the alpha at a hit.
 struct AlphaCard {
-  std::vector<glm::vec2> uvs;            // per vertex
-  std::vector<std::uint32_t> indices;    // three per triangle
+  std::vector<glm::vec2> uvs;          // per vertex
+  std::vector<std::uint32_t> indices;  // three per triangle
   int width = 0, height = 0;
-  std::vector<float> alpha;              // width * height, row 0 = v 0
+  std::vector<float> alpha;  // width * height, row 0 = v 0
   float cutoff = 0.5f;
 
   float sample(glm::vec2 uv) const {
@@ -29,7 +29,10 @@ struct AlphaCard {
     float fx = uv.x * width - 0.5f, fy = uv.y * height - 0.5f;
     float x0f = std::floor(fx), y0f = std::floor(fy);
     float tx = fx - x0f, ty = fy - y0f;
-    auto wrap = [](long i, int n) { long r = i % n; return int(r < 0 ? r + n : r); };
+    auto wrap = [](long i, int n) {
+      long r = i % n;
+      return int(r < 0 ? r + n : r);
+    };
     long x0 = long(x0f), y0 = long(y0f);
     int xa = wrap(x0, width), xb = wrap(x0 + 1, width);
     int ya = wrap(y0, height), yb = wrap(y0 + 1, height);
@@ -65,8 +68,13 @@ glm::vec2 concentricDisk(float u, float v) {
   float a = 2 * u - 1, b = 2 * v - 1;
   if (a == 0 && b == 0) return {0, 0};
   float r, phi;
-  if (std::abs(a) > std::abs(b)) { r = a; phi = (kPi / 4) * (b / a); }
-  else { r = b; phi = kPi / 2 - (kPi / 4) * (a / b); }
+  if (std::abs(a) > std::abs(b)) {
+    r = a;
+    phi = (kPi / 4) * (b / a);
+  } else {
+    r = b;
+    phi = kPi / 2 - (kPi / 4) * (a / b);
+  }
   return {r * std::cos(phi), r * std::sin(phi)};
 }
 
@@ -83,8 +91,13 @@ void parallelRows(int height, int threads, RowFn&& fn) {
   int count = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
   count = std::max(1, std::min(count, height));
   std::atomic<int> next{0};
-  auto worker = [&] { for (int y; (y = next.fetch_add(1)) < height;) fn(y); };
-  if (count == 1) { worker(); return; }
+  auto worker = [&] {
+    for (int y; (y = next.fetch_add(1)) < height;) fn(y);
+  };
+  if (count == 1) {
+    worker();
+    return;
+  }
   std::vector<std::thread> pool;
   for (int i = 1; i < count; ++i) pool.emplace_back(worker);
   worker();
@@ -118,8 +131,9 @@ struct GroundTruth::Impl {
 
   Impl() {
     device = rtcNewDevice(nullptr);
-    if (!device) throw std::runtime_error("GroundTruth: rtcNewDevice failed (error " +
-                                          std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+    if (!device)
+      throw std::runtime_error("GroundTruth: rtcNewDevice failed (error " +
+                               std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
   }
   ~Impl() {
     release();
@@ -144,21 +158,22 @@ SurfaceBuffer::SurfaceBuffer(int w, int h) : width(w), height(h) {
 void SurfaceBuffer::validate() const {
   std::size_t n = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
   if (width < 0 || height < 0 || position.size() != n || normal.size() != n || covered.size() != n)
-    throw std::invalid_argument("SurfaceBuffer: " + std::to_string(width) + "x" + std::to_string(height) +
-                                " needs " + std::to_string(n) + " entries, has position " +
-                                std::to_string(position.size()) + ", normal " + std::to_string(normal.size()) +
-                                ", covered " + std::to_string(covered.size()));
+    throw std::invalid_argument("SurfaceBuffer: " + std::to_string(width) + "x" + std::to_string(height) + " needs " +
+                                std::to_string(n) + " entries, has position " + std::to_string(position.size()) +
+                                ", normal " + std::to_string(normal.size()) + ", covered " +
+                                std::to_string(covered.size()));
 }
 
 SurfaceBuffer surfaceFromImages(const ImageF& position, const ImageF& normal) {
   if (position.width != normal.width || position.height != normal.height)
     throw std::invalid_argument("surfaceFromImages: position is " + std::to_string(position.width) + "x" +
-                                std::to_string(position.height) + ", normal is " + std::to_string(normal.width) +
-                                "x" + std::to_string(normal.height));
+                                std::to_string(position.height) + ", normal is " + std::to_string(normal.width) + "x" +
+                                std::to_string(normal.height));
   if (position.channels != 4 || normal.channels < 3)
-    throw std::invalid_argument("surfaceFromImages: need 4 position channels (xyz + coverage) and >= 3 normal "
-                                "channels, got " + std::to_string(position.channels) + " and " +
-                                std::to_string(normal.channels));
+    throw std::invalid_argument(
+        "surfaceFromImages: need 4 position channels (xyz + coverage) and >= 3 normal "
+        "channels, got " +
+        std::to_string(position.channels) + " and " + std::to_string(normal.channels));
   std::size_t n = std::size_t(position.width) * position.height;
   if (position.data.size() != n * 4 || normal.data.size() != n * std::size_t(normal.channels))
     throw std::invalid_argument("surfaceFromImages: data size does not match width x height x channels");
@@ -198,15 +213,14 @@ GroundTruth::GroundTruth(const Scene& scene, TextureLookup textures, GroundTruth
   rebuild(scene);
 }
 
-GroundTruth::GroundTruth(const Scene& scene, const std::map<std::string, Image8>& textures,
-                         GroundTruthOptions options)
-    : GroundTruth(scene,
-                  [copy = std::make_shared<std::map<std::string, Image8>>(textures)](
-                      const std::string& name) -> const Image8* {
-                    auto it = copy->find(name);
-                    return it == copy->end() ? nullptr : &it->second;
-                  },
-                  options) {}
+GroundTruth::GroundTruth(const Scene& scene, const std::map<std::string, Image8>& textures, GroundTruthOptions options)
+    : GroundTruth(
+          scene,
+          [copy = std::make_shared<std::map<std::string, Image8>>(textures)](const std::string& name) -> const Image8* {
+            auto it = copy->find(name);
+            return it == copy->end() ? nullptr : &it->second;
+          },
+          options) {}
 
 GroundTruth::~GroundTruth() = default;
 
@@ -216,11 +230,15 @@ void GroundTruth::rebuild(const Scene& scene) {
   // release what Embree allocated so far.
   struct SceneGuard {
     RTCScene scene;
-    ~SceneGuard() { if (scene) rtcReleaseScene(scene); }
+    ~SceneGuard() {
+      if (scene) rtcReleaseScene(scene);
+    }
   } building{rtcNewScene(impl_->device)};
   struct GeometryGuard {
     RTCGeometry geometry;
-    ~GeometryGuard() { if (geometry) rtcReleaseGeometry(geometry); }
+    ~GeometryGuard() {
+      if (geometry) rtcReleaseGeometry(geometry);
+    }
   };
   std::vector<std::unique_ptr<AlphaCard>> cards;
   std::size_t triangles = 0;
@@ -229,8 +247,8 @@ void GroundTruth::rebuild(const Scene& scene) {
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const SceneObject& object = scene.objects[o];
     if (object.mesh >= scene.meshes.size())
-      throw std::invalid_argument("GroundTruth: object '" + object.name + "' uses mesh " +
-                                  std::to_string(object.mesh) + " of " + std::to_string(scene.meshes.size()));
+      throw std::invalid_argument("GroundTruth: object '" + object.name + "' uses mesh " + std::to_string(object.mesh) +
+                                  " of " + std::to_string(scene.meshes.size()));
     const Mesh& mesh = scene.meshes[object.mesh];
     // Bounds of every object, casters or not: eps follows the scene's scale.
     for (const glm::vec3& p : mesh.positions) bounds.extend(glm::vec3(object.model * glm::vec4(p, 1.0f)));
@@ -238,19 +256,20 @@ void GroundTruth::rebuild(const Scene& scene) {
     for (std::uint32_t i : mesh.indices)
       if (i >= mesh.positions.size())
         throw std::invalid_argument("GroundTruth: mesh " + std::to_string(object.mesh) + " has index " +
-                                    std::to_string(i) + " >= " + std::to_string(mesh.positions.size()) +
-                                    " vertices");
+                                    std::to_string(i) + " >= " + std::to_string(mesh.positions.size()) + " vertices");
 
     GeometryGuard guard{rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE)};
     RTCGeometry geom = guard.geometry;
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), mesh.positions.size()));
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
       glm::vec3 w(object.model * glm::vec4(mesh.positions[v], 1.0f));
-      vertices[3 * v] = w.x; vertices[3 * v + 1] = w.y; vertices[3 * v + 2] = w.z;
+      vertices[3 * v] = w.x;
+      vertices[3 * v + 1] = w.y;
+      vertices[3 * v + 2] = w.z;
     }
-    auto* index = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), mesh.triangleCount()));
+    auto* index = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                      3 * sizeof(std::uint32_t), mesh.triangleCount()));
     std::copy(mesh.indices.begin(), mesh.indices.begin() + mesh.triangleCount() * 3, index);
 
     const Material* material = object.material < scene.materials.size() ? &scene.materials[object.material] : nullptr;
@@ -315,8 +334,12 @@ bool occludedRay(RTCScene scene, const glm::vec3& o, const glm::vec3& d, float t
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray{};
-  ray.org_x = o.x; ray.org_y = o.y; ray.org_z = o.z;
-  ray.dir_x = d.x; ray.dir_y = d.y; ray.dir_z = d.z;
+  ray.org_x = o.x;
+  ray.org_y = o.y;
+  ray.org_z = o.z;
+  ray.dir_x = d.x;
+  ray.dir_y = d.y;
+  ray.dir_z = d.z;
   ray.tnear = tnear;
   ray.tfar = tfar;
   ray.mask = 0xFFFFFFFFu;
@@ -361,7 +384,10 @@ ImageF GroundTruth::hardVisibility(const SurfaceBuffer& surface, const Light& li
       }
       bool facing = glm::dot(n, toLight) > 0.0f;
       if (facing && light.kind == LightKind::Spot && glm::dot(-toLight, spotAxis) < cosOuter) facing = false;
-      if (!facing) { out.data[i] = kNotFacing; continue; }
+      if (!facing) {
+        out.data[i] = kNotFacing;
+        continue;
+      }
       glm::vec3 origin = p + eps * n;
       float tfar = light.kind == LightKind::Directional ? distance : glm::length(light.position - origin) - eps;
       glm::vec3 dir = light.kind == LightKind::Directional ? toLight : glm::normalize(light.position - origin);
@@ -378,7 +404,8 @@ ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& li
   checkLightKind(light, "softVisibility");
   if (samples <= 0) throw std::invalid_argument("softVisibility: samples " + std::to_string(samples) + " must be > 0");
   if (light.kind == LightKind::Directional)
-    throw std::invalid_argument("softVisibility: light kind Directional has no area (use Point or Spot with an area shape)");
+    throw std::invalid_argument(
+        "softVisibility: light kind Directional has no area (use Point or Spot with an area shape)");
   if (light.area != AreaShape::Sphere && light.area != AreaShape::Rectangle)
     throw std::invalid_argument("softVisibility: area shape " + std::to_string(int(light.area)) +
                                 " is not Sphere or Rectangle (light kind " + kindName(light.kind) + ")");
@@ -389,7 +416,8 @@ ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& li
                                 std::to_string(light.size.y) + " must be positive");
   auto start = std::chrono::steady_clock::now();
   int sx = 1;
-  for (int d = 1; d * d <= samples; ++d) if (samples % d == 0) sx = d;
+  for (int d = 1; d * d <= samples; ++d)
+    if (samples % d == 0) sx = d;
   const int sy = samples / sx;
 
   ImageF out;
@@ -414,7 +442,10 @@ ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& li
       glm::vec3 axis = centreDistance > 0.0f ? toCentre / centreDistance : glm::vec3(0);
       bool facing = glm::dot(n, axis) > 0.0f;
       if (facing && light.kind == LightKind::Spot && glm::dot(-axis, spotAxis) < cosOuter) facing = false;
-      if (!facing) { out.data[i] = kNotFacing; continue; }
+      if (!facing) {
+        out.data[i] = kNotFacing;
+        continue;
+      }
       const glm::vec3 origin = p + eps * n;
 
       // Sphere: uniform directions in the cone it subtends (a point inside it sees it all around).
@@ -473,8 +504,12 @@ ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& li
           }
           tfar -= eps;
           if (glm::dot(dir, n) <= 0.0f || tfar <= 0.0f) continue;  // below the horizon: hidden
-          packet.org_x[queued] = origin.x; packet.org_y[queued] = origin.y; packet.org_z[queued] = origin.z;
-          packet.dir_x[queued] = dir.x; packet.dir_y[queued] = dir.y; packet.dir_z[queued] = dir.z;
+          packet.org_x[queued] = origin.x;
+          packet.org_y[queued] = origin.y;
+          packet.org_z[queued] = origin.z;
+          packet.dir_x[queued] = dir.x;
+          packet.dir_y[queued] = dir.y;
+          packet.dir_z[queued] = dir.z;
           packet.tnear[queued] = 0.0f;
           packet.tfar[queued] = tfar;
           packet.time[queued] = 0.0f;

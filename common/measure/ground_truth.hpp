@@ -41,7 +41,9 @@ struct SurfaceBuffer {
   SurfaceBuffer(int w, int h);  // every pixel uncovered; throws std::invalid_argument on w,h < 0
   std::size_t index(int x, int y) const { return std::size_t(y) * width + x; }
   void set(int x, int y, const glm::vec3& p, const glm::vec3& n) {
-    position[index(x, y)] = p; normal[index(x, y)] = n; covered[index(x, y)] = 1;
+    position[index(x, y)] = p;
+    normal[index(x, y)] = n;
+    covered[index(x, y)] = 1;
   }
   // Throws std::invalid_argument unless the three arrays hold width * height entries.
   void validate() const;
@@ -70,10 +72,9 @@ struct GroundTruthOptions {
 };
 
 class GroundTruth {
-public:
+ public:
   GroundTruth(const Scene& scene, TextureLookup textures = {}, GroundTruthOptions options = {});
-  GroundTruth(const Scene& scene, const std::map<std::string, Image8>& textures,
-              GroundTruthOptions options = {});
+  GroundTruth(const Scene& scene, const std::map<std::string, Image8>& textures, GroundTruthOptions options = {});
   ~GroundTruth();
   GroundTruth(const GroundTruth&) = delete;
   GroundTruth& operator=(const GroundTruth&) = delete;
@@ -95,8 +96,7 @@ public:
   // tangent and size.y along direction x tangent). Samples below the receiver's horizon count as
   // hidden. kNotFacing where N.L <= 0 toward the light's centre (as for hard shadows).
   // samples = sx * sy with sx the largest divisor <= sqrt(samples): square counts stratify best.
-  ImageF softVisibility(const SurfaceBuffer& surface, const Light& areaLight, int samples,
-                        std::uint64_t seed) const;
+  ImageF softVisibility(const SurfaceBuffer& surface, const Light& areaLight, int samples, std::uint64_t seed) const;
 
   float rayEpsilon() const { return epsilon_; }
   std::size_t triangleCount() const { return triangles_; }
@@ -109,7 +109,7 @@ public:
 
   struct Impl;
 
-private:
+ private:
   std::unique_ptr<Impl> impl_;
   TextureLookup textures_;
   GroundTruthOptions options_;

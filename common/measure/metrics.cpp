@@ -53,13 +53,17 @@ HardShadowErrors compareHardImpl(const ImageF& technique, const ImageF& referenc
         for (int dx = -1; dx <= 1; ++dx) {
           int nx = x + dx, ny = y + dy;
           if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= w || ny >= h || !isFacing(nx, ny)) continue;
-          if (refLit(nx, ny) != lit) { edge = true; break; }
+          if (refLit(nx, ny) != lit) {
+            edge = true;
+            break;
+          }
         }
       bool techLit = technique.data[std::size_t(y) * w + x] >= litThreshold;
       bool wrong = techLit != lit;
       if (wrong) {
         ++e.misclassified;
-        if (techLit) ++e.leaks; else ++e.falseShadows;
+        if (techLit) ++e.leaks;
+        else ++e.falseShadows;
       }
       if (edge) ++e.edgePixels;
       else if (wrong) ++e.edgeTolerantMisclassified;
@@ -85,7 +89,10 @@ Image8 blank(int w, int h) {
   return out;
 }
 void put(Image8& image, std::size_t i, Rgb8 c) {
-  image.data[4 * i] = c.r; image.data[4 * i + 1] = c.g; image.data[4 * i + 2] = c.b; image.data[4 * i + 3] = 255;
+  image.data[4 * i] = c.r;
+  image.data[4 * i + 1] = c.g;
+  image.data[4 * i + 2] = c.b;
+  image.data[4 * i + 3] = 255;
 }
 
 }  // namespace
@@ -140,7 +147,10 @@ Image8 hardErrorHeatmap(const ImageF& technique, const ImageF& reference, float 
   for (std::size_t i = 0; i < reference.data.size(); ++i) {
     float r = reference.data[i];
     if (r < -1.5f) continue;  // background
-    if (r < 0.0f) { put(out, i, {50, 50, 50}); continue; }
+    if (r < 0.0f) {
+      put(out, i, {50, 50, 50});
+      continue;
+    }
     bool refLit = r >= 0.5f, techLit = technique.data[i] >= litThreshold;
     if (techLit && !refLit) put(out, i, kLeakColor);
     else if (!techLit && refLit) put(out, i, kFalseShadowColor);
@@ -151,12 +161,16 @@ Image8 hardErrorHeatmap(const ImageF& technique, const ImageF& reference, float 
 
 Image8 softErrorHeatmap(const ImageF& technique, const ImageF& reference, float fullScale) {
   checkPair(technique, reference, "softErrorHeatmap");
-  if (!(fullScale > 0.0f)) throw std::invalid_argument("softErrorHeatmap: fullScale " + std::to_string(fullScale) + " must be > 0");
+  if (!(fullScale > 0.0f))
+    throw std::invalid_argument("softErrorHeatmap: fullScale " + std::to_string(fullScale) + " must be > 0");
   Image8 out = blank(reference.width, reference.height);
   for (std::size_t i = 0; i < reference.data.size(); ++i) {
     float r = reference.data[i];
     if (r < -1.5f) continue;
-    if (r < 0.0f) { put(out, i, {50, 50, 50}); continue; }
+    if (r < 0.0f) {
+      put(out, i, {50, 50, 50});
+      continue;
+    }
     std::uint8_t g = std::uint8_t(std::lround(90 + 110 * std::clamp(r, 0.0f, 1.0f)));
     float d = technique.data[i] - r;
     float t = std::min(std::abs(d) / fullScale, 1.0f);

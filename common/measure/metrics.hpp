@@ -26,16 +26,16 @@ struct Rgb8 {
 struct HardShadowErrors {
   std::size_t facingPixels = 0;
   std::size_t misclassified = 0, leaks = 0, falseShadows = 0;
-  std::size_t edgePixels = 0;                 // facing pixels excluded by the edge tolerance
-  std::size_t edgeTolerantMisclassified = 0;  // misclassified among the rest
+  std::size_t edgePixels = 0;                                    // facing pixels excluded by the edge tolerance
+  std::size_t edgeTolerantMisclassified = 0;                     // misclassified among the rest
   double misclassifiedPct = 0, leakPct = 0, falseShadowPct = 0;  // of facingPixels
-  double edgeTolerantPct = 0;  // of facingPixels - edgePixels
+  double edgeTolerantPct = 0;                                    // of facingPixels - edgePixels
 };
 HardShadowErrors compareHard(const ImageF& technique, const ImageF& reference, float litThreshold = 0.5f);
 // `facing`: one byte per pixel, non-zero where the pixel faces the light (overrides the reference's
 // own marks; reference values < 0 inside it count as shadowed).
-HardShadowErrors compareHard(const ImageF& technique, const ImageF& reference,
-                             const std::vector<std::uint8_t>& facing, float litThreshold = 0.5f);
+HardShadowErrors compareHard(const ImageF& technique, const ImageF& reference, const std::vector<std::uint8_t>& facing,
+                             float litThreshold = 0.5f);
 // A technique's 8-bit lit mask (channel `channel`, 255 lit) as a visibility image in [0,1].
 ImageF visibilityFromMask(const Image8& mask, int channel = 0);
 
@@ -48,8 +48,8 @@ struct SoftShadowErrors {
 SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference);
 
 // ---- Heatmaps (RGBA, alpha 255; 0 for background) ----------------------------------------------
-inline constexpr Rgb8 kLeakColor{255, 48, 32};         // lit, should be shadowed
-inline constexpr Rgb8 kFalseShadowColor{40, 110, 255}; // shadowed, should be lit
+inline constexpr Rgb8 kLeakColor{255, 48, 32};          // lit, should be shadowed
+inline constexpr Rgb8 kFalseShadowColor{40, 110, 255};  // shadowed, should be lit
 // Agreement is grey: lit 200, shadowed 110; not facing 50; background transparent black.
 Image8 hardErrorHeatmap(const ImageF& technique, const ImageF& reference, float litThreshold = 0.5f);
 // Signed soft error: too bright toward kLeakColor, too dark toward kFalseShadowColor, saturating at

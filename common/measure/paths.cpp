@@ -42,7 +42,8 @@ void CameraLightPath::add(const PathKey& key) {
     throw std::invalid_argument("CameraLightPath: key time " + std::to_string(key.time) +
                                 " is not after the previous key's " + std::to_string(keys_.back().time));
   if (!(glm::length(key.lightDirection) > 0.0f))
-    throw std::invalid_argument("CameraLightPath: light direction " + vecText(key.lightDirection) + " is not a direction");
+    throw std::invalid_argument("CameraLightPath: light direction " + vecText(key.lightDirection) +
+                                " is not a direction");
   PathKey k = key;
   k.lightDirection = glm::normalize(key.lightDirection);
   keys_.push_back(k);
@@ -50,10 +51,17 @@ void CameraLightPath::add(const PathKey& key) {
 
 PathKey CameraLightPath::sample(double time) const {
   if (keys_.empty()) throw std::logic_error("CameraLightPath::sample: the path has no keys");
-  if (!(time > keys_.front().time)) { PathKey k = keys_.front(); k.time = time; return k; }
-  if (!(time < keys_.back().time)) { PathKey k = keys_.back(); k.time = time; return k; }
-  auto next = std::upper_bound(keys_.begin(), keys_.end(), time,
-                               [](double t, const PathKey& k) { return t < k.time; });
+  if (!(time > keys_.front().time)) {
+    PathKey k = keys_.front();
+    k.time = time;
+    return k;
+  }
+  if (!(time < keys_.back().time)) {
+    PathKey k = keys_.back();
+    k.time = time;
+    return k;
+  }
+  auto next = std::upper_bound(keys_.begin(), keys_.end(), time, [](double t, const PathKey& k) { return t < k.time; });
   const PathKey& b = *next;
   const PathKey& a = *(next - 1);
   float t = float((time - a.time) / (b.time - a.time));
@@ -71,8 +79,8 @@ std::vector<PathKey> CameraLightPath::resample(int frames) const {
   if (keys_.empty()) throw std::logic_error("CameraLightPath::resample: the path has no keys");
   std::vector<PathKey> out;
   for (int i = 0; i < frames; ++i)
-    out.push_back(sample(frames == 1 ? keys_.front().time
-                                     : keys_.front().time + duration() * double(i) / double(frames - 1)));
+    out.push_back(
+        sample(frames == 1 ? keys_.front().time : keys_.front().time + duration() * double(i) / double(frames - 1)));
   return out;
 }
 
@@ -104,7 +112,9 @@ CameraLightPath CameraLightPath::read(std::istream& in, const std::string& name)
   std::string line;
   int number = 0;
   bool header = false;
-  auto fail = [&](const std::string& what) { throw std::runtime_error(name + ":" + std::to_string(number) + ": " + what); };
+  auto fail = [&](const std::string& what) {
+    throw std::runtime_error(name + ":" + std::to_string(number) + ": " + what);
+  };
   while (std::getline(in, line)) {
     ++number;
     if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
@@ -140,11 +150,12 @@ CameraLightPath CameraLightPath::read(std::istream& in, const std::string& name)
     k.lightDirection = vec(10);
     try {
       path.add(k);
-    } catch (const std::invalid_argument& e) {
-      fail(e.what());
-    }
+    } catch (const std::invalid_argument& e) { fail(e.what()); }
   }
-  if (!header) { number = std::max(number, 1); fail("empty file: expected 'shadowlab-path 1'"); }
+  if (!header) {
+    number = std::max(number, 1);
+    fail("empty file: expected 'shadowlab-path 1'");
+  }
   return path;
 }
 

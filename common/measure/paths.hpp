@@ -25,7 +25,7 @@ struct PathKey {
 };
 
 class CameraLightPath {
-public:
+ public:
   // Appends a key; throws std::invalid_argument unless its time is after the last key's and the
   // light direction is non-zero (naming the values).
   void add(const PathKey& key);
@@ -46,7 +46,7 @@ public:
   static CameraLightPath read(std::istream& in, const std::string& name);
   static CameraLightPath load(const std::string& path);
 
-private:
+ private:
   std::vector<PathKey> keys_;
 };
 

@@ -45,7 +45,8 @@ std::vector<std::size_t> paretoFront(const std::vector<std::pair<double, double>
     if (!dominated) front.push_back(i);
   }
   std::stable_sort(front.begin(), front.end(), [&](std::size_t a, std::size_t b) {
-    return points[a].first < points[b].first || (points[a].first == points[b].first && points[a].second < points[b].second);
+    return points[a].first < points[b].first ||
+           (points[a].first == points[b].first && points[a].second < points[b].second);
   });
   return front;
 }
@@ -93,7 +94,8 @@ std::vector<Column> columns(const std::vector<ReportRow>& rows) {
   hard("false_shadow_pct", [=](const HardShadowErrors& e) { return num(e.falseShadowPct); });
   hard("edge_tolerant_pct", [=](const HardShadowErrors& e) { return num(e.edgeTolerantPct); });
   c.push_back({"soft_rmse", true, [=](const ReportRow& r) { return r.hasSoft ? num(r.soft.rmse) : std::string(); }});
-  c.push_back({"soft_max_abs", true, [=](const ReportRow& r) { return r.hasSoft ? num(r.soft.maxAbs) : std::string(); }});
+  c.push_back(
+      {"soft_max_abs", true, [=](const ReportRow& r) { return r.hasSoft ? num(r.soft.maxAbs) : std::string(); }});
   auto alias = [&](const char* name, std::function<double(const AliasingStats&)> f) {
     c.push_back({name, true, [=](const ReportRow& r) { return r.hasAliasing ? num(f(r.aliasing)) : std::string(); }});
   };
@@ -138,7 +140,11 @@ std::string urlPath(const std::string& s) {
   std::string out;
   for (unsigned char ch : s) {
     if (std::isalnum(ch) || std::string("/._-~").find(char(ch)) != std::string::npos) out += char(ch);
-    else { out += '%'; out += hex[ch >> 4]; out += hex[ch & 15]; }
+    else {
+      out += '%';
+      out += hex[ch >> 4];
+      out += hex[ch & 15];
+    }
   }
   return out;
 }
@@ -264,11 +270,12 @@ std::string toJson(const std::vector<ReportRow>& rows, const std::string& title)
                    {"leakPct", finite(r.hard.leakPct)},
                    {"falseShadowPct", finite(r.hard.falseShadowPct)},
                    {"edgeTolerantPct", finite(r.hard.edgeTolerantPct)}};
-    if (r.hasSoft) j["soft"] = {{"pixels", r.soft.pixels}, {"rmse", finite(r.soft.rmse)}, {"maxAbs", finite(r.soft.maxAbs)}};
+    if (r.hasSoft)
+      j["soft"] = {{"pixels", r.soft.pixels}, {"rmse", finite(r.soft.rmse)}, {"maxAbs", finite(r.soft.maxAbs)}};
     if (r.hasAliasing)
-      j["aliasing"] = {{"pixels", r.aliasing.pixels}, {"mean", finite(r.aliasing.mean)},
-                       {"rms", finite(r.aliasing.rms)},      {"p95", finite(r.aliasing.p95)},
-                       {"max", finite(r.aliasing.max)},      {"shareAbove1", finite(r.aliasing.shareAbove1)}};
+      j["aliasing"] = {{"pixels", r.aliasing.pixels},   {"mean", finite(r.aliasing.mean)},
+                       {"rms", finite(r.aliasing.rms)}, {"p95", finite(r.aliasing.p95)},
+                       {"max", finite(r.aliasing.max)}, {"shareAbove1", finite(r.aliasing.shareAbove1)}};
     j["imageThumbnail"] = r.imageThumbnail;
     j["errorThumbnail"] = r.errorThumbnail;
     list.push_back(std::move(j));
@@ -337,8 +344,7 @@ std::string toHtml(const std::vector<ReportRow>& rows, const std::string& title)
         if (image)
           s << "<a href=\"" << html(urlPath(v)) << "\"><img class=\"thumb\" src=\"" << html(urlPath(v)) << "\" alt=\""
             << html(c.header + " of " + label(r)) << "\"></a>";
-        else
-          s << html(v);
+        else s << html(v);
         s << "</td>";
       }
       s << "</tr>\n";
@@ -372,9 +378,12 @@ std::string writeReport(const std::string& folder, const std::string& stem, cons
 // ---- ProgressBar --------------------------------------------------------------------------------
 
 ProgressBar::ProgressBar(std::size_t total, std::string label, std::FILE* out, bool force)
-    : total_(total), label_(std::move(label)), out_(out),
+    : total_(total),
+      label_(std::move(label)),
+      out_(out),
       active_(out != nullptr && (force || ::isatty(::fileno(out)))),
-      start_(std::chrono::steady_clock::now()), lastDraw_(start_ - std::chrono::seconds(1)) {
+      start_(std::chrono::steady_clock::now()),
+      lastDraw_(start_ - std::chrono::seconds(1)) {
   if (active_) draw(false);
 }
 
@@ -417,7 +426,7 @@ std::string ProgressBar::render(const std::string& label, std::size_t done, std:
     else std::snprintf(buffer, sizeof buffer, "%ld:%02ld", s / 60, s % 60);
     return std::string(buffer);
   };
-  std::string eta = done == 0 ? "--:--"
+  std::string eta = done == 0       ? "--:--"
                     : done >= total ? clock(elapsedSeconds)
                                     : clock(elapsedSeconds * double(total - done) / double(done));
   char pct[16];

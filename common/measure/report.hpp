@@ -63,7 +63,7 @@ std::string writeReport(const std::string& folder, const std::string& stem, cons
 // Quiet (writes nothing) when `out` is not a terminal, unless `force`. Redraws at most every
 // 100 ms, and always at the end; finish() (or the destructor) ends the line.
 class ProgressBar {
-public:
+ public:
   ProgressBar(std::size_t total, std::string label, std::FILE* out = stderr, bool force = false);
   ~ProgressBar();
   ProgressBar(const ProgressBar&) = delete;
@@ -79,7 +79,7 @@ public:
   static std::string render(const std::string& label, std::size_t done, std::size_t total, double elapsedSeconds,
                             int barWidth = 30);
 
-private:
+ private:
   void draw(bool final);
   std::size_t total_, done_ = 0;
   std::string label_;

@@ -19,11 +19,9 @@ Plane planeThrough(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c
 
 // Box faces as quads, counter-clockwise order not needed by the clipper (convex is enough).
 void boxFaces(const glm::dvec3& lo, const glm::dvec3& hi, std::array<std::array<glm::dvec3, 4>, 6>& faces) {
-  const glm::dvec3 c[8] = {
-      {lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z},
-      {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}};
-  static constexpr int idx[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
-                                    {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+  const glm::dvec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z},
+                           {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}};
+  static constexpr int idx[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
   for (int f = 0; f < 6; ++f)
     for (int k = 0; k < 4; ++k) faces[f][k] = c[idx[f][k]];
 }
@@ -83,23 +81,20 @@ std::size_t clipBoxToFrustum(const Aabb& box, const Frustum& frustum, std::vecto
   const std::size_t before = out.size();
   // Quick reject: every box corner outside one frustum plane.
   for (const Plane& p : frustum.planes) {
-    const glm::dvec3 far(p.normal.x >= 0 ? hi.x : lo.x, p.normal.y >= 0 ? hi.y : lo.y,
-                         p.normal.z >= 0 ? hi.z : lo.z);
+    const glm::dvec3 far(p.normal.x >= 0 ? hi.x : lo.x, p.normal.y >= 0 ? hi.y : lo.y, p.normal.z >= 0 ? hi.z : lo.z);
     if (p.distance(far) < 0.0) return 0;
   }
   // Quick accept: a box wholly inside keeps its 8 corners (most receivers, most frames).
   bool inside = true;
   for (const Plane& p : frustum.planes) {
-    const glm::dvec3 near(p.normal.x >= 0 ? lo.x : hi.x, p.normal.y >= 0 ? lo.y : hi.y,
-                          p.normal.z >= 0 ? lo.z : hi.z);
+    const glm::dvec3 near(p.normal.x >= 0 ? lo.x : hi.x, p.normal.y >= 0 ? lo.y : hi.y, p.normal.z >= 0 ? lo.z : hi.z);
     if (p.distance(near) < 0.0) {
       inside = false;
       break;
     }
   }
   if (inside) {
-    for (int i = 0; i < 8; ++i)
-      out.emplace_back((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+    for (int i = 0; i < 8; ++i) out.emplace_back((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
     return 8;
   }
   // Vertices of B ∩ F lie on a face of B or a face of F: clip B's faces by F's planes, and

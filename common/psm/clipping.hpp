@@ -24,8 +24,8 @@ struct Plane {
 // A convex polytope as its inward half-spaces and its corners (enough for the polytopes here:
 // frusta, boxes, pyramids).
 struct Frustum {
-  std::array<Plane, 6> planes{};          // left, right, bottom, top, near, far (inward)
-  std::array<glm::dvec3, 8> corners{};    // NDC corner i -> (x = i&1, y = i&2, z = i&4 ? +1 : -1)
+  std::array<Plane, 6> planes{};        // left, right, bottom, top, near, far (inward)
+  std::array<glm::dvec3, 8> corners{};  // NDC corner i -> (x = i&1, y = i&2, z = i&4 ? +1 : -1)
 };
 
 // The frustum of a camera's P*V (any projective matrix with a finite inverse). Planes come from

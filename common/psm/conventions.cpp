@@ -25,9 +25,7 @@ glm::dmat4 depthRangeRemap(DepthRange range) {
 
 double depthRangeLow(DepthRange range) { return range == DepthRange::ZeroToOne ? 0.0 : -1.0; }
 
-bool isFinite(const glm::dvec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+bool isFinite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 bool isFinite(const glm::dvec4& v) { return isFinite(glm::dvec3(v)) && std::isfinite(v.w); }
 bool isFinite(const glm::dmat4& m) {
   for (int c = 0; c < 4; ++c)
@@ -53,8 +51,7 @@ glm::dvec4 homogeneousLight(const Light& light) {
   return glm::dvec4(p, 1.0);
 }
 
-PostProjectiveLight toPostProjective(const glm::dmat4& viewProj, const glm::dvec4& light,
-                                     double directionTolerance) {
+PostProjectiveLight toPostProjective(const glm::dmat4& viewProj, const glm::dvec4& light, double directionTolerance) {
   requireFinite(viewProj, "viewProj");
   if (!isFinite(light)) throw std::invalid_argument("light (homogeneous) is not finite");
   if (light == glm::dvec4(0.0)) throw std::invalid_argument("light (homogeneous) is the zero vector");
@@ -117,12 +114,18 @@ glm::dvec3 anyPerpendicular(const glm::dvec3& v) {
 
 glm::dmat4 lookAlong(const glm::dvec3& eye, const glm::dvec3& forward) {
   const glm::dvec3 f = glm::normalize(forward);
-  const glm::dvec3 s = anyPerpendicular(f);       // right
-  const glm::dvec3 u = glm::cross(s, f);          // up, so (s, u, -f) is right-handed
+  const glm::dvec3 s = anyPerpendicular(f);  // right
+  const glm::dvec3 u = glm::cross(s, f);     // up, so (s, u, -f) is right-handed
   glm::dmat4 m(1.0);
-  m[0][0] = s.x; m[1][0] = s.y; m[2][0] = s.z;
-  m[0][1] = u.x; m[1][1] = u.y; m[2][1] = u.z;
-  m[0][2] = -f.x; m[1][2] = -f.y; m[2][2] = -f.z;
+  m[0][0] = s.x;
+  m[1][0] = s.y;
+  m[2][0] = s.z;
+  m[0][1] = u.x;
+  m[1][1] = u.y;
+  m[2][1] = u.z;
+  m[0][2] = -f.x;
+  m[1][2] = -f.y;
+  m[2][2] = -f.z;
   m[3][0] = -glm::dot(s, eye);
   m[3][1] = -glm::dot(u, eye);
   m[3][2] = glm::dot(f, eye);

@@ -98,7 +98,7 @@ double cubeFaceRegionMinDistance(const glm::dvec3& L, int face) {
     side[i] = Plane{nn, -glm::dot(nn, L)};
     if (side[i].distance(n) < 0.0) side[i] = Plane{-nn, -side[i].offset};
   }
-  const Plane cube[6] = {{{-1, 0, 0}, 1}, {{1, 0, 0}, 1}, {{0, -1, 0}, 1},
+  const Plane cube[6] = {{{-1, 0, 0}, 1}, {{1, 0, 0}, 1},  {{0, -1, 0}, 1},
                          {{0, 1, 0}, 1},  {{0, 0, -1}, 1}, {{0, 0, 1}, 1}};
   double best = std::numeric_limits<double>::max();
   glm::dvec3 bufA[kMaxPolygon], bufB[kMaxPolygon];

@@ -34,8 +34,8 @@ int cubeFaceOf(const glm::dvec3& point, const PostProjectiveLight& light);
 glm::dvec3 cubeLookupVector(const glm::dvec3& point, const PostProjectiveLight& light);
 
 struct CubeFaceCamera {
-  bool used = false;  // hidden face with a map
-  LightCamera camera; // Orthographic faces keep view = identity and the whole map in projection
+  bool used = false;   // hidden face with a map
+  LightCamera camera;  // Orthographic faces keep view = identity and the whole map in projection
 };
 
 struct CubeFaceSet {

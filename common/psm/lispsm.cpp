@@ -18,8 +18,8 @@ double lispsmOptimalN(double zn, double zf, double gamma) {
   return (zn + std::sqrt(zn * zf)) / s;
 }
 
-LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirection,
-                       std::span<const glm::dvec3> pts, DepthRange range, double nOverride) {
+LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirection, std::span<const glm::dvec3> pts,
+                       DepthRange range, double nOverride) {
   requireFinite(lightDirection, "lightDirection");
   if (!(glm::length(lightDirection) > 0.0)) throw std::invalid_argument("lightDirection is the zero vector");
   if (pts.empty()) throw std::invalid_argument("LiSPSM needs at least one world point");
@@ -38,7 +38,9 @@ LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirec
   else proj /= pl;
   const glm::dvec3 zAxis = -proj;
   const glm::dvec3 xAxis = glm::cross(up, zAxis);
-  auto toFrame = [&](const glm::dvec3& p) { return glm::dvec3(glm::dot(xAxis, p), glm::dot(up, p), glm::dot(zAxis, p)); };
+  auto toFrame = [&](const glm::dvec3& p) {
+    return glm::dvec3(glm::dot(xAxis, p), glm::dot(up, p), glm::dot(zAxis, p));
+  };
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   for (const auto& p : pts) {
     const glm::dvec3 q = toFrame(p);

@@ -61,7 +61,7 @@ glm::dmat4 reversedProjection(double fovY, double aspect, double f, DepthRange r
   glm::dmat4 m(0.0);
   m[0][0] = t / aspect;
   m[1][1] = t;
-  m[2][2] = 1.0;      // z_clip = z_view + 2 f: depth = -1 + 2 f / Z
+  m[2][2] = 1.0;  // z_clip = z_view + 2 f: depth = -1 + 2 f / Z
   m[3][2] = 2.0 * f;
   m[2][3] = -1.0;
   return depthRangeRemap(range) * m;
@@ -107,8 +107,8 @@ PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts
     const double f = -lo.z + pad.z;
     cam.zNear = n;
     cam.zFar = f;
-    cam.projection = depthRangeRemap(opt.depthRange) *
-                     orthoGL(lo.x - pad.x, hi.x + pad.x, lo.y - pad.y, hi.y + pad.y, n, f);
+    cam.projection =
+        depthRangeRemap(opt.depthRange) * orthoGL(lo.x - pad.x, hi.x + pad.x, lo.y - pad.y, hi.y + pad.y, n, f);
     finish(cam, cameraViewProj);
     fit.status = FitStatus::Ok;
     return fit;
@@ -201,8 +201,8 @@ OriginalPsm fitOriginalPsm(const CameraFrustum& camera, const glm::dvec4& light,
   out.shift = real.kind == PostLightKind::Behind ? virtualCameraShift(camera, casters) : 0.0;
   glm::dmat4 slide(1.0);
   slide[3][2] = -out.shift;  // view z' = z - shift: the eye moved back along its forward axis
-  out.virtualCamera = makeCamera(slide * camera.view, camera.fovY, camera.aspect, camera.zNear + out.shift,
-                                 camera.zFar + out.shift);
+  out.virtualCamera =
+      makeCamera(slide * camera.view, camera.fovY, camera.aspect, camera.zNear + out.shift, camera.zFar + out.shift);
   const Frustum frustum = frustumFromViewProj(camera.viewProj, camera.invViewProj);
   receiverKeyPoints(receivers, frustum, worldScratch);
   toPostProjectivePoints(out.virtualCamera.viewProj, worldScratch, postScratch);

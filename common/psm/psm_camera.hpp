@@ -27,14 +27,14 @@ enum class LightProjection {
 
 struct LightCamera {
   LightProjection kind = LightProjection::Perspective;
-  glm::dmat4 view{1.0};         // post-projective -> light view (right-handed, looks down -z)
-  glm::dmat4 projection{1.0};   // light view -> light clip, depth range applied
-  glm::dmat4 postToClip{1.0};   // projection * view
-  glm::dmat4 worldToClip{1.0};  // postToClip * camera viewProj: world point -> shadow-map clip
-  glm::dvec3 eye{0.0};          // post-projective light position (Orthographic: behind the points)
+  glm::dmat4 view{1.0};             // post-projective -> light view (right-handed, looks down -z)
+  glm::dmat4 projection{1.0};       // light view -> light clip, depth range applied
+  glm::dmat4 postToClip{1.0};       // projection * view
+  glm::dmat4 worldToClip{1.0};      // postToClip * camera viewProj: world point -> shadow-map clip
+  glm::dvec3 eye{0.0};              // post-projective light position (Orthographic: behind the points)
   glm::dvec3 axis{0.0, 0.0, -1.0};  // unit viewing direction in post-projective space
-  double halfAngle = 0.0;       // of the square frustum's inscribed cone (0 for Orthographic)
-  double zNear = 0.0, zFar = 0.0;  // distances along axis (Inverse: -a and +a)
+  double halfAngle = 0.0;           // of the square frustum's inscribed cone (0 for Orthographic)
+  double zNear = 0.0, zFar = 0.0;   // distances along axis (Inverse: -a and +a)
 };
 
 struct PsmOptions {
@@ -52,8 +52,8 @@ enum class FitStatus { Ok, NoReceivers, ConeTooWide };
 struct PsmFit {
   FitStatus status = FitStatus::NoReceivers;
   PostProjectiveLight light;
-  Cone cone;            // in post-projective space, apex at the light (invalid for Direction)
-  LightCamera camera;   // meaningful when status == Ok
+  Cone cone;           // in post-projective space, apex at the light (invalid for Direction)
+  LightCamera camera;  // meaningful when status == Ok
 };
 
 // Fix 1's matrix in GL conventions: light view space looks down -z, Z = -z_view is the distance
@@ -69,8 +69,7 @@ glm::dmat4 reversedProjection(double fovY, double aspect, double f, DepthRange r
 // Fits the light camera to post-projective key points (fix 2 + fix 1). `scratch` is reused for
 // the cone's directions. cameraViewProj only fills worldToClip.
 PsmFit fitLightCamera(const PostProjectiveLight& light, std::span<const glm::dvec3> postPoints,
-                      const glm::dmat4& cameraViewProj, const PsmOptions& options,
-                      std::vector<glm::dvec3>& scratch);
+                      const glm::dmat4& cameraViewProj, const PsmOptions& options, std::vector<glm::dvec3>& scratch);
 
 // Per-frame helper owning its buffers: clip receivers against the frustum, move the key points
 // to post-projective space, fit. No allocation once the buffers are warm.
@@ -93,9 +92,9 @@ class PsmFitter {
 double virtualCameraShift(const CameraFrustum& camera, std::span<const Aabb> casters);
 
 struct OriginalPsm {
-  double shift = 0.0;            // 0 unless the light is behind the real camera
-  CameraFrustum virtualCamera;   // eye moved back by shift; near and far moved with it
-  PsmFit fit;                    // in the virtual camera's post-projective space
+  double shift = 0.0;           // 0 unless the light is behind the real camera
+  CameraFrustum virtualCamera;  // eye moved back by shift; near and far moved with it
+  PsmFit fit;                   // in the virtual camera's post-projective space
 };
 
 // The baseline: receivers are clipped against the REAL frustum, then everything happens in the

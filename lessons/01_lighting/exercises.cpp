@@ -5,9 +5,8 @@
 namespace shadowlab::ex01 {
 
 // EXERCISE 01.1
-glm::vec3 lightContribution(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V,
-                            const glm::vec3& lightColor, float fatt, float visibility,
-                            const glm::vec3& kd, float ks, float shininess) {
+glm::vec3 lightContribution(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V, const glm::vec3& lightColor,
+                            float fatt, float visibility, const glm::vec3& kd, float ks, float shininess) {
   // TODO: V f_att I [kd (N.L) + ks (R.V)^shininess]
   return glm::vec3(0.0f);
 }

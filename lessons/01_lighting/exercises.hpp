@@ -13,9 +13,8 @@ namespace shadowlab::ex01 {
 // eye. R is L mirrored about N (glm::reflect(-L, N)). Clamp R.V at 0. A surface facing away from
 // the light (N.L <= 0) receives nothing: return black (no highlight behind the terminator).
 // lightColor is I (colour times intensity), kd the diffuse colour, ks the specular weight.
-glm::vec3 lightContribution(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V,
-                            const glm::vec3& lightColor, float fatt, float visibility,
-                            const glm::vec3& kd, float ks, float shininess);
+glm::vec3 lightContribution(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V, const glm::vec3& lightColor,
+                            float fatt, float visibility, const glm::vec3& kd, float ks, float shininess);
 
 // EXERCISE 01.2: the matrix that maps normalised device coordinates [-1,1]^3 onto texture space
 // [0,1]^3: translate(0.5) * scale(0.5) (seeds 002, the texture matrix). Every shadow-map lookup

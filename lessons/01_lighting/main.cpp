@@ -31,18 +31,18 @@ enum class Impl { Reference, Student };
 enum class Shading { PerPixelGpu, PerVertexCpu };
 
 struct Params {
-  int scene = 0;                      // which procedural scene (showcase: shapes on a plane)
-  int triangles = 100000;             // scene size: shading cost grows with it
-  View view = View::Lit;              // debug views: what the shader sees
-  Impl impl = Impl::Reference;        // student: your exercises.cpp drives the shading
+  int scene = 0;                           // which procedural scene (showcase: shapes on a plane)
+  int triangles = 100000;                  // scene size: shading cost grows with it
+  View view = View::Lit;                   // debug views: what the shader sees
+  Impl impl = Impl::Reference;             // student: your exercises.cpp drives the shading
   Shading shading = Shading::PerPixelGpu;  // per-vertex CPU shading shows Gouraud's artefacts
-  float ambient = 0.08f;              // ka Ia: the light that reaches everywhere
-  float specular = 0.35f;             // ks: strength of the highlight
-  float shininess = 48.0f;            // pow: size of the highlight (larger is smaller)
-  bool blinn = true;                  // (N.H)^pow instead of the lecture's (R.V)^pow
-  bool textures = true;               // modulate: texture colour times material colour
-  bool gizmos = true;                 // draw where the lights are
-  bool animate = false;               // move the point light around the scene
+  float ambient = 0.08f;                   // ka Ia: the light that reaches everywhere
+  float specular = 0.35f;                  // ks: strength of the highlight
+  float shininess = 48.0f;                 // pow: size of the highlight (larger is smaller)
+  bool blinn = true;                       // (N.H)^pow instead of the lecture's (R.V)^pow
+  bool textures = true;                    // modulate: texture colour times material colour
+  bool gizmos = true;                      // draw where the lights are
+  bool animate = false;                    // move the point light around the scene
   Light lights[3];
 };
 
@@ -53,8 +53,11 @@ constexpr int kLightCount = 3;
 class LightingLesson : public Lesson {
  public:
   LessonInfo info() const override {
-    return {"01", "01_lighting", "Lighting",
-            "The illumination model with the visibility term V_i: ambient, diffuse, specular, attenuation, three kinds of light.",
+    return {"01",
+            "01_lighting",
+            "Lighting",
+            "The illumination model with the visibility term V_i: ambient, diffuse, specular, attenuation, three kinds "
+            "of light.",
             1,
             "Orbit around the scene and move the lights (Parameters panel).\n"
             "Try: turn lights on one at a time; compare Phong (B off) and Blinn highlights;\n"
@@ -68,9 +71,11 @@ class LightingLesson : public Lesson {
     camera.target = {0, 0.8f, 0};
     r.addChoice("scene", &p_.scene, sceneNames(), "procedural scene (deterministic from its seed)");
     r.add("triangles", &p_.triangles, 10000, 1000000, "scene size in triangles: the cost of every pass");
-    r.addChoice("view", &p_.view, {"lit", "normals", "albedo", "ndc_remap"}, "what the fragment shader outputs").hotkey = "V";
+    r.addChoice("view", &p_.view, {"lit", "normals", "albedo", "ndc_remap"}, "what the fragment shader outputs")
+        .hotkey = "V";
     r.addChoice("impl", &p_.impl, {"reference", "student"}, "whose exercise code shades (student: CPU per vertex)");
-    r.addChoice("shading", &p_.shading, {"pixel_gpu", "vertex_cpu"}, "per-pixel on the GPU, or per-vertex on the CPU (Gouraud)");
+    r.addChoice("shading", &p_.shading, {"pixel_gpu", "vertex_cpu"},
+                "per-pixel on the GPU, or per-vertex on the CPU (Gouraud)");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: light that reaches everywhere, even where V_i = 0");
     r.add("specular", &p_.specular, 0, 1, "ks: how strong the highlight is");
     r.add("shininess", &p_.shininess, 1, 256, "the exponent pow: how tight the highlight is");
@@ -115,7 +120,8 @@ class LightingLesson : public Lesson {
     const glm::mat4 viewProj = f.projection * f.view;
     const bool cpu = p_.impl == Impl::Student || p_.shading == Shading::PerVertexCpu;
     counters = {{"triangles", std::to_string(scene.triangleCount())},
-                {"shading", cpu ? (p_.impl == Impl::Student ? "CPU per vertex, student code" : "CPU per vertex") : "GPU per pixel"}};
+                {"shading", cpu ? (p_.impl == Impl::Student ? "CPU per vertex, student code" : "CPU per vertex")
+                                : "GPU per pixel"}};
 
     // ==== 1. CPU shading (only for vertex_cpu or impl=student) ====================================
     if (cpu) {
@@ -221,7 +227,8 @@ class LightingLesson : public Lesson {
           }
           if (l.kind == LightKind::Spot) {
             const float cosAngle = glm::dot(glm::normalize(l.direction), -L);
-            cone = student ? ex01::spotFactor(cosAngle, l.spotInner, l.spotOuter) : lighting::spotFactor(cosAngle, l.spotInner, l.spotOuter);
+            cone = student ? ex01::spotFactor(cosAngle, l.spotInner, l.spotOuter)
+                           : lighting::spotFactor(cosAngle, l.spotInner, l.spotOuter);
           }
           const glm::vec3 I = l.color * l.intensity * cone;
           c += student ? ex01::lightContribution(N, L, V, I, fatt, 1.0f, m.albedo, p_.specular, p_.shininess)
@@ -241,7 +248,7 @@ class LightingLesson : public Lesson {
   gl::Program sceneProgram_{"01 scene", {"01_lighting/scene.vert", "01_lighting/scene.frag"}};
   gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};
   gl::GpuMesh gizmo_;
-  std::vector<gl::Buffer> colors_;    // per object, CPU-shaded vertex colours
+  std::vector<gl::Buffer> colors_;  // per object, CPU-shaded vertex colours
   std::vector<glm::vec3> scratch_;
   int builtScene_ = -1, builtTriangles_ = -1;
 };

@@ -35,21 +35,21 @@ enum class Impl { Reference, Student };
 const std::vector<std::string> kMapSizes{"256", "512", "1024", "2048", "4096"};
 
 struct Params {
-  int scene = 2;                         // forest: leaf cards and a fence are alpha-tested casters
-  int triangles = 100000;                // scene size: the depth pass draws all of it again
-  int mapSize = 3;                       // index into kMapSizes: 2048^2 texels
+  int scene = 2;                                      // forest: leaf cards and a fence are alpha-tested casters
+  int triangles = 100000;                             // scene size: the depth pass draws all of it again
+  int mapSize = 3;                                    // index into kMapSizes: 2048^2 texels
   gl::DepthFormat format = gl::DepthFormat::Depth24;  // 16 bits shows banding and acne first
-  Compare compare = Compare::Hardware;   // ARB_shadow in the sampler, or the same test by hand
-  float offsetFactor = 4.0f;             // glPolygonOffset factor: bias grows with the depth slope
-  float offsetUnits = 4.0f;              // glPolygonOffset units: constant, in depth-format steps
-  float bias = 0.0f;                     // in-shader constant bias (texture depth units)
-  bool alphaTest = true;                 // discard the cards' holes in the depth pass too
+  Compare compare = Compare::Hardware;                // ARB_shadow in the sampler, or the same test by hand
+  float offsetFactor = 4.0f;                          // glPolygonOffset factor: bias grows with the depth slope
+  float offsetUnits = 4.0f;                           // glPolygonOffset units: constant, in depth-format steps
+  float bias = 0.0f;                                  // in-shader constant bias (texture depth units)
+  bool alphaTest = true;                              // discard the cards' holes in the depth pass too
   View view = View::Lit;
-  bool inset = true;                     // the shadow map in a corner
-  Impl impl = Impl::Reference;           // student: your texture matrix and (cpu_vertex) lookup
+  bool inset = true;                         // the shadow map in a corner
+  Impl impl = Impl::Reference;               // student: your texture matrix and (cpu_vertex) lookup
   float lightNear = 2.0f, lightFar = 80.0f;  // the light frustum's depth range: precision lives here
   float ambient = 0.12f;
-  bool animate = false;                  // swing the spot around the scene
+  bool animate = false;  // swing the spot around the scene
   Light spot;
 };
 
@@ -58,8 +58,11 @@ struct Params {
 class ShadowMapLesson : public Lesson {
  public:
   LessonInfo info() const override {
-    return {"02", "02_shadow_maps", "Shadow maps",
-            "Depth from the light into a texture, then a depth comparison through the texture matrix: a spot light's hard shadows.",
+    return {"02",
+            "02_shadow_maps",
+            "Shadow maps",
+            "Depth from the light into a texture, then a depth comparison through the texture matrix: a spot light's "
+            "hard shadows.",
             2,
             "Pass 1 renders depth from the spot light; pass 2 compares every pixel's light-space depth.\n"
             "Try: polygon offset 0 0 (acne everywhere); format 16 bits; compare=manual (same image);\n"
@@ -75,18 +78,24 @@ class ShadowMapLesson : public Lesson {
     r.addChoice("scene", &p_.scene, sceneNames(), "procedural scene (forest: alpha-tested leaves and fence)");
     r.add("triangles", &p_.triangles, 10000, 1000000, "scene size: both passes draw every triangle");
     r.addChoice("map_size", &p_.mapSize, kMapSizes, "shadow-map resolution: texels per side");
-    r.addChoice("format", &p_.format, {"16", "24", "32f"}, "depth texture format (ARB_depth_texture: 16, 24, 32F bits)").hotkey = "F";
+    r.addChoice("format", &p_.format, {"16", "24", "32f"}, "depth texture format (ARB_depth_texture: 16, 24, 32F bits)")
+        .hotkey = "F";
     r.addChoice("compare", &p_.compare, {"hardware", "manual", "cpu_vertex", "off"},
-                "sampler2DShadow (ARB_shadow), the comparison in the shader, your CPU lookup per vertex, or none").hotkey = "C";
-    r.add("offset.factor", &p_.offsetFactor, 0, 10, "glPolygonOffset factor: scales with the depth slope of each triangle");
-    r.add("offset.units", &p_.offsetUnits, 0, 100, "glPolygonOffset units: the smallest depth step of the format, times this");
+                "sampler2DShadow (ARB_shadow), the comparison in the shader, your CPU lookup per vertex, or none")
+        .hotkey = "C";
+    r.add("offset.factor", &p_.offsetFactor, 0, 10,
+          "glPolygonOffset factor: scales with the depth slope of each triangle");
+    r.add("offset.units", &p_.offsetUnits, 0, 100,
+          "glPolygonOffset units: the smallest depth step of the format, times this");
     r.add("bias", &p_.bias, 0, 0.05f, "constant bias subtracted in the shader before the comparison");
     r.add("alpha_test", &p_.alphaTest, "discard alpha-tested texels in the depth pass (holes cast holes)").hotkey = "T";
     r.addChoice("view", &p_.view, {"lit", "visibility", "light_depth", "shadow_map"},
-                "lit, V alone, the fragment's depth in the light, or the map (linearised)").hotkey = "V";
+                "lit, V alone, the fragment's depth in the light, or the map (linearised)")
+        .hotkey = "V";
     r.add("inset", &p_.inset, "show the shadow map in a corner").hotkey = "I";
     r.addChoice("impl", &p_.impl, {"reference", "student"}, "whose exercise code: your texture matrix and CPU lookup");
-    r.add("light.near", &p_.lightNear, 0.05f, 50, "the light frustum's near plane: depth precision depends on far/near");
+    r.add("light.near", &p_.lightNear, 0.05f, 50,
+          "the light frustum's near plane: depth precision depends on far/near");
     r.add("light.far", &p_.lightFar, 1, 500, "the light frustum's far plane");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: what remains in the shadow");
     r.add("animate", &p_.animate, "swing the spot light around the scene").hotkey = "A";
@@ -135,10 +144,11 @@ class ShadowMapLesson : public Lesson {
   void render(const FrameInfo& f) override {
     // The light camera: a perspective frustum around the spot's cone (seeds 002: good for spots).
     const glm::mat4 lightView = shadow::lightViewAlong(p_.spot.position, p_.spot.direction);
-    const glm::mat4 lightProj = glm::perspective(std::min(2.0f * p_.spot.spotOuter + 0.05f, 3.0f), 1.0f,
-                                                 p_.lightNear, std::max(p_.lightFar, p_.lightNear + 0.1f));
+    const glm::mat4 lightProj = glm::perspective(std::min(2.0f * p_.spot.spotOuter + 0.05f, 3.0f), 1.0f, p_.lightNear,
+                                                 std::max(p_.lightFar, p_.lightNear + 0.1f));
     const bool student = p_.impl == Impl::Student;
-    const glm::mat4 textureMatrix = student ? ex02::shadowTextureMatrix(lightProj, lightView) : shadow::textureMatrix(lightProj, lightView);
+    const glm::mat4 textureMatrix =
+        student ? ex02::shadowTextureMatrix(lightProj, lightView) : shadow::textureMatrix(lightProj, lightView);
     debug.frustum(lightProj * lightView, {1.0f, 0.9f, 0.3f, 1.0f});
     debug.cone(p_.spot.position, glm::normalize(p_.spot.direction), p_.spot.spotOuter, 12.0f, {1.0f, 0.7f, 0.2f, 1.0f});
 
@@ -177,8 +187,11 @@ class ShadowMapLesson : public Lesson {
                 {"shadow texels", std::to_string(std::uint64_t(map_.size) * std::uint64_t(map_.size))},
                 {"culled casters", "0"},
                 {"shadow map", std::to_string(map_.size) + "^2 " + gl::depthFormatName(map_.format)},
-                {"comparison", p_.compare == Compare::Hardware ? "sampler2DShadow" : p_.compare == Compare::Manual ? "in the shader"
-                               : p_.compare == Compare::CpuVertex ? (student ? "CPU per vertex, student code" : "CPU per vertex") : "off"}};
+                {"comparison", p_.compare == Compare::Hardware ? "sampler2DShadow"
+                               : p_.compare == Compare::Manual ? "in the shader"
+                               : p_.compare == Compare::CpuVertex
+                                   ? (student ? "CPU per vertex, student code" : "CPU per vertex")
+                                   : "off"}};
 
     // ==== 1b. CPU lookup per vertex (compare=cpu_vertex: the exercises' lookup on a read-back) =====
     if (p_.compare == Compare::CpuVertex && !f.godView) {
@@ -199,7 +212,8 @@ class ShadowMapLesson : public Lesson {
     if (p_.view == View::ShadowMap || (p_.inset && !f.godView)) {
       auto t = scope("map view");
       const int side = p_.view == View::ShadowMap ? std::min(f.width, f.height) : std::min(f.width, f.height) / 3;
-      glViewport(p_.view == View::ShadowMap ? (f.width - side) / 2 : f.width - side - 8, p_.view == View::ShadowMap ? 0 : 8, side, side);
+      glViewport(p_.view == View::ShadowMap ? (f.width - side) / 2 : f.width - side - 8,
+                 p_.view == View::ShadowMap ? 0 : 8, side, side);
       glDisable(GL_DEPTH_TEST);
       mapView_.use();
       mapView_.set("uDepth", 2);
@@ -245,7 +259,7 @@ class ShadowMapLesson : public Lesson {
     sceneProgram_.set("uView", int(p_.view));
     sceneProgram_.set("uMeasureLight", f.measureLight);
     sceneProgram_.set("uTexture", 0);
-    sceneProgram_.set("uShadowMap", 1);   // one texture on two units: one sampler type each
+    sceneProgram_.set("uShadowMap", 1);  // one texture on two units: one sampler type each
     sceneProgram_.set("uShadowDepth", 2);
     const Light& s = p_.spot;
     sceneProgram_.set("uSpot.kind", int(s.kind));
@@ -286,7 +300,8 @@ class ShadowMapLesson : public Lesson {
     glBindTexture(GL_TEXTURE_2D, map_.texture.id());
     glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
     const shadow::DepthMap map(map_.size, map_.size, std::move(texels));
-    while (cpuVisibility_.size() < scene_.objects.size()) cpuVisibility_.push_back(gl::makeBuffer(GL_ARRAY_BUFFER, "02 cpu visibility"));
+    while (cpuVisibility_.size() < scene_.objects.size())
+      cpuVisibility_.push_back(gl::makeBuffer(GL_ARRAY_BUFFER, "02 cpu visibility"));
     std::vector<float> v;
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       const SceneObject& o = scene_.objects[i];

@@ -37,30 +37,30 @@ const std::vector<std::string> kSizes{"256", "512", "1024", "2048", "4096", "819
 constexpr int kSun = 0, kPoint = 1, kSpot = 2;
 
 struct Params {
-  int scene = 1;                      // city: long straight edges show acne, aliasing and shimmer
-  int triangles = 60000;              // every shadow pass draws what survives culling
-  int mapSize = 3;                    // 2048^2 (index into kSizes), the sun's and the spot's maps
-  int cubeSize = 2;                   // 1024^2 per cube face
+  int scene = 1;          // city: long straight edges show acne, aliasing and shimmer
+  int triangles = 60000;  // every shadow pass draws what survives culling
+  int mapSize = 3;        // 2048^2 (index into kSizes), the sun's and the spot's maps
+  int cubeSize = 2;       // 1024^2 per cube face
   gl::DepthFormat format = gl::DepthFormat::Depth24;
   Filter filter = Filter::Hardware2x2;  // GL_LINEAR on a comparison sampler: free 2x2 PCF
-  int pcfSize = 3;                    // N of N x N PCF (odd)
-  float poissonRadius = 2.0f;         // Poisson disk radius in texels
-  float constantBias = 0.0005f;       // depth units subtracted before the comparison
-  float slopeBias = 0.0005f;          // times tan(theta): steep receivers need more
-  float maxBias = 0.003f;              // clamp: tan(theta) grows without bound at grazing light
-  float offsetFactor = 1.0f;          // glPolygonOffset factor (slope-scaled, in the depth pass)
-  float offsetUnits = 1.0f;           // glPolygonOffset units (constant, in format steps)
-  float normalOffset = 0.5f;          // lookup point moved this many texels along the normal
-  bool receiverPlane = false;         // filter taps compare against the receiver's plane
-  bool cullFront = false;             // depth pass draws back faces: the bias is the object's thickness
-  Fit fit = Fit::View;                // sun frustum around the whole scene, or only what the view needs
-  bool snap = true;                   // texel snapping: no shimmer when the camera moves
-  bool cullCasters = true;            // skip casters outside the swept light volume / light frusta
-  bool skipFaces = true;              // skip cube faces the view frustum misses
+  int pcfSize = 3;                      // N of N x N PCF (odd)
+  float poissonRadius = 2.0f;           // Poisson disk radius in texels
+  float constantBias = 0.0005f;         // depth units subtracted before the comparison
+  float slopeBias = 0.0005f;            // times tan(theta): steep receivers need more
+  float maxBias = 0.003f;               // clamp: tan(theta) grows without bound at grazing light
+  float offsetFactor = 1.0f;            // glPolygonOffset factor (slope-scaled, in the depth pass)
+  float offsetUnits = 1.0f;             // glPolygonOffset units (constant, in format steps)
+  float normalOffset = 0.5f;            // lookup point moved this many texels along the normal
+  bool receiverPlane = false;           // filter taps compare against the receiver's plane
+  bool cullFront = false;               // depth pass draws back faces: the bias is the object's thickness
+  Fit fit = Fit::View;                  // sun frustum around the whole scene, or only what the view needs
+  bool snap = true;                     // texel snapping: no shimmer when the camera moves
+  bool cullCasters = true;              // skip casters outside the swept light volume / light frusta
+  bool skipFaces = true;                // skip cube faces the view frustum misses
   float pointNear = 0.2f, pointFar = 60.0f;
   View view = View::Lit;
-  Impl impl = Impl::Reference;        // student: your culling test and fit drive the sun's pass
-  bool drift = false;                 // move the camera slowly (shows shimmer without snapping)
+  Impl impl = Impl::Reference;  // student: your culling test and fit drive the sun's pass
+  bool drift = false;           // move the camera slowly (shows shimmer without snapping)
   float ambient = 0.1f;
   Light lights[3];
 };
@@ -75,8 +75,11 @@ struct Pass {  // one light camera: what it draws and into which map
 class ShadowQualityLesson : public Lesson {
  public:
   LessonInfo info() const override {
-    return {"03", "03_shadow_quality", "Shadow-map quality",
-            "Bias family, resolution, PCF family, a directional light fitted to the view with caster culling and texel snapping, cube maps, several lights.",
+    return {"03",
+            "03_shadow_quality",
+            "Shadow-map quality",
+            "Bias family, resolution, PCF family, a directional light fitted to the view with caster culling and texel "
+            "snapping, cube maps, several lights.",
             3,
             "Bias: bias.* sliders, B front-face culling, N normal offset, R receiver plane.\n"
             "Filtering: P cycles nearest, hardware 2x2, N x N, Poisson. map_size 256..8192.\n"
@@ -96,7 +99,8 @@ class ShadowQualityLesson : public Lesson {
     r.addChoice("cube_size", &p_.cubeSize, kSizes, "point light cube-map face resolution");
     r.addChoice("format", &p_.format, {"16", "24", "32f"}, "depth format of every map");
     r.addChoice("filter", &p_.filter, {"nearest", "hardware_2x2", "pcf_nxn", "poisson"},
-                "one comparison, GL_LINEAR compare (2x2), N x N taps, or 16 rotated Poisson taps").hotkey = "P";
+                "one comparison, GL_LINEAR compare (2x2), N x N taps, or 16 rotated Poisson taps")
+        .hotkey = "P";
     r.add("pcf.size", &p_.pcfSize, 1, 9, "N of the N x N kernel (odd)");
     r.add("pcf.radius", &p_.poissonRadius, 0.5f, 8, "Poisson disk radius in texels");
     r.add("bias.constant", &p_.constantBias, 0, 0.1f, "constant depth bias in the shader");
@@ -104,17 +108,22 @@ class ShadowQualityLesson : public Lesson {
     r.add("bias.max", &p_.maxBias, 0, 0.1f, "upper clamp of the in-shader bias");
     r.add("offset.factor", &p_.offsetFactor, 0, 10, "glPolygonOffset factor: slope-scaled, in the depth pass");
     r.add("offset.units", &p_.offsetUnits, 0, 100, "glPolygonOffset units: constant, in depth-format steps");
-    r.add("bias.normal_offset", &p_.normalOffset, 0, 4, "look up from a point this many texels along the normal").hotkey = "N";
-    r.add("bias.receiver_plane", &p_.receiverPlane, "filter taps follow the receiver's plane (no PCF acne)").hotkey = "R";
+    r.add("bias.normal_offset", &p_.normalOffset, 0, 4, "look up from a point this many texels along the normal")
+        .hotkey = "N";
+    r.add("bias.receiver_plane", &p_.receiverPlane, "filter taps follow the receiver's plane (no PCF acne)").hotkey =
+        "R";
     r.add("cull_front", &p_.cullFront, "depth pass draws back faces only: closed casters need no bias").hotkey = "B";
-    r.addChoice("fit", &p_.fit, {"scene", "view"}, "sun frustum: around the scene, or fitted to the receivers in view").hotkey = "F";
+    r.addChoice("fit", &p_.fit, {"scene", "view"}, "sun frustum: around the scene, or fitted to the receivers in view")
+        .hotkey = "F";
     r.add("snap", &p_.snap, "texel snapping of the fitted frustum (no shimmer)").hotkey = "S";
     r.add("cull_casters", &p_.cullCasters, "skip casters that cannot shade anything in view").hotkey = "K";
     r.add("skip_faces", &p_.skipFaces, "skip cube faces whose frustum misses the view frustum");
     r.add("point.near", &p_.pointNear, 0.01f, 10, "cube faces' near plane");
     r.add("point.far", &p_.pointFar, 1, 500, "cube faces' far plane: beyond it, lit");
-    r.addChoice("view", &p_.view, {"lit", "visibility", "sun_map"}, "lit, V of the measured light, or the sun's map").hotkey = "V";
-    r.addChoice("impl", &p_.impl, {"reference", "student"}, "whose caster-culling test and orthographic fit drive the sun's pass");
+    r.addChoice("view", &p_.view, {"lit", "visibility", "sun_map"}, "lit, V of the measured light, or the sun's map")
+        .hotkey = "V";
+    r.addChoice("impl", &p_.impl, {"reference", "student"},
+                "whose caster-culling test and orthographic fit drive the sun's pass");
     r.add("drift", &p_.drift, "move the camera slowly along x (watch edges shimmer without snapping)").hotkey = "D";
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     Light* l = p_.lights;
@@ -140,7 +149,9 @@ class ShadowQualityLesson : public Lesson {
       const std::string n = names[i];
       r.add(n + "enabled", &l[i].enabled, "switch this light (and its map) on or off").hotkey = std::to_string(i + 1);
       if (i != kSun) r.add(n + "position", &l[i].position, -100, 100, "where the light is");
-      if (i != kPoint) r.add(n + "direction", &l[i].direction, -1, 1, i == kSun ? "the direction sunlight travels" : "the spot's axis");
+      if (i != kPoint)
+        r.add(n + "direction", &l[i].direction, -1, 1,
+              i == kSun ? "the direction sunlight travels" : "the spot's axis");
       r.add(n + "intensity", &l[i].intensity, 0, 20, "the light's strength");
     }
   }
@@ -165,7 +176,8 @@ class ShadowQualityLesson : public Lesson {
     const int size = std::stoi(kSizes[std::size_t(p_.mapSize)]), cube = std::stoi(kSizes[std::size_t(p_.cubeSize)]);
     if (sun_.size != size || sun_.format != p_.format) sun_ = gl::makeShadowMap(size, p_.format, "03 sun map");
     if (spot_.size != size || spot_.format != p_.format) spot_ = gl::makeShadowMap(size, p_.format, "03 spot map");
-    if (point_.size != cube || point_.format != p_.format) point_ = gl::makeShadowCube(cube, p_.format, "03 point cube map");
+    if (point_.size != cube || point_.format != p_.format)
+      point_ = gl::makeShadowCube(cube, p_.format, "03 point cube map");
     if (p_.drift) camera.target.x += float(f.dt) * 0.37f;
     if (p_.pcfSize % 2 == 0) p_.pcfSize += 1;
   }
@@ -182,7 +194,10 @@ class ShadowQualityLesson : public Lesson {
     std::vector<Aabb> keptBoxes;
     int culled = 0;
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      if (!scene_.objects[i].castsShadow) { sunCasters[i] = 0; continue; }
+      if (!scene_.objects[i].castsShadow) {
+        sunCasters[i] = 0;
+        continue;
+      }
       const bool keep = !p_.cullCasters || (student ? ex03::casterMayShadow(boxes_[i], viewVolume, sunDir)
                                                     : shadow::casterMayShadow(boxes_[i], viewVolume, sunDir));
       sunCasters[i] = keep;
@@ -193,15 +208,18 @@ class ShadowQualityLesson : public Lesson {
     const shadow::ConvexVolume sceneVolume = shadow::volumeFromBox(sceneBounds_);
     if (p_.fit == Fit::View) receivers = shadow::intersectionPoints(sceneVolume, viewVolume);
     if (receivers.empty()) receivers.assign(sceneVolume.corners.begin(), sceneVolume.corners.end());
-    const std::span<const Aabb> fitCasters = p_.fit == Fit::View ? std::span<const Aabb>(keptBoxes) : std::span<const Aabb>();
+    const std::span<const Aabb> fitCasters =
+        p_.fit == Fit::View ? std::span<const Aabb>(keptBoxes) : std::span<const Aabb>();
     const bool snap = p_.snap && p_.fit == Fit::View;
     const shadow::OrthoFit fit = student ? ex03::fitOrthographic(sunDir, receivers, fitCasters, sun_.size, snap)
                                          : shadow::fitOrthographic(sunDir, receivers, fitCasters, sun_.size, snap);
     const glm::mat4 sunViewProj = fit.projection * fit.view;
     const Light& spot = p_.lights[kSpot];
     const float spotFov = std::min(2.0f * spot.spotOuter + 0.05f, 3.0f);
-    const glm::mat4 spotViewProj = glm::perspective(spotFov, 1.0f, 0.5f, 150.0f) * shadow::lightViewAlong(spot.position, spot.direction);
-    const glm::mat4 cubeProj = glm::perspective(glm::radians(90.0f), 1.0f, p_.pointNear, std::max(p_.pointFar, p_.pointNear + 0.1f));
+    const glm::mat4 spotViewProj =
+        glm::perspective(spotFov, 1.0f, 0.5f, 150.0f) * shadow::lightViewAlong(spot.position, spot.direction);
+    const glm::mat4 cubeProj =
+        glm::perspective(glm::radians(90.0f), 1.0f, p_.pointNear, std::max(p_.pointFar, p_.pointNear + 0.1f));
 
     // ==== 2. shadow passes: sun, spot (one 2D map each), point (six cube faces) =================
     if (!f.godView) {
@@ -243,9 +261,11 @@ class ShadowQualityLesson : public Lesson {
       stats_ = {triangles, culled, skipped};
     }
     // Texels drawn into this frame: the sun's and spot's maps, and the cube faces not skipped.
-    const std::uint64_t mapSide = std::stoull(kSizes[std::size_t(p_.mapSize)]), cubeSide = std::stoull(kSizes[std::size_t(p_.cubeSize)]);
-    const std::uint64_t texels = std::uint64_t(p_.lights[kSun].enabled + spot.enabled) * mapSide * mapSide +
-                                 (p_.lights[kPoint].enabled ? std::uint64_t(6 - stats_.skipped) * cubeSide * cubeSide : 0);
+    const std::uint64_t mapSide = std::stoull(kSizes[std::size_t(p_.mapSize)]),
+                        cubeSide = std::stoull(kSizes[std::size_t(p_.cubeSize)]);
+    const std::uint64_t texels =
+        std::uint64_t(p_.lights[kSun].enabled + spot.enabled) * mapSide * mapSide +
+        (p_.lights[kPoint].enabled ? std::uint64_t(6 - stats_.skipped) * cubeSide * cubeSide : 0);
     counters = {{"shadow triangles", std::to_string(stats_.triangles)},
                 {"shadow texels", std::to_string(texels)},
                 {"culled casters", std::to_string(stats_.culled)},
@@ -261,8 +281,9 @@ class ShadowQualityLesson : public Lesson {
       auto t = scope("scene");
       glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      drawScene(f, shadow::textureMatrix(fit.projection, fit.view), shadow::textureMatrix(glm::mat4(1.0f), spotViewProj),
-                fit.texelWorld, 2.0f * std::tan(0.5f * spotFov) / float(spot_.size));
+      drawScene(f, shadow::textureMatrix(fit.projection, fit.view),
+                shadow::textureMatrix(glm::mat4(1.0f), spotViewProj), fit.texelWorld,
+                2.0f * std::tan(0.5f * spotFov) / float(spot_.size));
     }
 
     // ==== 4. the sun's map as an image (view=sun_map) ==============================================
@@ -300,7 +321,10 @@ class ShadowQualityLesson : public Lesson {
   std::vector<char> cullAgainst(const shadow::ConvexVolume& lightVolume, int& culled) {
     std::vector<char> keep(scene_.objects.size(), 1);
     for (std::size_t i = 0; i < keep.size(); ++i) {
-      if (!scene_.objects[i].castsShadow) { keep[i] = 0; continue; }
+      if (!scene_.objects[i].castsShadow) {
+        keep[i] = 0;
+        continue;
+      }
       keep[i] = !p_.cullCasters || shadow::volumesMayIntersect(shadow::volumeFromBox(boxes_[i]), lightVolume);
       if (!keep[i]) ++culled;  // counted per light camera: a caster can be culled from several
     }
@@ -329,7 +353,8 @@ class ShadowQualityLesson : public Lesson {
     return triangles;
   }
 
-  void drawScene(const FrameInfo& f, const glm::mat4& sunMatrix, const glm::mat4& spotMatrix, float sunTexel, float spotTexelAngle) {
+  void drawScene(const FrameInfo& f, const glm::mat4& sunMatrix, const glm::mat4& spotMatrix, float sunTexel,
+                 float spotTexelAngle) {
     gl::Program& s = sceneProgram_;
     s.use();
     s.set("uViewProj", f.projection * f.view);
@@ -369,8 +394,10 @@ class ShadowQualityLesson : public Lesson {
       s.set((n + "cosInner").c_str(), std::cos(l.spotInner));
       s.set((n + "cosOuter").c_str(), std::cos(l.spotOuter));
     }
-    const GLuint sampler = p_.filter == Filter::Nearest || p_.filter == Filter::BoxNxN ? compareNearest_.id() : compareLinear_.id();
-    const std::pair<GLenum, GLuint> maps[3] = {{GL_TEXTURE_2D, sun_.texture.id()}, {GL_TEXTURE_2D, spot_.texture.id()},
+    const GLuint sampler =
+        p_.filter == Filter::Nearest || p_.filter == Filter::BoxNxN ? compareNearest_.id() : compareLinear_.id();
+    const std::pair<GLenum, GLuint> maps[3] = {{GL_TEXTURE_2D, sun_.texture.id()},
+                                               {GL_TEXTURE_2D, spot_.texture.id()},
                                                {GL_TEXTURE_CUBE_MAP, point_.texture.id()}};
     for (int u = 0; u < 3; ++u) {
       glActiveTexture(GLenum(GL_TEXTURE1 + u));

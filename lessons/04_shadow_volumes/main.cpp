@@ -39,22 +39,22 @@ enum class OpenMeshes { Skip, ZPassOnly };
 enum class Impl { Reference, Student };
 
 struct Params {
-  int scene = 0;                          // showcase: closed shapes on an open ground plane
-  int triangles = 40000;                  // more triangles: more silhouette edges, more fill
-  View view = View::Lit;                  // the inner buffers: volumes, stencil counts, silhouettes
-  int viewLight = 0;                      // whose volumes / stencil the views show
-  Method method = Method::Auto;           // auto: z-fail only where z-pass can fail
+  int scene = 0;                               // showcase: closed shapes on an open ground plane
+  int triangles = 40000;                       // more triangles: more silhouette edges, more fill
+  View view = View::Lit;                       // the inner buffers: volumes, stencil counts, silhouettes
+  int viewLight = 0;                           // whose volumes / stencil the views show
+  Method method = Method::Auto;                // auto: z-fail only where z-pass can fail
   Silhouettes silhouettes = Silhouettes::Cpu;  // CPU (cached per light) or geometry shader (every frame)
-  bool twoSided = true;                   // glStencilOpSeparate: both faces in one pass
-  FarPlane far = FarPlane::Infinite;      // how the points at infinity escape the far clip plane
+  bool twoSided = true;                        // glStencilOpSeparate: both faces in one pass
+  FarPlane far = FarPlane::Infinite;           // how the points at infinity escape the far clip plane
   OpenMeshes openMeshes = OpenMeshes::Skip;    // an open mesh's volume has holes: skip or z-pass only
-  bool scissor = true;                    // each light touches only the pixels within its reach
-  bool fillQuery = true;                  // count every volume fragment (occlusion query), in its own pass
-  Impl impl = Impl::Reference;            // student: your exercises.cpp drives the lesson
+  bool scissor = true;                         // each light touches only the pixels within its reach
+  bool fillQuery = true;                       // count every volume fragment (occlusion query), in its own pass
+  Impl impl = Impl::Reference;                 // student: your exercises.cpp drives the lesson
   float ambient = 0.08f;
   float specular = 0.35f;
   float shininess = 48.0f;
-  bool animate = false;                   // orbit the point light: the volumes are rebuilt every frame
+  bool animate = false;  // orbit the point light: the volumes are rebuilt every frame
   Light lights[4];
 };
 constexpr int kLights = 4;
@@ -77,31 +77,43 @@ struct VolumeCache : volume::SceneVolumes {
 class ShadowVolumeLesson : public Lesson {
  public:
   LessonInfo info() const override {
-    return {"04", "04_shadow_volumes", "Shadow volumes",
-            "Stencil shadow volumes: silhouettes from adjacency, z-pass and z-fail, caps, infinite far plane, many lights.",
-            3,
-            "V cycles the view: volumes, wireframe, the stencil count as a heatmap, silhouettes.\n"
-            "Z: auto / z-pass / z-fail. Preset camera_in_volume: z-pass inverts the shadow, z-fail holds.\n"
-            "S: silhouettes on the CPU or in a geometry shader. T: two-sided stencil or two passes.\n"
-            "The header counts objects drawn z-pass and z-fail, open meshes, and the fill per light.\n"
-            "Press M: against ground truth the only errors are on shadow boundaries.",
-            true};
+    return {
+        "04",
+        "04_shadow_volumes",
+        "Shadow volumes",
+        "Stencil shadow volumes: silhouettes from adjacency, z-pass and z-fail, caps, infinite far plane, many lights.",
+        3,
+        "V cycles the view: volumes, wireframe, the stencil count as a heatmap, silhouettes.\n"
+        "Z: auto / z-pass / z-fail. Preset camera_in_volume: z-pass inverts the shadow, z-fail holds.\n"
+        "S: silhouettes on the CPU or in a geometry shader. T: two-sided stencil or two passes.\n"
+        "The header counts objects drawn z-pass and z-fail, open meshes, and the fill per light.\n"
+        "Press M: against ground truth the only errors are on shadow boundaries.",
+        true};
   }
 
   void declare(ParamRegistry& r) override {
     camera.target = {0, 0.8f, 0};
     r.addChoice("scene", &p_.scene, sceneNames(), "procedural scene (deterministic from its seed)");
     r.add("triangles", &p_.triangles, 10000, 1000000, "scene size: silhouette edges and volume fill grow with it");
-    r.addChoice("view", &p_.view, {"lit", "volumes", "wireframe", "stencil", "silhouettes"}, "the inner buffers").hotkey = "V";
-    r.add("view_light", &p_.viewLight, 0, kLights - 1, "which light's volumes, stencil counts and silhouettes the views show");
-    r.addChoice("method", &p_.method, {"auto", "z_pass", "z_fail"}, "auto: z-fail only for casters whose volume can reach the near plane").hotkey = "Z";
-    r.addChoice("silhouettes", &p_.silhouettes, {"cpu", "gpu"}, "CPU from the adjacency (cached), or a geometry shader with triangles_adjacency").hotkey = "S";
-    r.add("two_sided", &p_.twoSided, "glStencilOpSeparate: front and back faces in one pass (else two culled passes)").hotkey = "T";
+    r.addChoice("view", &p_.view, {"lit", "volumes", "wireframe", "stencil", "silhouettes"}, "the inner buffers")
+        .hotkey = "V";
+    r.add("view_light", &p_.viewLight, 0, kLights - 1,
+          "which light's volumes, stencil counts and silhouettes the views show");
+    r.addChoice("method", &p_.method, {"auto", "z_pass", "z_fail"},
+                "auto: z-fail only for casters whose volume can reach the near plane")
+        .hotkey = "Z";
+    r.addChoice("silhouettes", &p_.silhouettes, {"cpu", "gpu"},
+                "CPU from the adjacency (cached), or a geometry shader with triangles_adjacency")
+        .hotkey = "S";
+    r.add("two_sided", &p_.twoSided, "glStencilOpSeparate: front and back faces in one pass (else two culled passes)")
+        .hotkey = "T";
     r.addChoice("far", &p_.far, {"infinite", "depth_clamp"}, "infinite far plane, or a finite one with GL_DEPTH_CLAMP");
-    r.addChoice("open_meshes", &p_.openMeshes, {"skip", "z_pass_only"}, "open meshes cannot close a volume: cast nothing, or z-pass without caps");
+    r.addChoice("open_meshes", &p_.openMeshes, {"skip", "z_pass_only"},
+                "open meshes cannot close a volume: cast nothing, or z-pass without caps");
     r.add("scissor", &p_.scissor, "limit each point/spot light's passes to the screen rectangle of its reach");
     r.add("fill_query", &p_.fillQuery, "an extra pass counting every volume fragment (samples passed), timed apart");
-    r.addChoice("impl", &p_.impl, {"reference", "student"}, "whose exercise code runs: silhouettes, projection, stencil ops, z-fail test");
+    r.addChoice("impl", &p_.impl, {"reference", "student"},
+                "whose exercise code runs: silhouettes, projection, stencil ops, z-fail test");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: the light shadows never take away");
     r.add("specular", &p_.specular, 0, 1, "ks");
     r.add("shininess", &p_.shininess, 1, 256, "the specular exponent");
@@ -121,7 +133,9 @@ class ShadowVolumeLesson : public Lesson {
     loadScene();
   }
 
-  MeasureSource measureSource() override { return {&scene_, std::uint64_t(revision_), {p_.lights, p_.lights + kLights}}; }
+  MeasureSource measureSource() override {
+    return {&scene_, std::uint64_t(revision_), {p_.lights, p_.lights + kLights}};
+  }
 
   void update(const FrameInfo& f) override {
     if (p_.scene != builtScene_ || p_.triangles != builtTriangles_) loadScene();
@@ -137,11 +151,13 @@ class ShadowVolumeLesson : public Lesson {
     // The projection with its far plane at infinity (or the finite one, with depth clamping).
     glm::mat4 proj = f.projection;
     if (p_.far == FarPlane::Infinite)
-      proj = student && !f.godView ? ex04::infinitePerspective(camera.fovY, aspect, camera.nearZ, volume::kInfiniteEpsilon)
-                                   : volume::makeFarInfinite(f.projection);
+      proj = student && !f.godView
+                 ? ex04::infinitePerspective(camera.fovY, aspect, camera.nearZ, volume::kInfiniteEpsilon)
+                 : volume::makeFarInfinite(f.projection);
     const glm::mat4 viewProj = proj * f.view;
     // z-pass or z-fail is decided for the viewer's near plane, also when the god view draws.
-    const volume::NearRect nearRect = volume::nearRect(camera.view(), camera.fovY, float(f.width) / float(f.height), camera.nearZ);
+    const volume::NearRect nearRect =
+        volume::nearRect(camera.view(), camera.fovY, float(f.width) / float(f.height), camera.nearZ);
 
     // ==== 1. depth and ambient ======================================================================
     {
@@ -166,13 +182,14 @@ class ShadowVolumeLesson : public Lesson {
       if (p_.view == View::Stencil && i != p_.viewLight) continue;
       const glm::vec4 L = volume::homogeneousLight(light);
       VolumeCache& cache = caches_[i];
-      if (p_.silhouettes == Silhouettes::Cpu || p_.view == View::Silhouettes || i == p_.viewLight) buildVolumes(cache, L);
+      if (p_.silhouettes == Silhouettes::Cpu || p_.view == View::Silhouettes || i == p_.viewLight)
+        buildVolumes(cache, L);
       // Which casters need z-fail: their volume can reach the viewer's near plane.
       std::vector<int> zFailObjects(scene_.objects.size(), 0);
       for (std::size_t o = 0; o < scene_.objects.size(); ++o) {
         if (!casts(o)) continue;
         const bool open = !adjacency_[scene_.objects[o].mesh].closed();
-        const bool reach = open ? false
+        const bool reach = open      ? false
                            : student ? ex04::volumeMayReachNearPlane(scene_.objectBounds(o), nearRect, L)
                                      : volume::volumeMayReachNearPlane(scene_.objectBounds(o), nearRect, L);
         zFailObjects[o] = p_.method == Method::ZFail ? !open : p_.method == Method::ZPass ? 0 : reach;
@@ -272,10 +289,12 @@ class ShadowVolumeLesson : public Lesson {
     if (f.godView) return;
     counters = {{"z-pass objects", std::to_string(zPass)},
                 {"z-fail objects", std::to_string(zFail)},
-                {"open meshes", std::to_string(open) + (p_.openMeshes == OpenMeshes::Skip ? " (cast nothing)" : " (z-pass only)")},
+                {"open meshes",
+                 std::to_string(open) + (p_.openMeshes == OpenMeshes::Skip ? " (cast nothing)" : " (z-pass only)")},
                 {"silhouette edges", std::to_string(shown.silhouette.size() / 2)}};
     for (int i = 0; i < kLights; ++i)
-      if (p_.lights[i].enabled && p_.fillQuery) counters.push_back({"fill light" + std::to_string(i), std::to_string(fill_[i].samples)});
+      if (p_.lights[i].enabled && p_.fillQuery)
+        counters.push_back({"fill light" + std::to_string(i), std::to_string(fill_[i].samples)});
   }
 
  private:
@@ -293,15 +312,18 @@ class ShadowVolumeLesson : public Lesson {
     for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
       adjacency_.push_back(volume::buildAdjacency(scene_.meshes[m]));
       const volume::EdgeAdjacency& a = adjacency_.back();
-      AdjacencyMesh g{gl::makeVertexArray("adjacency " + std::to_string(m)), gl::makeBuffer(GL_ARRAY_BUFFER, "adjacency vertices"),
+      AdjacencyMesh g{gl::makeVertexArray("adjacency " + std::to_string(m)),
+                      gl::makeBuffer(GL_ARRAY_BUFFER, "adjacency vertices"),
                       gl::makeBuffer(GL_ELEMENT_ARRAY_BUFFER, "adjacency indices"), GLsizei(a.adjacencyIndices.size())};
       glBindVertexArray(g.vao.id());
       glBindBuffer(GL_ARRAY_BUFFER, g.vertices.id());
-      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(a.positions.size() * sizeof(glm::vec3)), a.positions.data(), GL_STATIC_DRAW);
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(a.positions.size() * sizeof(glm::vec3)), a.positions.data(),
+                   GL_STATIC_DRAW);
       glEnableVertexAttribArray(0);
       glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
       glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.id());
-      glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(a.adjacencyIndices.size() * 4), a.adjacencyIndices.data(), GL_STATIC_DRAW);
+      glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(a.adjacencyIndices.size() * 4), a.adjacencyIndices.data(),
+                   GL_STATIC_DRAW);
       glBindVertexArray(0);
       adjacencyGpu_.push_back(std::move(g));
     }
@@ -317,15 +339,17 @@ class ShadowVolumeLesson : public Lesson {
     if (c.built == key && c.light == L) return;
     auto t = scope("cpu volumes");
     // impl=student: the student's silhouette test decides the sides.
-    volume::buildSceneVolumes(scene_, adjacency_, L, [this](std::size_t o) { return casts(o); },
-                              p_.impl == Impl::Student ? &ex04::isSilhouette : nullptr, c);
+    volume::buildSceneVolumes(
+        scene_, adjacency_, L, [this](std::size_t o) { return casts(o); },
+        p_.impl == Impl::Student ? &ex04::isSilhouette : nullptr, c);
     if (!c.vao) {
       c.vao = gl::makeVertexArray("volumes");
       c.buffer = gl::makeBuffer(GL_ARRAY_BUFFER, "volumes");
     }
     glBindVertexArray(c.vao.id());
     glBindBuffer(GL_ARRAY_BUFFER, c.buffer.id());
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(c.triangles.size() * sizeof(glm::vec4)), c.triangles.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(c.triangles.size() * sizeof(glm::vec4)), c.triangles.data(),
+                 GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
     glBindVertexArray(0);
@@ -368,7 +392,8 @@ class ShadowVolumeLesson : public Lesson {
 
   // Fill cost: every fragment the volumes rasterise (depth test off, nothing written), counted by
   // an occlusion query. Read a frame later, when it is ready, so the CPU never waits.
-  void measureFill(int i, const VolumeCache& c, const glm::vec4& L, const std::vector<int>& zFailObjects, const glm::mat4& viewProj) {
+  void measureFill(int i, const VolumeCache& c, const glm::vec4& L, const std::vector<int>& zFailObjects,
+                   const glm::mat4& viewProj) {
     Fill& fl = fill_[i];
     GLuint ready = 0;
     if (fl.issued) glGetQueryObjectuiv(fl.query.id(), GL_QUERY_RESULT_AVAILABLE, &ready);
@@ -390,7 +415,8 @@ class ShadowVolumeLesson : public Lesson {
 
   // The stencil count as colours: one full-screen triangle per count, where the stencil equals it.
   void drawStencilHeatmap() {
-    static const glm::vec3 ramp[] = {{0.1f, 0.1f, 0.6f}, {0.1f, 0.6f, 0.9f}, {0.2f, 0.8f, 0.3f}, {0.9f, 0.9f, 0.2f}, {1.0f, 0.5f, 0.1f}};
+    static const glm::vec3 ramp[] = {
+        {0.1f, 0.1f, 0.6f}, {0.1f, 0.6f, 0.9f}, {0.2f, 0.8f, 0.3f}, {0.9f, 0.9f, 0.2f}, {1.0f, 0.5f, 0.1f}};
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -451,7 +477,8 @@ class ShadowVolumeLesson : public Lesson {
     for (std::size_t k = 0; k + 1 < c.silhouette.size(); k += step) {
       const glm::vec3 a = c.silhouette[k], b = c.silhouette[k + 1];
       debug.line(a, b, {1.0f, 0.2f, 0.9f, 1.0f});
-      const glm::vec3 dir = c.light.w != 0.0f ? glm::normalize(a - glm::vec3(c.light) / c.light.w) : -glm::normalize(glm::vec3(c.light));
+      const glm::vec3 dir =
+          c.light.w != 0.0f ? glm::normalize(a - glm::vec3(c.light) / c.light.w) : -glm::normalize(glm::vec3(c.light));
       debug.line(a, a + 6.0f * dir, {1.0f, 0.85f, 0.2f, 0.5f});
     }
   }
@@ -489,7 +516,9 @@ class ShadowVolumeLesson : public Lesson {
   gl::Program ambient_{"04 depth + ambient", {"04_shadow_volumes/scene.vert", "04_shadow_volumes/ambient.frag"}};
   gl::Program lit_{"04 lit", {"04_shadow_volumes/scene.vert", "04_shadow_volumes/lit.frag"}};
   gl::Program volume_{"04 volume", {"04_shadow_volumes/volume.vert", "04_shadow_volumes/volume.frag"}};
-  gl::Program volumeGs_{"04 volume gs", {"04_shadow_volumes/volume_gs.vert", "04_shadow_volumes/volume.geom", "04_shadow_volumes/volume.frag"}};
+  gl::Program volumeGs_{
+      "04 volume gs",
+      {"04_shadow_volumes/volume_gs.vert", "04_shadow_volumes/volume.geom", "04_shadow_volumes/volume.frag"}};
   gl::Program heat_{"04 stencil heatmap", {"common/fullscreen.vert", "04_shadow_volumes/heat.frag"}};
   gl::VertexArray emptyVao_, lineVao_;
   gl::Buffer lineBuffer_;

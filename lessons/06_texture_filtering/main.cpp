@@ -48,34 +48,34 @@ enum class Channels { Rgb, Luminance, Alpha };
 enum class Impl { Reference, Student };
 
 struct Params {
-  SceneKind scene = SceneKind::Ground;    // a plane to the horizon shows every LOD at once
+  SceneKind scene = SceneKind::Ground;         // a plane to the horizon shows every LOD at once
   TexChoice texture = TexChoice::CheckerFine;  // fine detail is what aliases
-  UvMode uv = UvMode::Auto;               // auto: the scene's natural projection
-  float uvScale = 0.25f;                  // tiling: repeats per unit (ground: a tile every 4 m)
-  Filter mag = Filter::Linear;            // texel larger than a pixel
-  Filter min = Filter::Linear;            // texel smaller than a pixel, within a level
-  MipFilter mip = MipFilter::Linear;      // between levels: none, nearest level, blend two
-  int aniso = 1;                          // EXT_texture_filter_anisotropic's max anisotropy
-  float lodBias = 0.0f;                   // added to lambda: + blurs, - sharpens (and aliases)
+  UvMode uv = UvMode::Auto;                    // auto: the scene's natural projection
+  float uvScale = 0.25f;                       // tiling: repeats per unit (ground: a tile every 4 m)
+  Filter mag = Filter::Linear;                 // texel larger than a pixel
+  Filter min = Filter::Linear;                 // texel smaller than a pixel, within a level
+  MipFilter mip = MipFilter::Linear;           // between levels: none, nearest level, blend two
+  int aniso = 1;                               // EXT_texture_filter_anisotropic's max anisotropy
+  float lodBias = 0.0f;                        // added to lambda: + blurs, - sharpens (and aliases)
   Wrap wrapS = Wrap::Repeat, wrapT = Wrap::Repeat;
-  glm::vec3 border{1.0f, 0.2f, 0.6f};     // clamp-to-border colour (visible on purpose)
-  Sampling sampling = Sampling::Hardware; // or RIP maps, filtered in the fragment shader
+  glm::vec3 border{1.0f, 0.2f, 0.6f};      // clamp-to-border colour (visible on purpose)
+  Sampling sampling = Sampling::Hardware;  // or RIP maps, filtered in the fragment shader
   View view = View::Shaded;
-  Combine combine = Combine::Modulate;    // how the texture meets the lit material
+  Combine combine = Combine::Modulate;  // how the texture meets the lit material
   Channels channels = Channels::Rgb;
-  glm::vec3 envColor{1.0f, 0.8f, 0.2f};   // blend's constant colour C_c
-  bool normalMap = false;                 // bricks_normal.png perturbs N (light it from the side)
-  bool animateLight = true;               // the light orbits: normal maps need a moving light
+  glm::vec3 envColor{1.0f, 0.8f, 0.2f};  // blend's constant colour C_c
+  bool normalMap = false;                // bricks_normal.png perturbs N (light it from the side)
+  bool animateLight = true;              // the light orbits: normal maps need a moving light
   float lightAngle = 0.8f;
-  float slice = 0.5f;                     // r of the 3D texture slice
-  int volumeSize = 1;                     // 32, 64, 128, 256 voxels a side
-  bool path = false;                      // scripted sideways camera move (deterministic headless)
-  float pathSpeed = 0.35f;                // metres a second
-  int probeX = 640, probeY = 560;         // pixel under the readout (the mouse when windowed)
-  bool measure = false;                   // supersampled reference each frame; prints error lines
-  int supersample = 4;                    // reference pixels per pixel, per axis
-  Impl impl = Impl::Reference;            // student: the CPU view samples with exercises.cpp
-  float diffGain = 8.0f;                  // difference view amplification
+  float slice = 0.5f;              // r of the 3D texture slice
+  int volumeSize = 1;              // 32, 64, 128, 256 voxels a side
+  bool path = false;               // scripted sideways camera move (deterministic headless)
+  float pathSpeed = 0.35f;         // metres a second
+  int probeX = 640, probeY = 560;  // pixel under the readout (the mouse when windowed)
+  bool measure = false;            // supersampled reference each frame; prints error lines
+  int supersample = 4;             // reference pixels per pixel, per axis
+  Impl impl = Impl::Reference;     // student: the CPU view samples with exercises.cpp
+  float diffGain = 8.0f;           // difference view amplification
 };
 
 const char* const kTextureFiles[] = {"checker_fine.png", "checker.png", "text.png", "bricks.png"};
@@ -93,8 +93,11 @@ std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 
 class TextureFilteringLesson : public Lesson {
  public:
   LessonInfo info() const override {
-    return {"06", "06_texture_filtering", "Texture filtering",
-            "Texels and pixels: wrap modes, magnification, the four mipmap modes, trilinear, anisotropic, RIP maps, normal maps.",
+    return {"06",
+            "06_texture_filtering",
+            "Texture filtering",
+            "Texels and pixels: wrap modes, magnification, the four mipmap modes, trilinear, anisotropic, RIP maps, "
+            "normal maps.",
             2,
             "Look at the ground plane near the horizon: that is minification.\n"
             "Try: filter.mip=none with filter.min=nearest (moire), then trilinear, then filter.aniso=16;\n"
@@ -107,26 +110,38 @@ class TextureFilteringLesson : public Lesson {
     camera.pitch = 0.12f;
     camera.distance = 4.0f;
     camera.farZ = 500.0f;
-    r.addChoice("scene", &p_.scene, {"ground", "tunnel", "sphere"}, "a plane to the horizon, a tunnel, a sphere").hotkey = "S";
+    r.addChoice("scene", &p_.scene, {"ground", "tunnel", "sphere"}, "a plane to the horizon, a tunnel, a sphere")
+        .hotkey = "S";
     r.addChoice("texture", &p_.texture, {"checker_fine", "checker", "text", "bricks", "zone_plate", "volume"},
-                "what is sampled: fine detail aliases; volume is a slice of a 3D texture").hotkey = "T";
+                "what is sampled: fine detail aliases; volume is a slice of a 3D texture")
+        .hotkey = "T";
     r.addChoice("uv.mode", &p_.uv, {"auto", "explicit", "planar", "cylindrical", "spherical"},
-                "texture coordinates: the mesh's own, or projected from the object-space position").hotkey = "U";
+                "texture coordinates: the mesh's own, or projected from the object-space position")
+        .hotkey = "U";
     r.add("uv.scale", &p_.uvScale, 0.05f, 64.0f, "tiling: repeats of the texture per unit of uv");
-    r.addChoice("filter.mag", &p_.mag, {"nearest", "linear"}, "magnification: the nearest texel, or bilinear").hotkey = "M";
+    r.addChoice("filter.mag", &p_.mag, {"nearest", "linear"}, "magnification: the nearest texel, or bilinear").hotkey =
+        "M";
     r.addChoice("filter.min", &p_.min, {"nearest", "linear"}, "minification inside one level: nearest or bilinear");
-    r.addChoice("filter.mip", &p_.mip, {"none", "nearest", "linear"}, "between levels: level 0 only, the nearest level, blend two (trilinear)").hotkey = "F";
+    r.addChoice("filter.mip", &p_.mip, {"none", "nearest", "linear"},
+                "between levels: level 0 only, the nearest level, blend two (trilinear)")
+        .hotkey = "F";
     r.add("filter.aniso", &p_.aniso, 1, 16, "max anisotropy: up to N probes along the footprint's long axis");
     r.add("filter.lod_bias", &p_.lodBias, -4.0f, 4.0f, "added to lambda: positive blurs, negative aliases");
     const std::vector<std::string> wraps{"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border"};
     r.addChoice("wrap.s", &p_.wrapS, wraps, "what u outside [0,1] reads");
     r.addChoice("wrap.t", &p_.wrapT, wraps, "what v outside [0,1] reads");
     r.addColor("wrap.border", &p_.border, "the clamp-to-border colour");
-    r.addChoice("sampling", &p_.sampling, {"hardware", "rip_map"}, "the GPU's mipmaps, or RIP maps filtered in the shader").hotkey = "R";
+    r.addChoice("sampling", &p_.sampling, {"hardware", "rip_map"},
+                "the GPU's mipmaps, or RIP maps filtered in the shader")
+        .hotkey = "R";
     r.addChoice("view", &p_.view, {"shaded", "mip_level", "anisotropy", "cpu_reference", "difference"},
-                "colour: the result, the mip level per pixel, the probe count, the CPU sampler, |GPU - CPU|").hotkey = "V";
-    r.addChoice("combine", &p_.combine, {"replace", "modulate", "blend"}, "texture and material: texture only, product, blend to C_c").hotkey = "C";
-    r.addChoice("combine.channels", &p_.channels, {"rgb", "luminance", "alpha"}, "which part of the texture takes part");
+                "colour: the result, the mip level per pixel, the probe count, the CPU sampler, |GPU - CPU|")
+        .hotkey = "V";
+    r.addChoice("combine", &p_.combine, {"replace", "modulate", "blend"},
+                "texture and material: texture only, product, blend to C_c")
+        .hotkey = "C";
+    r.addChoice("combine.channels", &p_.channels, {"rgb", "luminance", "alpha"},
+                "which part of the texture takes part");
     r.addColor("combine.env_color", &p_.envColor, "C_c of the blend mode");
     r.add("normal_map", &p_.normalMap, "perturb the normal with bricks_normal.png").hotkey = "N";
     r.add("light.animate", &p_.animateLight, "orbit the light so the normal map's relief moves").hotkey = "L";
@@ -151,8 +166,9 @@ class TextureFilteringLesson : public Lesson {
     flipInsideOut(tube);
     tunnel_ = gl::uploadMesh(tube, "tunnel");
     sphere_ = gl::uploadMesh(makeSphere(2.0f, 128, 64), "sphere");
-    normalMap_ = gl::uploadMipChain(sampling::buildMipChain(sampling::toFloat(loadImage(textureRoot() + "/bricks_normal.png"))),
-                                    "bricks normal map");
+    normalMap_ =
+        gl::uploadMipChain(sampling::buildMipChain(sampling::toFloat(loadImage(textureRoot() + "/bricks_normal.png"))),
+                           "bricks normal map");
     loadTexture();
   }
 
@@ -239,7 +255,9 @@ class TextureFilteringLesson : public Lesson {
   // The scene's natural projection and its tiling: (repeats along u, along v).
   UvMode uvMode() const {
     if (p_.uv != UvMode::Auto) return p_.uv;
-    return p_.scene == SceneKind::Ground ? UvMode::Planar : p_.scene == SceneKind::Tunnel ? UvMode::Cylindrical : UvMode::Spherical;
+    return p_.scene == SceneKind::Ground   ? UvMode::Planar
+           : p_.scene == SceneKind::Tunnel ? UvMode::Cylindrical
+                                           : UvMode::Spherical;
   }
   glm::vec2 uvScale() const {
     const UvMode m = uvMode();
@@ -255,10 +273,12 @@ class TextureFilteringLesson : public Lesson {
     builtTexture_ = p_.texture;
     builtVolume_ = p_.volumeSize;
     ImageF base = p_.texture == TexChoice::ZonePlate ? sampling::makeZonePlate(512)
-                  : p_.texture == TexChoice::Volume   ? sampling::makeZonePlate(256)
-                                                      : sampling::toFloat(loadImage(textureRoot() + "/" + kTextureFiles[int(p_.texture)]));
+                  : p_.texture == TexChoice::Volume
+                      ? sampling::makeZonePlate(256)
+                      : sampling::toFloat(loadImage(textureRoot() + "/" + kTextureFiles[int(p_.texture)]));
     chain_ = sampling::buildMipChain(base);
-    texture_ = gl::uploadMipChain(chain_, std::string("06 texture ") + (p_.texture == TexChoice::ZonePlate ? "zone plate" : "file"));
+    texture_ = gl::uploadMipChain(
+        chain_, std::string("06 texture ") + (p_.texture == TexChoice::ZonePlate ? "zone plate" : "file"));
     const sampling::RipAtlas rip = sampling::buildRipAtlas(base);
     rip_ = gl::uploadLevel(rip.atlas, "06 RIP atlas");
     ripOffsetX_ = rip.offsetX;
@@ -298,12 +318,14 @@ class TextureFilteringLesson : public Lesson {
     program_.set("uMaterial", glm::vec3(0.9f, 0.88f, 0.85f));
     program_.set("uSky", sky);
     program_.set("uNormalMapping", p_.normalMap);
-    program_.set("uLightPos", camera.target + glm::vec3(3.0f * std::cos(p_.lightAngle), 1.0f, 3.0f * std::sin(p_.lightAngle)));
+    program_.set("uLightPos",
+                 camera.target + glm::vec3(3.0f * std::cos(p_.lightAngle), 1.0f, 3.0f * std::sin(p_.lightAngle)));
     glUniform2i(program_.location("uTexSize"), chain_[0].width, chain_[0].height);
     program_.set("uLodBias", s.lodBias);
     program_.set("uMaxAniso", float(gl::caps().anisotropic ? std::min(s.maxAniso, gl::caps().maxAnisotropy) : 1.0f));
     program_.set("uSlice", p_.slice);
-    glUniform1iv(program_.location("uRipLevels"), 2, std::array<int, 2>{int(ripOffsetX_.size()), int(ripOffsetY_.size())}.data());
+    glUniform1iv(program_.location("uRipLevels"), 2,
+                 std::array<int, 2>{int(ripOffsetX_.size()), int(ripOffsetY_.size())}.data());
     glUniform1iv(program_.location("uRipOffsetX"), GLsizei(ripOffsetX_.size()), ripOffsetX_.data());
     glUniform1iv(program_.location("uRipOffsetY"), GLsizei(ripOffsetY_.size()), ripOffsetY_.data());
     const GLuint units[4] = {texture_.id(), normalMap_.id(), rip_.id(), volume_.id()};
@@ -357,10 +379,12 @@ class TextureFilteringLesson : public Lesson {
       return;
     }
     counters.push_back({"probe " + at + " uv", fmt("%.3f, %.3f", uv.x, uv.y)});
-    counters.push_back({"probe d(uv)/dx,dy texels", fmt("(%.2f, %.2f) (%.2f, %.2f)", d.x * size.x, d.y * size.y, d.z * size.x, d.w * size.y)});
+    counters.push_back({"probe d(uv)/dx,dy texels",
+                        fmt("(%.2f, %.2f) (%.2f, %.2f)", d.x * size.x, d.y * size.y, d.z * size.x, d.w * size.y)});
     counters.push_back({"probe Px, Py", fmt("%.2f, %.2f texels", fp.px, fp.py)});
     counters.push_back({"probe lambda CPU / GPU", fmt("%.2f / %.2f (+ bias %.2f)", fp.lambda, uv.w, p_.lodBias)});
-    counters.push_back({"probe anisotropic", fmt("N = %.0f probes at lambda' = %.2f", fp.probes, fp.lambdaAniso + p_.lodBias)});
+    counters.push_back(
+        {"probe anisotropic", fmt("N = %.0f probes at lambda' = %.2f", fp.probes, fp.lambdaAniso + p_.lodBias)});
   }
 
   // Samples every covered pixel's footprint (read back from the scene pass) on the CPU.
@@ -391,12 +415,15 @@ class TextureFilteringLesson : public Lesson {
         for (int k = 0; k < 3; ++k) {
           const int v = int(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255.0f));
           sum += double(v - g[k]) * double(v - g[k]);
-          o[k] = std::uint8_t(p_.view == View::Difference ? std::min(255.0f, std::abs(float(v - g[k])) * p_.diffGain) : float(v));
+          o[k] = std::uint8_t(p_.view == View::Difference ? std::min(255.0f, std::abs(float(v - g[k])) * p_.diffGain)
+                                                          : float(v));
         }
         ++count;
       }
-    counters.push_back({"CPU vs GPU RMSE", volume ? std::string("n/a (3D texture)")
-                                                  : fmt("%.2f of 255 over %.0f pixels", std::sqrt(sum / std::max<double>(1, 3.0 * count)), double(count))});
+    counters.push_back(
+        {"CPU vs GPU RMSE", volume ? std::string("n/a (3D texture)")
+                                   : fmt("%.2f of 255 over %.0f pixels",
+                                         std::sqrt(sum / std::max<double>(1, 3.0 * count)), double(count))});
     Image8 flipped = out;  // back to GL's bottom-first rows for the texture
     for (int y = 0; y < h; ++y) std::copy_n(out.at(0, h - 1 - y), std::size_t(w) * 4, flipped.at(0, y));
     gl::updateLevel(cpuView_.id(), flipped);
@@ -406,7 +433,8 @@ class TextureFilteringLesson : public Lesson {
   // down: RMSE against it, and the frame-to-frame change (flicker) of both, printed per frame.
   void measure(const FrameInfo& f) {
     const int s = p_.supersample, w = f.width, h = f.height;
-    if (ssTarget_.width != w * s || ssTarget_.height != h * s) ssTarget_ = gl::makeFootprintTarget(w * s, h * s, false, "06 supersampled");
+    if (ssTarget_.width != w * s || ssTarget_.height != h * s)
+      ssTarget_ = gl::makeFootprintTarget(w * s, h * s, false, "06 supersampled");
     sampling::SamplerState best = samplerState();
     best.mag = best.min = Filter::Linear;
     best.mip = MipFilter::Linear;

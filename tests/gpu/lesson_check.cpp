@@ -64,7 +64,12 @@ Result run(const std::vector<std::string>& args, const std::string& root) {
     r.exit = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   }
   posix_spawn_file_actions_destroy(&actions);
-  auto slurp = [](const std::string& p) { std::ifstream in(p); std::stringstream s; s << in.rdbuf(); return s.str(); };
+  auto slurp = [](const std::string& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
   r.out = slurp(outPath);
   r.err = slurp(errPath);
   fs::remove_all(dir);
@@ -86,8 +91,8 @@ bool checkGolden(const std::string& png, const fs::path& golden) {
     const double share = 100.0 * double(d.differingPixels) / double(std::size_t(now.width) * now.height);
     const bool ok = share <= 0.2 && d.rmse <= 1.0;
     std::cout << (ok ? "ok: " : "FAIL: ") << png << " against " << golden.string() << ": worst channel difference "
-              << d.maxAbs << ", " << d.differingPixels << " pixels (" << share << " %) off by more than 2, RMSE " << d.rmse
-              << '\n';
+              << d.maxAbs << ", " << d.differingPixels << " pixels (" << share << " %) off by more than 2, RMSE "
+              << d.rmse << '\n';
     if (!ok) {
       const std::string diff = png.substr(0, png.size() - 4) + "_golden_diff.png";
       shadowlab::savePng(diff, shadowlab::diffImage(now, before, 8.0f));
@@ -118,7 +123,8 @@ bool checkPng(const std::string& path) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::cerr << "usage: lesson_check LESSON [--expect-exit N] [--expect-stderr TEXT] [--png FILE] [--golden DIR] [--root DIR] [--all-presets] -- ARGS\n";
+    std::cerr << "usage: lesson_check LESSON [--expect-exit N] [--expect-stderr TEXT] [--png FILE] [--golden DIR] "
+                 "[--root DIR] [--all-presets] -- ARGS\n";
     return 2;
   }
   const std::string lesson = argv[1];
@@ -193,7 +199,8 @@ int main(int argc, char** argv) {
       continue;
     }
     if (!png.empty() && !checkPng(png)) ++failures;
-    else if (!png.empty() && !golden.empty() && !checkGolden(png, fs::path(golden) / ((preset.empty() ? "default" : preset) + ".png")))
+    else if (!png.empty() && !golden.empty() &&
+             !checkGolden(png, fs::path(golden) / ((preset.empty() ? "default" : preset) + ".png")))
       ++failures;
     std::cout << "ok: " << what << " exit " << r.exit << (r.err.empty() ? "" : ", stderr: " + r.err) << '\n';
   }

@@ -37,7 +37,8 @@ void write(const fs::path& p, const std::string& text) {
   fs::last_write_time(p, fs::last_write_time(p) + std::chrono::seconds(1));
 }
 
-const char* kVert = "#version 410 core\nlayout(location = 0) in vec3 aPosition;\nvoid main() { gl_Position = vec4(aPosition, 1.0); }\n";
+const char* kVert =
+    "#version 410 core\nlayout(location = 0) in vec3 aPosition;\nvoid main() { gl_Position = vec4(aPosition, 1.0); }\n";
 const char* kFrag = "#version 410 core\nout vec4 c;\nuniform vec4 uColor;\nvoid main() { c = uColor; }\n";
 }  // namespace
 
@@ -125,7 +126,7 @@ TEST_CASE("gl: render target, a draw, and a top-row-first read-back") {
   const Image8 img = gl::readPixels(rt.fbo.id(), 8, 8);
   CHECK(img.at(4, 0)[0] == 255);  // top row: red triangle
   CHECK(img.at(4, 0)[2] == 0);
-  CHECK(img.at(4, 7)[0] == 0);    // bottom row: blue clear colour
+  CHECK(img.at(4, 7)[0] == 0);  // bottom row: blue clear colour
   CHECK(img.at(4, 7)[2] == 255);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   fs::remove_all(root);

@@ -30,10 +30,13 @@ TEST_CASE("measure (GPU): m from shader derivatives matches a texel mapping know
   fs::create_directories(root / "shaders/t");
   fs::copy(fs::path(SHADOWLAB_SOURCE_ROOT) / "shaders/common", root / "shaders/common", fs::copy_options::recursive);
   std::ofstream(root / "shaders/t/quad.vert") << "#version 410 core\nout vec2 vUv;\nvoid main() {\n"
-      "  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);\n  vUv = p;\n  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);\n}\n";
-  std::ofstream(root / "shaders/t/quad.frag") << "#version 410 core\n#include \"common/measure.glsl\"\nin vec2 vUv;\n"
-      "out vec4 fragColor;\nvoid main() {\n  fragColor = vec4(vUv, 0.0, 1.0);\n"
-      "  writeMeasurement(vec3(vUv.x * 10.0, 0.0, vUv.y * 10.0), vec3(0.0, 1.0, 0.0), 1.0, gl_FragCoord.xy * vec2(0.5, 0.25));\n}\n";
+                                                 "  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);\n  vUv = "
+                                                 "p;\n  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);\n}\n";
+  std::ofstream(root / "shaders/t/quad.frag")
+      << "#version 410 core\n#include \"common/measure.glsl\"\nin vec2 vUv;\n"
+         "out vec4 fragColor;\nvoid main() {\n  fragColor = vec4(vUv, 0.0, 1.0);\n"
+         "  writeMeasurement(vec3(vUv.x * 10.0, 0.0, vUv.y * 10.0), vec3(0.0, 1.0, 0.0), 1.0, gl_FragCoord.xy * "
+         "vec2(0.5, 0.25));\n}\n";
   setenv("SHADOWLAB_ROOT", root.c_str(), 1);
   {
     gl::Program quad("measure test quad", {"t/quad.vert", "t/quad.frag"});

@@ -11,11 +11,14 @@
 using namespace shadowlab;
 
 namespace {
-bool near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-4f) { return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(eps))); }
+bool near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-4f) {
+  return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(eps)));
+}
 glm::vec3 randomUnit(std::mt19937_64& rng) {
   std::normal_distribution<float> n;
   glm::vec3 v;
-  do v = {n(rng), n(rng), n(rng)}; while (glm::length(v) < 1e-3f);
+  do v = {n(rng), n(rng), n(rng)};
+  while (glm::length(v) < 1e-3f);
   return glm::normalize(v);
 }
 }  // namespace
@@ -43,7 +46,8 @@ TEST_CASE("ex01.1: visibility scales the whole term; a shadowed point gets nothi
 TEST_CASE("ex01.1: no highlight behind the terminator") {
   // L = -z faces away (N.L = -1); with V = -z the mirror direction R.V would be 1, but a surface
   // the light cannot reach must stay black.
-  CHECK(near(ex01::lightContribution({0, 0, 1}, {0, 0, -1}, {0, 0, -1}, glm::vec3(1), 1, 1, glm::vec3(0.5f), 1, 4), glm::vec3(0)));
+  CHECK(near(ex01::lightContribution({0, 0, 1}, {0, 0, -1}, {0, 0, -1}, glm::vec3(1), 1, 1, glm::vec3(0.5f), 1, 4),
+             glm::vec3(0)));
 }
 
 TEST_CASE("ex01.1: random configurations against the lecture's formula") {
@@ -86,7 +90,7 @@ TEST_CASE("ex01.2: it is affine and keeps w, so it composes with a projection") 
 TEST_CASE("ex01.3: attenuation by hand") {
   CHECK(ex01::attenuation({1, 0, 0}, 7) == doctest::Approx(1.0f));
   CHECK(ex01::attenuation({1, 0.5f, 0.25f}, 2) == doctest::Approx(1.0f / 3.0f));  // 1 + 1 + 1
-  CHECK(ex01::attenuation({0, 0, 1}, 4) == doctest::Approx(1.0f / 16.0f));         // inverse square
+  CHECK(ex01::attenuation({0, 0, 1}, 4) == doctest::Approx(1.0f / 16.0f));        // inverse square
   CHECK(ex01::attenuation({0, 2, 0}, 5) == doctest::Approx(0.1f));
 }
 

@@ -3,6 +3,10 @@
 
 namespace shadowlab::ex02 {
 glm::mat4 shadowTextureMatrix(const glm::mat4& P, const glm::mat4& V) { return shadow::textureMatrix(P, V); }
-float depthCompare(float fragmentDepth, float storedDepth, float bias) { return shadow::depthCompare(fragmentDepth, storedDepth, bias); }
-float shadowLookup(const shadow::DepthMap& map, const glm::vec3& uvz, float bias) { return shadow::shadowLookup(map, uvz, bias); }
+float depthCompare(float fragmentDepth, float storedDepth, float bias) {
+  return shadow::depthCompare(fragmentDepth, storedDepth, bias);
+}
+float shadowLookup(const shadow::DepthMap& map, const glm::vec3& uvz, float bias) {
+  return shadow::shadowLookup(map, uvz, bias);
+}
 }  // namespace shadowlab::ex02

@@ -13,7 +13,9 @@
 using namespace shadowlab;
 
 namespace {
-bool near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-4f) { return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(eps))); }
+bool near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-4f) {
+  return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(eps)));
+}
 glm::vec3 project(const glm::mat4& T, const glm::vec3& p) {
   const glm::vec4 h = T * glm::vec4(p, 1.0f);
   return glm::vec3(h) / h.w;
@@ -61,9 +63,9 @@ TEST_CASE("ex02.1: random light cameras: T = remap * P * V, with w kept") {
 }
 
 TEST_CASE("ex02.2: the depth comparison, LEQUAL after the bias") {
-  CHECK(ex02::depthCompare(0.4f, 0.6f, 0.0f) == 1.0f);   // in front of what the light saw: lit
-  CHECK(ex02::depthCompare(0.6f, 0.4f, 0.0f) == 0.0f);   // behind it: shadowed
-  CHECK(ex02::depthCompare(0.5f, 0.5f, 0.0f) == 1.0f);   // equal: LEQUAL says lit
+  CHECK(ex02::depthCompare(0.4f, 0.6f, 0.0f) == 1.0f);     // in front of what the light saw: lit
+  CHECK(ex02::depthCompare(0.6f, 0.4f, 0.0f) == 0.0f);     // behind it: shadowed
+  CHECK(ex02::depthCompare(0.5f, 0.5f, 0.0f) == 1.0f);     // equal: LEQUAL says lit
   CHECK(ex02::depthCompare(0.505f, 0.5f, 0.01f) == 1.0f);  // acne removed by the bias
   CHECK(ex02::depthCompare(0.52f, 0.5f, 0.01f) == 0.0f);   // a real occluder still shadows
 }
@@ -72,13 +74,13 @@ TEST_CASE("ex02.3: a hand-made 4x2 map: each texel, the edges and outside") {
   // Row 0 (v in [0, 0.5)):  0.2 0.8 0.8 0.8
   // Row 1 (v in [0.5, 1]): 0.8 0.8 0.3 0.8
   const shadow::DepthMap m(4, 2, {0.2f, 0.8f, 0.8f, 0.8f, 0.8f, 0.8f, 0.3f, 0.8f});
-  CHECK(ex02::shadowLookup(m, {0.1f, 0.2f, 0.5f}, 0.0f) == 0.0f);   // texel (0,0) = 0.2 < 0.5
-  CHECK(ex02::shadowLookup(m, {0.3f, 0.2f, 0.5f}, 0.0f) == 1.0f);   // texel (1,0) = 0.8
-  CHECK(ex02::shadowLookup(m, {0.6f, 0.7f, 0.5f}, 0.0f) == 0.0f);   // texel (2,1) = 0.3: row 1 is v >= 0.5
-  CHECK(ex02::shadowLookup(m, {0.6f, 0.2f, 0.5f}, 0.0f) == 1.0f);   // texel (2,0) = 0.8: rows not swapped
-  CHECK(ex02::shadowLookup(m, {0.1f, 0.7f, 0.5f}, 0.0f) == 1.0f);   // texel (0,1) = 0.8: columns not swapped
-  CHECK(ex02::shadowLookup(m, {0.1f, 0.2f, 0.21f}, 0.02f) == 1.0f); // the bias applies
-  CHECK(ex02::shadowLookup(m, {1.0f, 1.0f, 0.5f}, 0.0f) == 1.0f);   // u = v = 1: clamped to texel (3,1) = 0.8
+  CHECK(ex02::shadowLookup(m, {0.1f, 0.2f, 0.5f}, 0.0f) == 0.0f);    // texel (0,0) = 0.2 < 0.5
+  CHECK(ex02::shadowLookup(m, {0.3f, 0.2f, 0.5f}, 0.0f) == 1.0f);    // texel (1,0) = 0.8
+  CHECK(ex02::shadowLookup(m, {0.6f, 0.7f, 0.5f}, 0.0f) == 0.0f);    // texel (2,1) = 0.3: row 1 is v >= 0.5
+  CHECK(ex02::shadowLookup(m, {0.6f, 0.2f, 0.5f}, 0.0f) == 1.0f);    // texel (2,0) = 0.8: rows not swapped
+  CHECK(ex02::shadowLookup(m, {0.1f, 0.7f, 0.5f}, 0.0f) == 1.0f);    // texel (0,1) = 0.8: columns not swapped
+  CHECK(ex02::shadowLookup(m, {0.1f, 0.2f, 0.21f}, 0.02f) == 1.0f);  // the bias applies
+  CHECK(ex02::shadowLookup(m, {1.0f, 1.0f, 0.5f}, 0.0f) == 1.0f);    // u = v = 1: clamped to texel (3,1) = 0.8
 }
 
 TEST_CASE("ex02.3: outside the map or beyond the far plane the light saw nothing: lit") {

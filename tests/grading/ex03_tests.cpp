@@ -13,7 +13,7 @@
 using namespace shadowlab;
 
 TEST_CASE("ex03.1: slope-scaled bias by hand") {
-  CHECK(ex03::slopeScaledBias(0.002f, 0.01f, 1.0f, 1.0f) == doctest::Approx(0.002f));    // head-on: tan 0 = 0
+  CHECK(ex03::slopeScaledBias(0.002f, 0.01f, 1.0f, 1.0f) == doctest::Approx(0.002f));          // head-on: tan 0 = 0
   CHECK(ex03::slopeScaledBias(0.0f, 0.01f, std::sqrt(0.5f), 1.0f) == doctest::Approx(0.01f));  // 45 degrees: tan = 1
   // 60 degrees: cos 0.5, tan = sqrt(0.75) / 0.5 = 1.7320508 -> 0.001 + 0.017320508.
   CHECK(ex03::slopeScaledBias(0.001f, 0.01f, 0.5f, 1.0f) == doctest::Approx(0.018320508f));
@@ -55,7 +55,8 @@ TEST_CASE("ex03.2: random positions: weights in [0,1], summing to 1, reproducing
     for (int k = 0; k < 4; ++k) CHECK((w[k] >= -1e-6f && w[k] <= 1.0f + 1e-6f));
     // Interpolating the texel centres with the weights gives back p (bilinear reproduces linear functions).
     const glm::vec2 c0 = glm::floor(p - 0.5f) + 0.5f;
-    const glm::vec2 q = w[0] * c0 + w[1] * (c0 + glm::vec2(1, 0)) + w[2] * (c0 + glm::vec2(0, 1)) + w[3] * (c0 + glm::vec2(1, 1));
+    const glm::vec2 q =
+        w[0] * c0 + w[1] * (c0 + glm::vec2(1, 0)) + w[2] * (c0 + glm::vec2(0, 1)) + w[3] * (c0 + glm::vec2(1, 1));
     CHECK(q.x == doctest::Approx(p.x).epsilon(1e-4));
     CHECK(q.y == doctest::Approx(p.y).epsilon(1e-4));
   }
@@ -68,8 +69,8 @@ TEST_CASE("ex03.3: cube face of a direction") {
   CHECK(ex03::cubeFace({0.5f, -3, -1}) == 3);
   CHECK(ex03::cubeFace({0.5f, 0.2f, 0.9f}) == 4);
   CHECK(ex03::cubeFace({0.5f, 0.2f, -0.9f}) == 5);
-  CHECK(ex03::cubeFace({1, -1, 0.5f}) == 0);   // |x| = |y|: x wins
-  CHECK(ex03::cubeFace({0, -1, 1}) == 3);      // |y| = |z|: y wins
+  CHECK(ex03::cubeFace({1, -1, 0.5f}) == 0);  // |x| = |y|: x wins
+  CHECK(ex03::cubeFace({0, -1, 1}) == 3);     // |y| = |z|: y wins
   CHECK(ex03::cubeFace({0, 0, 0}) == -1);
 }
 
@@ -88,17 +89,17 @@ TEST_CASE("ex03.3: random directions: the major axis") {
 TEST_CASE("ex03.4: caster culling against a box-shaped view, light straight down") {
   const shadow::ConvexVolume view = shadow::volumeFromBox({{-10, 0, -10}, {10, 5, 10}});
   const glm::vec3 down(0, -1, 0);
-  CHECK(ex03::casterMayShadow({{-1, 20, -1}, {1, 30, 1}}, view, down));          // above: its shadow falls in
-  CHECK(ex03::casterMayShadow({{-1, 1, -1}, {1, 2, 1}}, view, down));            // inside
-  CHECK_FALSE(ex03::casterMayShadow({{-1, -9, -1}, {1, -2, 1}}, view, down));    // below: light leaves
-  CHECK_FALSE(ex03::casterMayShadow({{15, 20, -1}, {17, 30, 1}}, view, down));   // above, beside: never enters
-  CHECK(ex03::casterMayShadow({{9, 20, -1}, {17, 30, 1}}, view, down));          // overlaps the column above
+  CHECK(ex03::casterMayShadow({{-1, 20, -1}, {1, 30, 1}}, view, down));         // above: its shadow falls in
+  CHECK(ex03::casterMayShadow({{-1, 1, -1}, {1, 2, 1}}, view, down));           // inside
+  CHECK_FALSE(ex03::casterMayShadow({{-1, -9, -1}, {1, -2, 1}}, view, down));   // below: light leaves
+  CHECK_FALSE(ex03::casterMayShadow({{15, 20, -1}, {17, 30, 1}}, view, down));  // above, beside: never enters
+  CHECK(ex03::casterMayShadow({{9, 20, -1}, {17, 30, 1}}, view, down));         // overlaps the column above
 }
 
 TEST_CASE("ex03.4: slanted light: a caster beside the view shades it only when light travels toward it") {
   const shadow::ConvexVolume view = shadow::volumeFromBox({{-10, 0, -10}, {10, 5, 10}});
-  const Aabb beside{{15, 10, -1}, {17, 12, 1}};  // x > 10, up high
-  CHECK(ex03::casterMayShadow(beside, view, glm::normalize(glm::vec3(-1, -1, 0))));   // travels toward -x: in
+  const Aabb beside{{15, 10, -1}, {17, 12, 1}};                                           // x > 10, up high
+  CHECK(ex03::casterMayShadow(beside, view, glm::normalize(glm::vec3(-1, -1, 0))));       // travels toward -x: in
   CHECK_FALSE(ex03::casterMayShadow(beside, view, glm::normalize(glm::vec3(1, -1, 0))));  // away
   CHECK_FALSE(ex03::casterMayShadow(beside, view, glm::vec3(0, 0, -1)));  // along z: x plane keeps it out
 }
@@ -116,7 +117,10 @@ TEST_CASE("ex03.4: random casters: never culled when a point of the swept box is
     bool reaches = false;
     for (float s = 0; s < 120 && !reaches; s += 0.05f)
       for (int k = 0; k < 9 && !reaches; ++k) {
-        const glm::vec3 p = (k == 8 ? c : glm::vec3(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z)) + s * dir;
+        const glm::vec3 p = (k == 8 ? c
+                                    : glm::vec3(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y,
+                                                k & 4 ? box.max.z : box.min.z)) +
+                            s * dir;
         reaches = glm::all(glm::lessThanEqual(glm::abs(p), glm::vec3(5.0f)));
       }
     const bool result = ex03::casterMayShadow(box, view, dir);

@@ -2,7 +2,8 @@
 #include "exercises.hpp"
 
 namespace shadowlab::ex04 {
-bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d, const glm::vec4& light) {
+bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
+                  const glm::vec4& light) {
   return volume::isSilhouette(a, b, c, d, light);
 }
 glm::mat4 infinitePerspective(float fovY, float aspect, float nearZ, float epsilon) {

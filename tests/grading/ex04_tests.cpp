@@ -52,7 +52,8 @@ TEST_CASE("ex04.1: random edges against the plane test") {
   std::uniform_real_distribution<float> u(-5, 5);
   int silhouettes = 0;
   for (int i = 0; i < 500; ++i) {
-    const glm::vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng)), d(u(rng), u(rng), u(rng));
+    const glm::vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng)),
+        d(u(rng), u(rng), u(rng));
     const glm::vec4 L(u(rng), u(rng), u(rng), i % 2 ? 1.0f : 0.0f);
     auto side = [&](glm::vec3 p0, glm::vec3 p1, glm::vec3 p2) {
       return glm::dot(glm::cross(p1 - p0, p2 - p0), glm::vec3(L) - p0 * L.w) > 0.0f;
@@ -131,7 +132,7 @@ TEST_CASE("ex04.4: a point light ahead of the camera at z = -10") {
 
 TEST_CASE("ex04.4: the sun behind the camera, and a light in the near plane") {
   const volume::NearRect r = unitNear();
-  const glm::vec4 sun(0, 0, 1, 0);  // toward +z: behind the viewer
+  const glm::vec4 sun(0, 0, 1, 0);                                            // toward +z: behind the viewer
   CHECK(ex04::volumeMayReachNearPlane(box({0, 0, 3}, 0.5f), r, sun));         // between the sun and the viewer
   CHECK_FALSE(ex04::volumeMayReachNearPlane(box({0, 0, -5}, 0.5f), r, sun));  // ahead: shadow runs away
   CHECK_FALSE(ex04::volumeMayReachNearPlane(box({4, 0, 3}, 0.5f), r, sun));   // behind, off to the side (|x| > 1)
@@ -144,7 +145,8 @@ TEST_CASE("ex04.4: never says z-pass when a segment from the near rectangle to t
   const volume::NearRect r = unitNear();
   int hits = 0;
   for (int i = 0; i < 300; ++i) {
-    const glm::vec4 L = i % 2 ? glm::vec4(8 * u(rng), 8 * u(rng), -1 - 10 * t01(rng), 1) : glm::vec4(u(rng), u(rng), u(rng), 0);
+    const glm::vec4 L =
+        i % 2 ? glm::vec4(8 * u(rng), 8 * u(rng), -1 - 10 * t01(rng), 1) : glm::vec4(u(rng), u(rng), u(rng), 0);
     const Aabb b = box({3 * u(rng), 3 * u(rng), -1 - 6 * t01(rng)}, 0.2f + t01(rng));
     // Brute force: segments from points of the rectangle toward the light, sampled along.
     bool hit = false;

@@ -61,7 +61,8 @@ TEST_CASE("ex08.1: random cameras and point lights: the point maps back and the 
   std::mt19937_64 rng(shadowlab::test::seedFor("ex08.1 random"));
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int i = 0; i < 200; ++i) {
-    const double fov = 0.3 + 2.0 * (u(rng) * 0.5 + 0.5), n = 0.05 + (u(rng) + 1.0), f = n * (10.0 + 500.0 * (u(rng) + 1.0));
+    const double fov = 0.3 + 2.0 * (u(rng) * 0.5 + 0.5), n = 0.05 + (u(rng) + 1.0),
+                 f = n * (10.0 + 500.0 * (u(rng) + 1.0));
     glm::dmat4 proj(0.0);
     const double t = 1.0 / std::tan(fov / 2.0);
     proj[0][0] = t;
@@ -71,7 +72,10 @@ TEST_CASE("ex08.1: random cameras and point lights: the point maps back and the 
     proj[2][3] = -1.0;
     glm::dmat4 view(1.0);  // a rotation about y and a translation
     const double a = 3.0 * u(rng);
-    view[0][0] = std::cos(a); view[2][0] = std::sin(a); view[0][2] = -std::sin(a); view[2][2] = std::cos(a);
+    view[0][0] = std::cos(a);
+    view[2][0] = std::sin(a);
+    view[0][2] = -std::sin(a);
+    view[2][2] = std::cos(a);
     view[3] = glm::dvec4(5 * u(rng), 5 * u(rng), 5 * u(rng), 1.0);
     const glm::dmat4 vp = proj * view;
     const glm::dvec3 p(20 * u(rng), 20 * u(rng), 20 * u(rng));

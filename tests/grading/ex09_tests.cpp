@@ -109,15 +109,15 @@ TEST_CASE("ex09.2: random sets: holds every direction with the brute-force optim
     const double spread = u(rng);
     std::vector<glm::dvec3> d;
     const int n = 2 + static_cast<int>(rng() % 9);
-    for (int k = 0; k < n; ++k) d.push_back((centre + spread * glm::dvec3(g(rng), g(rng), g(rng)) * 0.5) * (0.5 + u(rng)));
+    for (int k = 0; k < n; ++k)
+      d.push_back((centre + spread * glm::dvec3(g(rng), g(rng), g(rng)) * 0.5) * (0.5 + u(rng)));
     bool hemisphere = true;
     for (auto& v : d) hemisphere = hemisphere && glm::dot(v, centre) > 0.05 * glm::length(v);
     if (!hemisphere) continue;
     const glm::dvec4 c = smallestEnclosingCone(d);
     const glm::dvec3 axis(c);
     CHECK(glm::length(axis) == doctest::Approx(1.0));
-    for (auto& v : d)
-      CHECK(std::atan2(glm::length(glm::cross(axis, v)), glm::dot(axis, v)) <= c.w + 1e-9);
+    for (auto& v : d) CHECK(std::atan2(glm::length(glm::cross(axis, v)), glm::dot(axis, v)) <= c.w + 1e-9);
     CHECK(c.w == doctest::Approx(bruteHalfAngle(d)).epsilon(1e-6));
   }
 }

@@ -48,11 +48,16 @@ struct Rng {
   int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
 };
 
-const char* kLightCases[] = {"directional random",          "directional along view (light behind)",
-                             "directional against view",    "directional parallel to near plane",
-                             "directional nearly along view", "point inside frustum",
-                             "point outside anywhere",      "point behind camera",
-                             "point on camera plane / at eye", "point on the axis behind the eye"};
+const char* kLightCases[] = {"directional random",
+                             "directional along view (light behind)",
+                             "directional against view",
+                             "directional parallel to near plane",
+                             "directional nearly along view",
+                             "point inside frustum",
+                             "point outside anywhere",
+                             "point behind camera",
+                             "point on camera plane / at eye",
+                             "point on the axis behind the eye"};
 const char* kBoxCases[] = {"inside", "across", "outside"};
 
 struct Config {
@@ -127,10 +132,15 @@ Config makeConfig(std::uint64_t seed, std::uint64_t index) {
       c.light = glm::dvec4(-glm::normalize(s * fwd + eps * (right * std::cos(a) + up * std::sin(a))), 0.0);
       break;
     }
-    case 5: c.light = glm::dvec4(inFrustum(r.logUniform(c.zn, c.zf), r.uniform(-0.95, 0.95), r.uniform(-0.95, 0.95)), 1); break;
+    case 5:
+      c.light = glm::dvec4(inFrustum(r.logUniform(c.zn, c.zf), r.uniform(-0.95, 0.95), r.uniform(-0.95, 0.95)), 1);
+      break;
     case 6: c.light = glm::dvec4(c.eye + randomUnit(r) * r.logUniform(c.zn * 0.1, c.zf * 10), 1.0); break;
-    case 7: c.light = glm::dvec4(c.eye - fwd * r.logUniform(c.zn * 0.01, c.zf) + right * r.uniform(-1, 1) * c.zn * 10.0 +
-                                     up * r.uniform(-1, 1) * c.zn * 10.0, 1.0); break;
+    case 7:
+      c.light = glm::dvec4(c.eye - fwd * r.logUniform(c.zn * 0.01, c.zf) + right * r.uniform(-1, 1) * c.zn * 10.0 +
+                               up * r.uniform(-1, 1) * c.zn * 10.0,
+                           1.0);
+      break;
     case 8: {
       const double d = r.uniform() < 0.3 ? 0.0 : r.logUniform(c.zn * 0.01, c.zf);
       const double a = r.uniform(0, 2 * std::numbers::pi);
@@ -174,13 +184,13 @@ struct Summary {
   std::uint64_t configs = 0, checks = 0, failures = 0;
   std::uint64_t byStatus[3] = {0, 0, 0}, byKind[3] = {0, 0, 0}, faceSets = 0, originals = 0, lispsm = 0;
   std::uint64_t rayChecks = 0, coneBrute = 0, biasChecks = 0;
-  double worstMapExcess = -1e300;     // max(|x|,|y|) - 1 over receivers (<= tolerance)
-  double worstDepthExcess = -1e300;   // depth outside its range
-  double worstOrderViolation = 0;     // largest depth decrease along a light ray
-  double worstConeExcess = -1e300;    // angle(axis, u) - halfAngle
-  double worstConeVsBrute = 0;        // relative gap to the brute-force optimum
-  double worstBiasError = 0;          // |offset| vs a + b L_texel, relative
-  double worstTexelMismatch = 0;      // folded matrix vs explicit unprojection, relative
+  double worstMapExcess = -1e300;    // max(|x|,|y|) - 1 over receivers (<= tolerance)
+  double worstDepthExcess = -1e300;  // depth outside its range
+  double worstOrderViolation = 0;    // largest depth decrease along a light ray
+  double worstConeExcess = -1e300;   // angle(axis, u) - halfAngle
+  double worstConeVsBrute = 0;       // relative gap to the brute-force optimum
+  double worstBiasError = 0;         // |offset| vs a + b L_texel, relative
+  double worstTexelMismatch = 0;     // folded matrix vs explicit unprojection, relative
   std::string firstFailure;
   std::map<std::string, std::uint64_t> failedInvariants;  // invariant -> failing configurations
 };
@@ -208,7 +218,8 @@ struct Checker {
 // Receiver point inside the map, inside the depth range, in front (w > 0).
 void checkInMap(Checker& k, const glm::dmat4& M, const glm::dvec3& p, DepthRange range, const char* what) {
   const glm::dvec4 h = M * glm::dvec4(p, 1.0);
-  k.check(h.w > 0.0, h.w > 0.0 ? std::string_view() : std::string_view(std::string(what) + ": receiver has clip w <= 0"));
+  k.check(h.w > 0.0,
+          h.w > 0.0 ? std::string_view() : std::string_view(std::string(what) + ": receiver has clip w <= 0"));
   if (!(h.w > 0.0)) return;
   const glm::dvec3 n = glm::dvec3(h) / h.w;
   const double mapEx = std::max(std::abs(n.x), std::abs(n.y)) - 1.0;
@@ -219,8 +230,8 @@ void checkInMap(Checker& k, const glm::dmat4& M, const glm::dvec3& p, DepthRange
   ++k.s.checks;
   if (inside) return;
   std::ostringstream o;  // formatted only on failure: the suite runs millions of these
-  o << std::setprecision(17) << what << ": receiver (" << p.x << ", " << p.y << ", " << p.z << ") -> ndc (" << n.x << ", "
-    << n.y << ", " << n.z << ")";
+  o << std::setprecision(17) << what << ": receiver (" << p.x << ", " << p.y << ", " << p.z << ") -> ndc (" << n.x
+    << ", " << n.y << ", " << n.z << ")";
   k.check(false, o.str());
   --k.s.checks;
 }
@@ -240,7 +251,8 @@ void checkRayOrder(Checker& k, const glm::dmat4& M, const glm::dvec4& light, con
     if (viol > 0) k.s.worstOrderViolation = std::max(k.s.worstOrderViolation, viol);
     ++k.s.rayChecks;
     const bool kept = viol <= kOrderTol * std::max(1.0, std::abs(d));
-    k.check(kept, kept ? std::string_view() : std::string_view(std::string(what) + ": depth order along a light ray broken"));
+    k.check(kept,
+            kept ? std::string_view() : std::string_view(std::string(what) + ": depth order along a light ray broken"));
     last = std::max(last, d);
   };
   if (light.w == 0.0) {
@@ -278,7 +290,8 @@ void runOne(const Config& cfg, Summary& s) {
     }
     if (cfg.lightCase == 1) k.check(fit.light.kind == PostLightKind::Behind, "light along view is Behind");
     if (cfg.lightCase == 2) k.check(fit.light.kind == PostLightKind::InFront, "light against view is InFront");
-    if (cfg.lightCase == 3) k.check(fit.light.kind == PostLightKind::Direction, "light parallel to near plane is Direction");
+    if (cfg.lightCase == 3)
+      k.check(fit.light.kind == PostLightKind::Direction, "light parallel to near plane is Direction");
   }
   for (const auto& p : world) k.check(isFinite(p), "key point finite");
   // Every key point is inside the frustum (up to rounding): in the unit cube after projection.
@@ -298,7 +311,9 @@ void runOne(const Config& cfg, Summary& s) {
         s.worstConeExcess = std::max(s.worstConeExcess, ang - fit.cone.halfAngle);
         const bool held = ang <= fit.cone.halfAngle * (1 + 1e-9) + kConeTol;
         std::ostringstream o;
-        if (!held) o << std::setprecision(17) << "cone holds every key point: angle " << ang << " > half-angle " << fit.cone.halfAngle;
+        if (!held)
+          o << std::setprecision(17) << "cone holds every key point: angle " << ang << " > half-angle "
+            << fit.cone.halfAngle;
         k.check(held, o.str());
       }
       const std::size_t m = std::min<std::size_t>(post.size(), 6);
@@ -439,18 +454,18 @@ TEST_CASE("stress: PSM light cameras, cone, cube faces and bias over random conf
   std::ostringstream o;
   o << std::setprecision(3);
   o << "[psm stress] seed " << seed << " (run seed " << shadowlab::test::seed() << "): " << s.configs
-    << " configurations, " << s.checks << " invariant checks, " << s.failures << " failing configurations, "
-    << secs << " s\n"
+    << " configurations, " << s.checks << " invariant checks, " << s.failures << " failing configurations, " << secs
+    << " s\n"
     << "  lights: in front " << s.byKind[0] << ", behind " << s.byKind[1] << ", direction " << s.byKind[2]
     << "; cone fit ok " << s.byStatus[0] << ", no receivers " << s.byStatus[1] << ", cone too wide " << s.byStatus[2]
     << "\n  cube-face sets " << s.faceSets << ", original PSM " << s.originals << ", LiSPSM " << s.lispsm
     << ", ray-order samples " << s.rayChecks << ", cones vs brute force " << s.coneBrute << ", bias checks "
     << s.biasChecks << "\n  worst margins: map " << s.worstMapExcess << " (limit " << kMapTol << "), depth "
-    << s.worstDepthExcess << " (limit " << kMapTol << "), order violation " << s.worstOrderViolation
-    << ", cone excess " << s.worstConeExcess << " rad, cone vs brute " << s.worstConeVsBrute
-    << " (rel), bias length " << s.worstBiasError << " (rel), texel fold vs unprojection " << s.worstTexelMismatch
-    << " (rel)\n";
-  for (const auto& [what, n] : s.failedInvariants) o << "  FAILED " << n << " configurations first on: " << what << "\n";
+    << s.worstDepthExcess << " (limit " << kMapTol << "), order violation " << s.worstOrderViolation << ", cone excess "
+    << s.worstConeExcess << " rad, cone vs brute " << s.worstConeVsBrute << " (rel), bias length " << s.worstBiasError
+    << " (rel), texel fold vs unprojection " << s.worstTexelMismatch << " (rel)\n";
+  for (const auto& [what, n] : s.failedInvariants)
+    o << "  FAILED " << n << " configurations first on: " << what << "\n";
   std::cout << o.str();
   MESSAGE(o.str());
   if (s.failures) FAIL_CHECK("first failing configuration per invariant:\n" << s.firstFailure);

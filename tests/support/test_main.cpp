@@ -71,7 +71,7 @@ bool writeScores(const std::string& path) {
 namespace shadowlab::test {
 std::uint64_t seed() { return g_seed; }
 std::uint64_t seedFor(const std::string& salt) {
-  return g_seed ^ (std::hash<std::string>{}(salt) * 0x9E3779B97F4A7C15ull);
+  return g_seed ^ (std::hash<std::string>{}(salt)*0x9E3779B97F4A7C15ull);
 }
 }  // namespace shadowlab::test
 
@@ -116,8 +116,7 @@ int main(int argc, char** argv) {
   bool listing = false;  // test discovery parses stdout: print nothing extra then
   for (char* arg : rest) listing = listing || std::strncmp(arg, "--list", 6) == 0 || std::strncmp(arg, "-l", 2) == 0;
   if (!listing)
-    std::cout << "[shadowlab] seed " << g_seed << " (replay with --seed=" << g_seed
-              << " or SHADOWLAB_SEED)\n";
+    std::cout << "[shadowlab] seed " << g_seed << " (replay with --seed=" << g_seed << " or SHADOWLAB_SEED)\n";
   const int result = context.run();
   if (!scoreJson.empty() && !writeScores(scoreJson)) {
     std::cerr << "cannot write --score-json file " << scoreJson << "\n";

@@ -14,8 +14,8 @@ namespace {
 constexpr float kPi = 3.14159265358979f;
 
 void checkVec(const glm::vec3& got, const glm::vec3& want, float eps = 1e-4f) {
-  INFO("got (" << got.x << ", " << got.y << ", " << got.z << "), want (" << want.x << ", " << want.y << ", "
-               << want.z << ")");
+  INFO("got (" << got.x << ", " << got.y << ", " << got.z << "), want (" << want.x << ", " << want.y << ", " << want.z
+               << ")");
   CHECK(glm::length(got - want) < eps);
 }
 

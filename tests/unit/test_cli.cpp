@@ -11,16 +11,13 @@ static CommandLine parse(std::vector<std::string> args) {
 static std::string errorOf(std::vector<std::string> args) {
   try {
     parse(std::move(args));
-  } catch (const CliError& e) {
-    return e.what();
-  }
+  } catch (const CliError& e) { return e.what(); }
   return "no error";
 }
 
 TEST_CASE("cli: the shared flags parse, with both value styles") {
-  const auto cl = parse({"--headless", "--size", "640x360", "--frames=5", "--screenshot", "a.png",
-                         "--set", "ambient=0.2", "--set=mode=depth", "--preset", "acne", "--bench", "b.csv",
-                         "--ui-scale", "2"});
+  const auto cl = parse({"--headless", "--size", "640x360", "--frames=5", "--screenshot", "a.png", "--set",
+                         "ambient=0.2", "--set=mode=depth", "--preset", "acne", "--bench", "b.csv", "--ui-scale", "2"});
   CHECK(cl.headless);
   CHECK(cl.width == 640);
   CHECK(cl.height == 360);

@@ -149,8 +149,6 @@ TEST_CASE("image: load and save errors name the path and the reason") {
   try {
     savePng(unwritable, filled(2, 2, 3, 0));
     FAIL("expected runtime_error");
-  } catch (const std::runtime_error& e) {
-    CHECK(std::string(e.what()).find(unwritable) != std::string::npos);
-  }
+  } catch (const std::runtime_error& e) { CHECK(std::string(e.what()).find(unwritable) != std::string::npos); }
   CHECK_THROWS_AS(savePng(temp("shadowlab_empty.png"), Image8{}), std::invalid_argument);
 }

@@ -31,8 +31,8 @@ TEST_CASE("lighting: incident radiance falls off with f_att and vanishes outside
   spot.direction = {0, -1, 0};
   spot.spotInner = 0.2f;
   spot.spotOuter = 0.3f;
-  CHECK(lighting::incidentRadiance(spot, {0, 0, 0}).x == doctest::Approx(1.0f));   // on the axis
-  CHECK(lighting::incidentRadiance(spot, {4, 0, 0}).x == doctest::Approx(0.0f));   // 45 degrees off
+  CHECK(lighting::incidentRadiance(spot, {0, 0, 0}).x == doctest::Approx(1.0f));  // on the axis
+  CHECK(lighting::incidentRadiance(spot, {4, 0, 0}).x == doctest::Approx(0.0f));  // 45 degrees off
   spot.enabled = false;
   CHECK(lighting::incidentRadiance(spot, {0, 0, 0}).x == 0.0f);
 }

@@ -118,9 +118,9 @@ TEST_CASE("measure.ground_truth: back-facing, out-of-cone and background pixels 
   addObject(scene, horizontalQuad(-1, 1, -1, 1, 3));
   GroundTruth truth(scene);
   SurfaceBuffer view(4, 1);
-  view.set(0, 0, {0, 0, 0}, {0, 1, 0});      // under the occluder
-  view.set(1, 0, {0, 0, 0}, {0, -1, 0});     // facing away
-  view.set(2, 0, {5, 0, 0}, {0, 1, 0});      // open sky
+  view.set(0, 0, {0, 0, 0}, {0, 1, 0});   // under the occluder
+  view.set(1, 0, {0, 0, 0}, {0, -1, 0});  // facing away
+  view.set(2, 0, {5, 0, 0}, {0, 1, 0});   // open sky
   // pixel 3 stays background
   Light light;
   light.kind = LightKind::Point;
@@ -353,8 +353,7 @@ TEST_CASE("measure.ground_truth: bad input throws naming the value") {
   SurfaceBuffer view(2, 2);
   Light light;
   light.area = AreaShape::Sphere;
-  CHECK_THROWS_WITH_AS(truth.softVisibility(view, light, 0, 1), doctest::Contains("samples 0"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(truth.softVisibility(view, light, 0, 1), doctest::Contains("samples 0"), std::invalid_argument);
   Light unknown;
   unknown.kind = static_cast<LightKind>(7);
   CHECK_THROWS_WITH_AS(truth.hardVisibility(view, unknown), doctest::Contains("7"), std::invalid_argument);
@@ -363,15 +362,20 @@ TEST_CASE("measure.ground_truth: bad input throws naming the value") {
   Light sun;
   sun.kind = LightKind::Directional;
   sun.area = AreaShape::Sphere;
-  CHECK_THROWS_WITH_AS(truth.softVisibility(view, sun, 4, 1), doctest::Contains("Directional"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(truth.softVisibility(view, sun, 4, 1), doctest::Contains("Directional"), std::invalid_argument);
   SurfaceBuffer broken(2, 2);
   broken.normal.pop_back();
   CHECK_THROWS_WITH_AS(truth.hardVisibility(broken, Light{}), doctest::Contains("normal 3"), std::invalid_argument);
   CHECK_THROWS_AS(downsample(view, 0), std::invalid_argument);
   ImageF pos, nrm;
-  pos.width = 2; pos.height = 2; pos.channels = 4; pos.data.assign(16, 0.0f);
-  nrm.width = 3; nrm.height = 2; nrm.channels = 4; nrm.data.assign(24, 0.0f);
+  pos.width = 2;
+  pos.height = 2;
+  pos.channels = 4;
+  pos.data.assign(16, 0.0f);
+  nrm.width = 3;
+  nrm.height = 2;
+  nrm.channels = 4;
+  nrm.data.assign(24, 0.0f);
   CHECK_THROWS_WITH_AS(surfaceFromImages(pos, nrm), doctest::Contains("3x2"), std::invalid_argument);
 }
 
@@ -382,7 +386,10 @@ TEST_CASE("measure.ground_truth: read-backs and downsampling keep pixels where t
   pos.channels = nrm.channels = 4;
   pos.data.assign(32, 0.0f);
   nrm.data.assign(32, 0.0f);
-  pos.at(3, 1, 0) = 1; pos.at(3, 1, 1) = 2; pos.at(3, 1, 2) = 3; pos.at(3, 1, 3) = 1;
+  pos.at(3, 1, 0) = 1;
+  pos.at(3, 1, 1) = 2;
+  pos.at(3, 1, 2) = 3;
+  pos.at(3, 1, 3) = 1;
   nrm.at(3, 1, 1) = 2;  // renormalised to (0,1,0)
   SurfaceBuffer s = surfaceFromImages(pos, nrm);
   CHECK(s.covered[s.index(3, 1)] == 1);

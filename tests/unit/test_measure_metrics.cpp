@@ -27,15 +27,17 @@ const float NaN = std::numeric_limits<float>::quiet_NaN();
 
 // Reference: columns 0-1 lit, 2-3 shadowed; (0,2) faces away, (3,2) is background.
 ImageF reference() {
-  return image(4, 3, {1, 1, 0, 0,  //
-                      1, 1, 0, 0,  //
-                      kNotFacing, 1, 0, kBackground});
+  return image(4, 3,
+               {1, 1, 0, 0,  //
+                1, 1, 0, 0,  //
+                kNotFacing, 1, 0, kBackground});
 }
 // Technique: a false shadow at (1,0), leaks at (3,0) and (2,1); (0,2) differs but is not facing.
 ImageF technique() {
-  return image(4, 3, {0.7f, 0.3f, 0, 1,  //
-                      1, 1, 0.9f, 0,     //
-                      0, 1, 0, 0});
+  return image(4, 3,
+               {0.7f, 0.3f, 0, 1,  //
+                1, 1, 0.9f, 0,     //
+                0, 1, 0, 0});
 }
 
 }  // namespace
@@ -108,7 +110,10 @@ TEST_CASE("measure.metrics: the hard error heatmap colours leaks, false shadows 
   Image8 map = hardErrorHeatmap(technique(), reference());
   REQUIRE(map.width == 4);
   REQUIRE(map.channels == 4);
-  auto rgb = [&](int x, int y) { const std::uint8_t* p = map.at(x, y); return Rgb8{p[0], p[1], p[2]}; };
+  auto rgb = [&](int x, int y) {
+    const std::uint8_t* p = map.at(x, y);
+    return Rgb8{p[0], p[1], p[2]};
+  };
   CHECK(rgb(3, 0) == kLeakColor);
   CHECK(rgb(2, 1) == kLeakColor);
   CHECK(rgb(1, 0) == kFalseShadowColor);
@@ -128,7 +133,9 @@ TEST_CASE("measure.metrics: m is the inverse of J's smallest singular value") {
   // Scaling: J = diag(2, 0.5) stretches screen y to half a texel per pixel, so a texel spans 2 pixels.
   CHECK(aliasingFactor(glm::mat2(glm::vec2(2, 0), glm::vec2(0, 0.5f))) == doctest::Approx(2.0));
   // Rotations do not change singular values: R(0.3) diag(4, 0.25) R(-1.1) -> m = 4.
-  auto rot = [](float a) { return glm::mat2(glm::vec2(std::cos(a), std::sin(a)), glm::vec2(-std::sin(a), std::cos(a))); };
+  auto rot = [](float a) {
+    return glm::mat2(glm::vec2(std::cos(a), std::sin(a)), glm::vec2(-std::sin(a), std::cos(a)));
+  };
   glm::mat2 J = rot(0.3f) * glm::mat2(glm::vec2(4, 0), glm::vec2(0, 0.25f)) * rot(-1.1f);
   CHECK(aliasingFactor(J) == doctest::Approx(4.0).epsilon(1e-5));
   // Shear [[1, k], [0, 1]]: sigma_min = (sqrt(k^2 + 4) - k) / 2; k = 1.5 gives 0.5, m = 2.

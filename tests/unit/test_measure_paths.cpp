@@ -91,9 +91,7 @@ TEST_CASE("measure.paths: bad lines are reported with file name and line number"
     std::istringstream in(text);
     try {
       CameraLightPath::read(in, "walk.path");
-    } catch (const std::runtime_error& e) {
-      return std::string(e.what());
-    }
+    } catch (const std::runtime_error& e) { return std::string(e.what()); }
     return std::string("no error");
   };
   const std::string head = "shadowlab-path 1\n# comment\n\n";
@@ -103,7 +101,7 @@ TEST_CASE("measure.paths: bad lines are reported with file name and line number"
   CHECK(errorOf(head + good + "key 1  0 2 8  0 0 zero  0 8 0  0 -1 0\n").rfind("walk.path:5: 'zero'", 0) == 0);
   CHECK(errorOf(head + good + "key 1  0 2 8  0 0 0  0 8 0  0 -1 0 7\n").rfind("walk.path:5: unexpected '7'", 0) == 0);
   CHECK(errorOf(head + good + "key 0  0 2 8  0 0 0  0 8 0  0 -1 0\n").rfind("walk.path:5: ", 0) == 0);  // time
-  CHECK(errorOf(head + good + "key 1  0 2 8  0 0 0  0 8 0  0 0 0\n").rfind("walk.path:5: ", 0) == 0);  // no dir
+  CHECK(errorOf(head + good + "key 1  0 2 8  0 0 0  0 8 0  0 0 0\n").rfind("walk.path:5: ", 0) == 0);   // no dir
   CHECK(errorOf(head + "camera 1 2 3\n").rfind("walk.path:4: unknown record 'camera'", 0) == 0);
   CHECK(errorOf("key 0 0 0 0 0 0 0 0 0 0 0 -1 0\n").rfind("walk.path:1: expected 'shadowlab-path 1'", 0) == 0);
   CHECK(errorOf("shadowlab-path 2\n").rfind("walk.path:1: unsupported path version 2", 0) == 0);

@@ -59,12 +59,16 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
   for (std::size_t i = 0; i < line.size(); ++i) {
     char c = line[i];
     if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') { cell += '"'; ++i; }
-      else if (c == '"') quoted = false;
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') quoted = false;
       else cell += c;
     } else if (c == '"') quoted = true;
-    else if (c == ',') { cells.push_back(cell); cell.clear(); }
-    else cell += c;
+    else if (c == ',') {
+      cells.push_back(cell);
+      cell.clear();
+    } else cell += c;
   }
   cells.push_back(cell);
   return cells;

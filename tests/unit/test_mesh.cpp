@@ -245,9 +245,7 @@ TEST_CASE("mesh_gen: invalid tessellations are rejected with the parameter named
   try {
     makeTorus(1.0f, 0.2f, 8, 1);
     FAIL("expected an exception");
-  } catch (const std::invalid_argument& e) {
-    CHECK(std::string(e.what()).find("sides") != std::string::npos);
-  }
+  } catch (const std::invalid_argument& e) { CHECK(std::string(e.what()).find("sides") != std::string::npos); }
 }
 
 TEST_CASE("mesh: topology analysis on hand-made cases") {

@@ -23,9 +23,7 @@ const std::string kDir = SHADOWLAB_TEST_DATA "/obj/";
 std::string loadError(const std::string& path) {
   try {
     loadObj(path);
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
+  } catch (const std::runtime_error& e) { return e.what(); }
   return {};
 }
 
@@ -107,15 +105,15 @@ TEST_CASE("obj: polygons, relative indices and statements that carry nothing") {
   CHECK(m.triangleCount() == 3);  // a convex pentagon: n - 2 triangles
   CHECK(m.vertexCount() == 5);
   for (const glm::vec3& n : m.normals) CHECK(n.z == doctest::Approx(1.0f));
-  const char* bad[][2] = {{"f 1 2\n", "line 4"},                // two corners
-                          {"f 1 2 0\n", "line 4"},              // index 0 does not exist
-                          {"f 1 2 -4\n", "line 4"},             // relative past the start
-                          {"f 1/1 2 3\n", "line 4"},            // no uvs defined
-                          {"f 1 2 3x\n", "line 4"},             // not a number
-                          {"vn 1 0\n", "line 4"},               // too few numbers
-                          {"v 1 nan 2\n", "line 4"},            // not finite
-                          {"bogus 1 2 3\n", "line 4"},          // unknown statement
-                          {"f 1/2/3/4 2 3\n", "line 4"}};       // too many slashes
+  const char* bad[][2] = {{"f 1 2\n", "line 4"},           // two corners
+                          {"f 1 2 0\n", "line 4"},         // index 0 does not exist
+                          {"f 1 2 -4\n", "line 4"},        // relative past the start
+                          {"f 1/1 2 3\n", "line 4"},       // no uvs defined
+                          {"f 1 2 3x\n", "line 4"},        // not a number
+                          {"vn 1 0\n", "line 4"},          // too few numbers
+                          {"v 1 nan 2\n", "line 4"},       // not finite
+                          {"bogus 1 2 3\n", "line 4"},     // unknown statement
+                          {"f 1/2/3/4 2 3\n", "line 4"}};  // too many slashes
   for (const auto& [line, where] : bad) {
     INFO(line);
     TempFile broken("broken.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\n") + line);

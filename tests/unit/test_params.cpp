@@ -56,9 +56,7 @@ TEST_CASE("params: bad input names the value and the valid choices, and changes 
   auto message = [&](const std::string& name, const std::string& value) {
     try {
       f.reg.set(name, value);
-    } catch (const ParamError& e) {
-      return std::string(e.what());
-    }
+    } catch (const ParamError& e) { return std::string(e.what()); }
     return std::string("no error");
   };
   CHECK(message("ambient", "2") == "bad value '2' for ambient (float); valid: [0, 1]");
@@ -129,16 +127,16 @@ TEST_CASE("presets: malformed files name the file and the line") {
     try {
       PresetFile file = PresetFile::load(path);
       if (validate) file.validate(f.reg);
-    } catch (const ParamError& e) {
-      return std::string(e.what());
-    }
+    } catch (const ParamError& e) { return std::string(e.what()); }
     return std::string("no error");
   };
   CHECK(errorOf("[a]\nambient 0.5\n", false) == path + ":2: expected 'name = value' or [preset], got 'ambient 0.5'");
   CHECK(errorOf("ambient = 1\n", false).rfind(path + ":1: ", 0) == 0);
   CHECK(errorOf("[a\n", false).rfind(path + ":1: ", 0) == 0);
   CHECK(errorOf("[a]\n[a]\n", false) == path + ":2: preset 'a' is defined twice");
-  CHECK(errorOf("[a]\nambient = 0.5\nwhat = 1\n", true).rfind(path + ":3: in preset 'a': unknown parameter 'what'", 0) == 0);
+  CHECK(
+      errorOf("[a]\nambient = 0.5\nwhat = 1\n", true).rfind(path + ":3: in preset 'a': unknown parameter 'what'", 0) ==
+      0);
   CHECK(f.p.ambient == doctest::Approx(0.1f));  // validation leaves values alone
   std::remove(path.c_str());
 }

@@ -197,7 +197,7 @@ TEST_CASE("psm camera: original PSM slides the camera back only for a light behi
   const CameraFrustum c = handCamera();
   const std::vector<Aabb> recv = {box({-0.5f, -0.5f, -2.5f}, {0.5f, 0.5f, -1.5f})};
   const std::vector<Aabb> casters = {box({-0.2f, -0.2f, 1.0f}, {0.2f, 0.2f, 2.0f})};  // behind the eye
-  CHECK(virtualCameraShift(c, casters) == doctest::Approx(3.0));  // z_max 2 + zNear 1
+  CHECK(virtualCameraShift(c, casters) == doctest::Approx(3.0));                      // z_max 2 + zNear 1
   std::vector<glm::dvec3> a, b, d;
   OriginalPsm o = fitOriginalPsm(c, {0.3, 1, 1, 0}, recv, casters, {}, a, b, d);
   CHECK(o.shift == doctest::Approx(3.0));

@@ -74,7 +74,8 @@ TEST_CASE("psm bias: texel size with an affine map, clamping, and the constant b
   CHECK(texelWorldSizePaper(K, {1, 2, 3}) == doctest::Approx(2.0));  // the paper squares it
   const glm::dvec3 b = biasedWorldPoint({0, 0, 0}, {0, 0, -1}, 0.1, 1.0, 1e9, 0.5);
   CHECK(b.z == doctest::Approx(-0.5));  // clamped
-  const glm::dvec3 inf = biasedWorldPoint({0, 0, 0}, {0, 0, -1}, 0.1, 1.0, std::numeric_limits<double>::infinity(), 2.0);
+  const glm::dvec3 inf =
+      biasedWorldPoint({0, 0, 0}, {0, 0, -1}, 0.1, 1.0, std::numeric_limits<double>::infinity(), 2.0);
   CHECK(inf.z == doctest::Approx(-2.0));
   CHECK_THROWS_AS(texelOffsetMatrix(glm::dmat4(0.0), {4, 4}), std::invalid_argument);
   CHECK_THROWS_AS(texelOffsetMatrix(M, {0, 4}), std::invalid_argument);
@@ -113,7 +114,8 @@ TEST_CASE("psm aliasing: closed forms at the ends of the depth range") {
   CHECK(perspectiveAliasing(Parameterisation::Lispsm, 30.0, n, f, n) ==
         doctest::Approx(perspectiveAliasing(Parameterisation::Psm, 30.0, n, f)));
   // m = (dz/ds) / z: check against a numerical derivative of s(z).
-  for (auto p : {Parameterisation::Uniform, Parameterisation::Psm, Parameterisation::Lispsm, Parameterisation::Logarithmic}) {
+  for (auto p :
+       {Parameterisation::Uniform, Parameterisation::Psm, Parameterisation::Lispsm, Parameterisation::Logarithmic}) {
     const double z = 17.0, h = 1e-4;
     const double ds = shadowMapCoordinate(p, z + h, n, f) - shadowMapCoordinate(p, z - h, n, f);
     CHECK(perspectiveAliasing(p, z, n, f) == doctest::Approx(2 * h / ds / z).epsilon(1e-6));

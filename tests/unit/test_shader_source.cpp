@@ -78,9 +78,7 @@ class ScopedEnv {
 std::string errorOf(const std::string& path, const std::vector<std::string>& includeDirs = {}) {
   try {
     loadShaderSource(path, includeDirs);
-  } catch (const ShaderSourceError& e) {
-    return e.what();
-  }
+  } catch (const ShaderSourceError& e) { return e.what(); }
   return "<no error>";
 }
 
@@ -311,15 +309,16 @@ TEST_CASE("shader source: an include cycle is an error naming the chain") {
   dir.write("c.glsl",
             "// c\n"
             "#include \"b.glsl\"\n");
-  CHECK(errorOf(top) == dir / "c.glsl" + ":2: #include cycle: " + dir / "b.glsl" + " -> " + dir / "c.glsl" +
-                            " -> " + dir / "b.glsl");
+  CHECK(errorOf(top) ==
+        dir / "c.glsl" + ":2: #include cycle: " + dir / "b.glsl" + " -> " + dir / "c.glsl" + " -> " + dir / "b.glsl");
 
   // A file including itself, and an include back to the top file, are cycles too.
   const std::string self = dir.write("self.frag", "#include \"self.frag\"\n");
   CHECK(errorOf(self) == self + ":1: #include cycle: " + self + " -> " + self);
   const std::string back = dir.write("back.frag", "#include \"back.glsl\"\n");
   dir.write("back.glsl", "\n\n#include \"back.frag\"\n");
-  CHECK(errorOf(back) == dir / "back.glsl" + ":3: #include cycle: " + back + " -> " + dir / "back.glsl" + " -> " + back);
+  CHECK(errorOf(back) ==
+        dir / "back.glsl" + ":3: #include cycle: " + back + " -> " + dir / "back.glsl" + " -> " + back);
 }
 
 TEST_CASE("shader source: a missing include names the target, the including file and line, and where it looked") {
@@ -432,9 +431,7 @@ TEST_CASE("shader source: the stage comes from the extension") {
   const auto message = [](const std::string& path) {
     try {
       stageFromPath(path);
-    } catch (const ShaderSourceError& e) {
-      return std::string(e.what());
-    }
+    } catch (const ShaderSourceError& e) { return std::string(e.what()); }
     return std::string("<no error>");
   };
   CHECK(message("common/lighting.glsl") ==

@@ -16,7 +16,9 @@ using namespace shadowlab;
 using namespace shadowlab::shadow;
 
 namespace {
-bool near3(const glm::vec3& a, const glm::vec3& b, float eps = 1e-4f) { return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(eps))); }
+bool near3(const glm::vec3& a, const glm::vec3& b, float eps = 1e-4f) {
+  return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(eps)));
+}
 }  // namespace
 
 TEST_CASE("shadow_math: the texture matrix maps the light frustum onto [0,1]^3") {
@@ -30,13 +32,14 @@ TEST_CASE("shadow_math: the texture matrix maps the light frustum onto [0,1]^3")
   // On the near plane's centre: depth 0; a point 10 to the side at distance 10 is on the 45-degree edge.
   CHECK(shadowCoord(T, {0, 9, 0}).z == doctest::Approx(0.0f).epsilon(1e-5));
   const glm::vec3 edge = shadowCoord(T, {10, 0, 0});
-  CHECK((std::abs(edge.x - 1.0f) < 1e-4f || std::abs(edge.x) < 1e-4f || std::abs(edge.y - 1.0f) < 1e-4f || std::abs(edge.y) < 1e-4f));
+  CHECK((std::abs(edge.x - 1.0f) < 1e-4f || std::abs(edge.x) < 1e-4f || std::abs(edge.y - 1.0f) < 1e-4f ||
+         std::abs(edge.y) < 1e-4f));
 }
 
 TEST_CASE("shadow_math: depth comparison is LEQUAL after the bias") {
-  CHECK(depthCompare(0.5f, 0.5f, 0.0f) == 1.0f);   // equal: lit (LEQUAL)
-  CHECK(depthCompare(0.51f, 0.5f, 0.0f) == 0.0f);  // behind the occluder: shadowed
-  CHECK(depthCompare(0.51f, 0.5f, 0.02f) == 1.0f); // the bias rescues it
+  CHECK(depthCompare(0.5f, 0.5f, 0.0f) == 1.0f);    // equal: lit (LEQUAL)
+  CHECK(depthCompare(0.51f, 0.5f, 0.0f) == 0.0f);   // behind the occluder: shadowed
+  CHECK(depthCompare(0.51f, 0.5f, 0.02f) == 1.0f);  // the bias rescues it
   CHECK(depthCompare(0.2f, 0.5f, 0.0f) == 1.0f);
 }
 
@@ -123,7 +126,8 @@ TEST_CASE("shadow_math: volumes from a box and a frustum, their overlap and inte
   const ConvexVolume box = volumeFromBox({{-1, -1, -1}, {1, 1, 1}});
   for (const glm::vec4& p : box.planes) CHECK(glm::dot(glm::vec3(p), glm::vec3(0)) + p.w == doctest::Approx(1.0f));
   // A camera at z = 10 looking down -z, near 1, far 100: sees the box.
-  const glm::mat4 vp = glm::perspective(glm::radians(60.0f), 1.0f, 1.0f, 100.0f) * glm::lookAt(glm::vec3(0, 0, 10), glm::vec3(0), glm::vec3(0, 1, 0));
+  const glm::mat4 vp = glm::perspective(glm::radians(60.0f), 1.0f, 1.0f, 100.0f) *
+                       glm::lookAt(glm::vec3(0, 0, 10), glm::vec3(0), glm::vec3(0, 1, 0));
   const ConvexVolume frustum = volumeFromViewProj(vp);
   CHECK(volumesMayIntersect(box, frustum));
   // Every inward plane has the camera's target point inside.

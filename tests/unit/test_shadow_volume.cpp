@@ -22,7 +22,8 @@ Mesh finiteVolume(const std::vector<glm::vec4>& tris, const glm::vec4& light) {
   Mesh m;
   for (const glm::vec4& v : tris) {
     glm::vec3 p(v);
-    if (v.w == 0.0f) p += 1000.0f * glm::normalize(light.w != 0.0f ? p - glm::vec3(light) / light.w : -glm::vec3(light));
+    if (v.w == 0.0f)
+      p += 1000.0f * glm::normalize(light.w != 0.0f ? p - glm::vec3(light) / light.w : -glm::vec3(light));
     m.indices.push_back(std::uint32_t(m.positions.size()));
     m.positions.push_back(p);
   }
@@ -32,7 +33,8 @@ double signedVolume(const Mesh& m) {
   double v = 0;
   for (std::size_t t = 0; t < m.indices.size(); t += 3)
     v += glm::dot(glm::dvec3(m.positions[m.indices[t]]),
-                  glm::cross(glm::dvec3(m.positions[m.indices[t + 1]]), glm::dvec3(m.positions[m.indices[t + 2]]))) / 6.0;
+                  glm::cross(glm::dvec3(m.positions[m.indices[t + 1]]), glm::dvec3(m.positions[m.indices[t + 2]]))) /
+         6.0;
   return v;
 }
 
@@ -94,7 +96,9 @@ TEST_CASE("volume.adjacency: open, flipped and bad meshes are reported") {
 
 TEST_CASE("volume.silhouette: a unit box under lights from above and from a corner") {
   const EdgeAdjacency adj = buildAdjacency(makeBox(glm::vec3(1)));
-  SUBCASE("sun straight down: only the top faces toward it (sides are edge-on, dot = 0, not toward); the top square's 4 edges") {
+  SUBCASE(
+      "sun straight down: only the top faces toward it (sides are edge-on, dot = 0, not toward); the top square's 4 "
+      "edges") {
     const auto s = findSilhouette(adj, glm::vec4(0, 1, 0, 0));
     CHECK(s.size() == 4);
     for (const auto& e : s) {
@@ -121,7 +125,8 @@ TEST_CASE("volume.silhouette: a unit box under lights from above and from a corn
       bool found = false;
       for (std::size_t f = 0; f < adj.faceCount(); ++f)
         for (int k = 0; k < 3; ++k)
-          if (adj.triangles[3 * f + k] == e.a && adj.triangles[3 * f + (k + 1) % 3] == e.b) found = facesLight(adj.planes[f], L);
+          if (adj.triangles[3 * f + k] == e.a && adj.triangles[3 * f + (k + 1) % 3] == e.b)
+            found = facesLight(adj.planes[f], L);
       CHECK(found);
     }
   }
@@ -132,10 +137,10 @@ TEST_CASE("volume.silhouette: the four-point form agrees with the adjacency form
   // (1,0,0) x (0,0,-1) = (0,1,0), the top; face (b, a, d) with d = (0,-1,0): (-1,0,0) x (-1,-1,0) =
   // (0,0,1), the front.
   const glm::vec3 a(0, 0, 0), b(1, 0, 0), c(0, 0, -1), d(0, -1, 0);
-  CHECK(isSilhouette(a, b, c, d, glm::vec4(0, 5, -5, 1)));   // above and behind: sees the top only
-  CHECK_FALSE(isSilhouette(a, b, c, d, glm::vec4(0, 5, 5, 1)));  // above and in front: sees both
+  CHECK(isSilhouette(a, b, c, d, glm::vec4(0, 5, -5, 1)));         // above and behind: sees the top only
+  CHECK_FALSE(isSilhouette(a, b, c, d, glm::vec4(0, 5, 5, 1)));    // above and in front: sees both
   CHECK_FALSE(isSilhouette(a, b, c, d, glm::vec4(0, -5, -5, 1)));  // below and behind: sees neither
-  CHECK(isSilhouette(a, b, c, d, glm::vec4(0, 0, 1, 0)));    // sun from +z: the front only (the top is edge-on: 0)
+  CHECK(isSilhouette(a, b, c, d, glm::vec4(0, 0, 1, 0)));  // sun from +z: the front only (the top is edge-on: 0)
 }
 
 TEST_CASE("volume.build: the volume is closed, faces outward, and counts sides and caps") {
@@ -199,10 +204,15 @@ TEST_CASE("volume.near: which casters can throw a volume onto the near plane") {
     CHECK(std::abs(c.y) == doctest::Approx(1.0f));
     CHECK(c.z == doctest::Approx(-1.0f));
   }
-  auto box = [](glm::vec3 c, float h) { Aabb b; b.extend(c - glm::vec3(h)); b.extend(c + glm::vec3(h)); return b; };
+  auto box = [](glm::vec3 c, float h) {
+    Aabb b;
+    b.extend(c - glm::vec3(h));
+    b.extend(c + glm::vec3(h));
+    return b;
+  };
   SUBCASE("point light ahead at z = -10: the pyramid from the rectangle to it") {
     const glm::vec4 L(0, 0, -10, 1);
-    CHECK(volumeMayReachNearPlane(box({0, 0, -5}, 0.5f), r, L));    // on the axis: in its shadow
+    CHECK(volumeMayReachNearPlane(box({0, 0, -5}, 0.5f), r, L));  // on the axis: in its shadow
     // At z = -5 the pyramid's half-width is 1 * (10 - 5) / 9 = 0.56; a box at x 4.5..5.5 is clear of it.
     CHECK_FALSE(volumeMayReachNearPlane(box({5, 0, -5}, 0.5f), r, L));
     // Beyond the light (z = -20): its shadow falls away from the camera.
@@ -246,7 +256,8 @@ TEST_CASE("volume.scissor: a light's reach and its rectangle on screen") {
   // viewProj = identity: the sphere's box is its own NDC rectangle: [-0.5, 0.5] -> pixels 25..75 of 100.
   CHECK(scissorForSphere({0, 0, 0}, 0.5f, glm::mat4(1), 100, 100) == ScissorRect{25, 25, 50, 50});
   CHECK(scissorForSphere({5, 0, 0}, 0.5f, glm::mat4(1), 100, 100).width == 0);  // off screen
-  CHECK(scissorForSphere({0.9f, 0, 0}, 0.5f, glm::mat4(1), 100, 100) == ScissorRect{70, 25, 30, 50});  // clamped at the edge
+  CHECK(scissorForSphere({0.9f, 0, 0}, 0.5f, glm::mat4(1), 100, 100) ==
+        ScissorRect{70, 25, 30, 50});  // clamped at the edge
   // A perspective camera at the origin: a light sphere around the eye covers the whole screen.
   const glm::mat4 P = glm::perspective(1.0f, 1.0f, 0.1f, 100.0f);
   CHECK(scissorForSphere({0, 0, 0}, 2.0f, P, 64, 48) == ScissorRect{0, 0, 64, 48});
@@ -257,6 +268,7 @@ TEST_CASE("volume.silhouette: a custom test replaces the plane test on paired ed
   const glm::vec4 L(10, 10, 3, 1);
   CHECK(findSilhouette(adj, L, &isSilhouette).size() == findSilhouette(adj, L).size());
   // A test that says yes to everything: all 18 edges, each oriented by its lit face where one is lit.
-  const SilhouetteTest always = [](const glm::vec3&, const glm::vec3&, const glm::vec3&, const glm::vec3&, const glm::vec4&) { return true; };
+  const SilhouetteTest always = [](const glm::vec3&, const glm::vec3&, const glm::vec3&, const glm::vec3&,
+                                   const glm::vec4&) { return true; };
   CHECK(findSilhouette(adj, L, always).size() == 18);
 }

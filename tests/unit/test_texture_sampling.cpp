@@ -37,7 +37,7 @@ std::vector<ImageF> levelChain() { return {constant(4, 4, 0), constant(2, 2, 1),
 
 TEST_CASE("texture sampling: mip level count halves to 1x1") {
   CHECK(mipLevelCount(1, 1) == 1);
-  CHECK(mipLevelCount(256, 64) == 9);    // the lecture's chain: 256x64 ... 2x1, 1x1
+  CHECK(mipLevelCount(256, 64) == 9);  // the lecture's chain: 256x64 ... 2x1, 1x1
   CHECK(mipLevelCount(1024, 1) == 11);
   CHECK(mipLevelCount(640, 480) == 10);  // 640 320 160 80 40 20 10 5 2 1
   CHECK(mipLevelSize(256, 64, 6) == glm::ivec2(4, 1));
@@ -114,10 +114,11 @@ TEST_CASE("texture sampling: nearest and bilinear on a 2x1 ramp") {
   CHECK(sampleBilinear(img, {0.5f, 0.5f}).x == doctest::Approx(0.5f));
   CHECK(sampleBilinear(img, {0.375f, 0.5f}).x == doctest::Approx(0.25f));  // u' - 1/2 = 0.25
   // At u = 0, halfway between texel -1 and texel 0:
-  CHECK(sampleBilinear(img, {0.0f, 0.5f}, Wrap::Repeat).x == doctest::Approx(0.5f));        // texel -1 is 1
-  CHECK(sampleBilinear(img, {0.0f, 0.5f}, Wrap::ClampToEdge).x == doctest::Approx(0.0f));   // texel -1 is 0
+  CHECK(sampleBilinear(img, {0.0f, 0.5f}, Wrap::Repeat).x == doctest::Approx(0.5f));       // texel -1 is 1
+  CHECK(sampleBilinear(img, {0.0f, 0.5f}, Wrap::ClampToEdge).x == doctest::Approx(0.0f));  // texel -1 is 0
   CHECK(sampleBilinear(img, {0.0f, 0.5f}, Wrap::MirroredRepeat).x == doctest::Approx(0.0f));
-  CHECK(sampleBilinear(img, {0.0f, 0.5f}, Wrap::ClampToBorder, Wrap::Repeat, glm::vec4(0.8f)).x == doctest::Approx(0.4f));
+  CHECK(sampleBilinear(img, {0.0f, 0.5f}, Wrap::ClampToBorder, Wrap::Repeat, glm::vec4(0.8f)).x ==
+        doctest::Approx(0.4f));
   // Missing channels read 0, alpha 1.
   CHECK(sampleNearest(img, {0.9f, 0.5f}) == glm::vec4(1, 0, 0, 1));
 }
@@ -131,11 +132,11 @@ TEST_CASE("texture sampling: bilinear on a 2x2 image, both axes") {
 
 TEST_CASE("texture sampling: level selection of the four mipmap modes") {
   const auto chain = levelChain();
-  SamplerState s;  // trilinear
+  SamplerState s;                                                               // trilinear
   CHECK(sampleLod(chain, {0.3f, 0.3f}, -1.0f, s).x == doctest::Approx(0.0f));   // magnification: level 0
   CHECK(sampleLod(chain, {0.3f, 0.3f}, 0.25f, s).x == doctest::Approx(0.25f));  // 3/4 level 0 + 1/4 level 1
   CHECK(sampleLod(chain, {0.3f, 0.3f}, 1.5f, s).x == doctest::Approx(1.5f));
-  CHECK(sampleLod(chain, {0.3f, 0.3f}, 5.0f, s).x == doctest::Approx(2.0f));    // clamped to q = 2
+  CHECK(sampleLod(chain, {0.3f, 0.3f}, 5.0f, s).x == doctest::Approx(2.0f));  // clamped to q = 2
   s.mip = MipFilter::Nearest;  // d = ceil(lambda + 1/2) - 1, 0 for lambda <= 1/2
   CHECK(sampleLod(chain, {0.3f, 0.3f}, 0.5f, s).x == doctest::Approx(0.0f));
   CHECK(sampleLod(chain, {0.3f, 0.3f}, 0.6f, s).x == doctest::Approx(1.0f));

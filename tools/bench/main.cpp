@@ -48,9 +48,10 @@ struct Options {
 };
 
 [[noreturn]] void usage(const std::string& error) {
-  std::cerr << "shadowlab_bench: " << error << "\n"
-            << "usage: shadowlab_bench LESSON_PROGRAM --out DIR [--config \"label: name=value ...\"]... [--preset NAME]...\n"
-               "       [--scenes a,b] [--path FILE [--path-samples N]] [--repeat N] [--frames N] [--size WxH] [--title T]\n";
+  std::cerr
+      << "shadowlab_bench: " << error << "\n"
+      << "usage: shadowlab_bench LESSON_PROGRAM --out DIR [--config \"label: name=value ...\"]... [--preset NAME]...\n"
+         "       [--scenes a,b] [--path FILE [--path-samples N]] [--repeat N] [--frames N] [--size WxH] [--title T]\n";
   std::exit(2);
 }
 
@@ -96,7 +97,9 @@ Options parse(int argc, char** argv) {
     else if (a == "--frames") o.frames = toInt(a, value(), 1);
     else if (a == "--size") o.size = value();
     else if (a == "--title") o.title = value();
-    else usage("unknown argument '" + a + "'; valid: --out --config --preset --scenes --path --path-samples --repeat --frames --size --title");
+    else
+      usage("unknown argument '" + a +
+            "'; valid: --out --config --preset --scenes --path --path-samples --repeat --frames --size --title");
   }
   if (o.out.empty()) usage("--out DIR is required");
   if (o.configs.empty()) o.configs.push_back({"defaults", {}});
@@ -147,9 +150,7 @@ int main(int argc, char** argv) {
       pathTimes.clear();
       for (int k = 0; k < o.pathSamples; ++k)
         pathTimes.push_back(o.pathSamples == 1 ? 0.0 : path.duration() * k / (o.pathSamples - 1));
-    } catch (const std::exception& e) {
-      usage(std::string("--path: ") + e.what());
-    }
+    } catch (const std::exception& e) { usage(std::string("--path: ") + e.what()); }
   }
   const fs::path runs = fs::path(o.out) / "runs";
   fs::create_directories(runs);
@@ -169,7 +170,9 @@ int main(int argc, char** argv) {
         std::vector<double> cpu;
         const std::string id = "run" + std::to_string(index++);
         for (int r = 0; r < o.repeat; ++r) {
-          std::vector<std::string> args = {o.lesson, "--headless", "--size", o.size, "--frames", std::to_string(o.frames),
+          std::vector<std::string> args = {o.lesson,    "--headless",
+                                           "--size",    o.size,
+                                           "--frames",  std::to_string(o.frames),
                                            "--measure", (runs / (id + ".json")).string()};
           if (r == 0) args.insert(args.end(), {"--screenshot", (runs / (id + ".png")).string()});
           if (!scene.empty()) args.insert(args.end(), {"--set", "scene=" + scene});
@@ -193,7 +196,8 @@ int main(int argc, char** argv) {
           cpu.push_back(cpuTotal);
           if (r == 0) {
             std::string params;
-            for (std::size_t a = 1; a < config.args.size(); a += 2) params += (params.empty() ? "" : " ") + config.args[a];
+            for (std::size_t a = 1; a < config.args.size(); a += 2)
+              params += (params.empty() ? "" : " ") + config.args[a];
             row.parameters = params + (pathTimes[k] >= 0 ? " path@" + std::to_string(pathTimes[k]) : "");
             if (j.contains("hard")) {
               const auto& h = j["hard"];
@@ -240,6 +244,7 @@ int main(int argc, char** argv) {
       }
   progress.finish();
   const std::string html = measure::writeReport(o.out, "report", rows, o.title);
-  std::cout << "shadowlab_bench: " << rows.size() << " row(s), " << failures << " failed run(s): " << fs::absolute(html).string() << '\n';
+  std::cout << "shadowlab_bench: " << rows.size() << " row(s), " << failures
+            << " failed run(s): " << fs::absolute(html).string() << '\n';
   return failures == 0 && !rows.empty() ? 0 : 1;
 }

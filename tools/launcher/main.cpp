@@ -132,8 +132,8 @@ int tour(const std::vector<LessonEntry>& lessons, const fs::path& dir) {
     }
   }
   html << "</body></html>\n";
-  std::cout << "shadowlab: tour of " << lessons.size() << " lesson(s), " << images << " image(s): "
-            << fs::absolute(dir / "index.html").string() << '\n';
+  std::cout << "shadowlab: tour of " << lessons.size() << " lesson(s), " << images
+            << " image(s): " << fs::absolute(dir / "index.html").string() << '\n';
   return failures == 0 ? 0 : 1;
 }
 
@@ -221,7 +221,8 @@ int main(int argc, char** argv) {
                    "  without one, or with --tour: render every lesson and preset into DIR (default out/tour)\n";
       return 0;
     } else {
-      std::cerr << "shadowlab: unknown argument '" << a << "'; valid: --tour DIR, --frames N, --screenshot FILE, --help\n";
+      std::cerr << "shadowlab: unknown argument '" << a
+                << "'; valid: --tour DIR, --frames N, --screenshot FILE, --help\n";
       return 2;
     }
   }
