@@ -10,7 +10,7 @@
 #include <numbers>
 #include <vector>
 
-#include "psm/psm_camera.hpp"
+#include "algorithms/psm/psm_camera.hpp"
 
 using namespace shadowlab;
 using namespace shadowlab::psm;

@@ -7,7 +7,7 @@ find_package(glfw3 3.3 REQUIRED)
 
 file(GLOB GL_SOURCES CONFIGURE_DEPENDS common/gl/*.cpp)
 add_library(shadowlab_gl STATIC ${GL_SOURCES})
-target_link_libraries(shadowlab_gl PUBLIC shadowlab_core PkgConfig::EPOXY)
+target_link_libraries(shadowlab_gl PUBLIC shadowlab_algorithms PkgConfig::EPOXY)
 
 file(GLOB APP_SOURCES CONFIGURE_DEPENDS common/app/*.cpp)
 add_library(shadowlab_app STATIC ${APP_SOURCES})

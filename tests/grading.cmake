@@ -35,14 +35,10 @@ foreach(stub IN LISTS EXERCISE_STUBS)
 
   add_executable(grade_ex${nn} ${tests} ${stub})
   add_executable(grade_ex${nn}_reference ${tests} ${reference})
-  # Link only the layers the reference forwards to, so a grader builds as soon as its layer does.
-  file(STRINGS ${reference} uses_psm REGEX "#include \"psm/")
+  # Graders link only the GL-free layers: the taught algorithms (the references) and core.
   foreach(target grade_ex${nn} grade_ex${nn}_reference)
     target_include_directories(${target} PRIVATE ${lesson_dir})
-    target_link_libraries(${target} PRIVATE shadowlab_test_main shadowlab_core)
-    if(uses_psm)
-      target_link_libraries(${target} PRIVATE shadowlab_psm)
-    endif()
+    target_link_libraries(${target} PRIVATE shadowlab_test_main shadowlab_algorithms)
   endforeach()
   doctest_discover_tests(grade_ex${nn} PROPERTIES LABELS ex${nn})
 

@@ -1,14 +1,14 @@
 #pragma once
 // GL side of lesson 06's texture filtering: uploads that keep the CPU and the GPU on the very same
 // texels (every mip level given explicitly, linear RGBA8, row 0 at t = 0, no sRGB decode), the
-// sampler state of core/texture_sampling applied to a GL sampler object, and read-backs of the
+// sampler state of algorithms/texture_sampling applied to a GL sampler object, and read-backs of the
 // float buffers a pass wrote (uv and derivatives per pixel) for the CPU reference sampler.
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
-#include "core/texture_sampling.hpp"
+#include "algorithms/texture_sampling.hpp"
 #include "gl/objects.hpp"
 
 namespace shadowlab::gl {

@@ -14,7 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/lesson.hpp"
-#include "core/lighting.hpp"
+#include "algorithms/lighting.hpp"
 #include "core/mesh_gen.hpp"
 #include "core/scene_gen.hpp"
 #include "exercises.hpp"

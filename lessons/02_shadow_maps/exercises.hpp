@@ -6,7 +6,7 @@
 // read-back of the shadow map).
 #include <glm/glm.hpp>
 
-#include "core/shadow_math.hpp"
+#include "algorithms/shadow_math.hpp"
 
 namespace shadowlab::ex02 {
 

@@ -18,7 +18,7 @@
 #include "app/lesson.hpp"
 #include "core/mesh_gen.hpp"
 #include "core/scene_gen.hpp"
-#include "core/shadow_math.hpp"
+#include "algorithms/shadow_math.hpp"
 #include "exercises.hpp"
 #include "gl/mesh_gpu.hpp"
 #include "gl/program.hpp"

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/shadow_math.hpp"
+#include "algorithms/shadow_math.hpp"
 
 namespace shadowlab::ex03 {
 

@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "core/mesh.hpp"
-#include "core/shadow_volume.hpp"
+#include "algorithms/shadow_volume.hpp"
 
 namespace shadowlab::ex04 {
 

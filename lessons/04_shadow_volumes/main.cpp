@@ -19,9 +19,9 @@
 #include <cmath>
 
 #include "app/lesson.hpp"
-#include "core/lighting.hpp"
+#include "algorithms/lighting.hpp"
 #include "core/scene_gen.hpp"
-#include "core/shadow_volume.hpp"
+#include "algorithms/shadow_volume.hpp"
 #include "exercises.hpp"
 #include "gl/mesh_gpu.hpp"
 #include "gl/program.hpp"
@@ -63,7 +63,7 @@ GLenum toGl(volume::StencilOp op) {
   return op == volume::StencilOp::IncrWrap ? GL_INCR_WRAP : op == volume::StencilOp::DecrWrap ? GL_DECR_WRAP : GL_KEEP;
 }
 
-// One light's volumes for every caster (core/shadow_volume: per object sides, then caps), built on
+// One light's volumes for every caster (algorithms/shadow_volume: per object sides, then caps), built on
 // the CPU and kept on the GPU until the light, the scene or the implementation changes.
 struct VolumeCache : volume::SceneVolumes {
   glm::vec4 light{0.0f};

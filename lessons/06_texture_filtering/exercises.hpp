@@ -4,7 +4,7 @@
 // and see yours live with  lesson_06_texture_filtering --set impl=student --set view=cpu_reference
 // (the CPU reference view then samples every pixel with YOUR functions).
 //
-// Conventions (as core/texture_sampling.hpp): images are ImageF, float channels (1 to 4) in [0,1],
+// Conventions (as algorithms/texture_sampling.hpp): images are ImageF, float channels (1 to 4) in [0,1],
 // img.at(x, y, c); row 0 is t = 0. Texel i covers u in [i/w, (i+1)/w); its centre is (i + 0.5)/w.
 // Derivatives d(uv)/dx, d(uv)/dy are in uv units (multiply by the size for texels).
 #include <vector>

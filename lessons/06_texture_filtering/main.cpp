@@ -5,7 +5,7 @@
 // explicit or projected (planar, cylindrical, spherical); replace/modulate/blend per channel;
 // normal maps under a moving light; a slice of a 3D texture. Under the cursor (probe.x/probe.y
 // headless): the footprint, lambda and the anisotropic probes, from the CPU and from the shader.
-// A CPU reference sampler (core/texture_sampling) renders the same footprints for a difference view.
+// A CPU reference sampler (algorithms/texture_sampling) renders the same footprints for a difference view.
 //
 // Controls: left drag orbit, right drag pan, wheel zoom; F filter preset cycle (filter.mip), M mag,
 // V view, N normal map, L light animation, P camera path; F1 help.
@@ -23,7 +23,7 @@
 #include "app/lesson.hpp"
 #include "core/mesh_gen.hpp"
 #include "core/paths.hpp"
-#include "core/texture_sampling.hpp"
+#include "algorithms/texture_sampling.hpp"
 #include "exercises.hpp"
 #include "gl/caps.hpp"
 #include "gl/mesh_gpu.hpp"

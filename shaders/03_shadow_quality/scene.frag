@@ -1,6 +1,6 @@
 #version 410 core
 // Lesson 03: three lights, each with its map (sun: fitted orthographic 2D map, point: cube map,
-// spot: perspective 2D map), the bias family and the PCF family. Mirrors common/core/shadow_math.
+// spot: perspective 2D map), the bias family and the PCF family. Mirrors common/algorithms/shadow_math.
 #include "common/lighting.glsl"
 #include "common/measure.glsl"
 

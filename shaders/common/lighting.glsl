@@ -1,6 +1,6 @@
 // The lecture's illumination model with visibility (seeds 004), for every lesson:
 //   I = ka Ia + sum_i V_i f_att,i I_i [kd (N.L_i) + ks (R_i.V)^pow]
-// Mirrors common/core/lighting.cpp (the reference the graders test); keep the two in step.
+// Mirrors common/algorithms/lighting.cpp (the reference the graders test); keep the two in step.
 
 const int LIGHT_POINT = 0;
 const int LIGHT_SPOT = 1;

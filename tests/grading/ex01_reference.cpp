@@ -1,7 +1,7 @@
-// The reference for lesson 01's graders: forwards to common/core/lighting (never a copy).
+// The reference for lesson 01's graders: forwards to common/algorithms/lighting (never a copy).
 #include "exercises.hpp"
 
-#include "core/lighting.hpp"
+#include "algorithms/lighting.hpp"
 
 namespace shadowlab::ex01 {
 glm::vec3 lightContribution(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V, const glm::vec3& lightColor,

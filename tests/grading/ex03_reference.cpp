@@ -1,4 +1,4 @@
-// The reference for lesson 03's graders: forwards to common/core/shadow_math (never a copy).
+// The reference for lesson 03's graders: forwards to common/algorithms/shadow_math (never a copy).
 #include "exercises.hpp"
 
 namespace shadowlab::ex03 {

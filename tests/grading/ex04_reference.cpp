@@ -1,4 +1,4 @@
-// The reference for lesson 04's graders: forwards to common/core/shadow_volume (never a copy).
+// The reference for lesson 04's graders: forwards to common/algorithms/shadow_volume (never a copy).
 #include "exercises.hpp"
 
 namespace shadowlab::ex04 {

@@ -1,7 +1,7 @@
-// The reference for lesson 06's graders: forwards to common/core/texture_sampling (never a copy).
+// The reference for lesson 06's graders: forwards to common/algorithms/texture_sampling (never a copy).
 #include "exercises.hpp"
 
-#include "core/texture_sampling.hpp"
+#include "algorithms/texture_sampling.hpp"
 
 namespace shadowlab::ex06 {
 int mipLevelCount(int w, int h) { return sampling::mipLevelCount(w, h); }

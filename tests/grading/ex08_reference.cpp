@@ -1,7 +1,7 @@
-// Reference for lesson 08's exercises: forwards to common/psm (never a copy).
+// Reference for lesson 08's exercises: forwards to common/algorithms/psm (never a copy).
 #include "exercises.hpp"
 
-#include "psm/conventions.hpp"
+#include "algorithms/psm/conventions.hpp"
 
 namespace shadowlab::ex08 {
 

@@ -1,10 +1,10 @@
-// Reference for lesson 09's exercises: forwards to common/psm (never a copy).
+// Reference for lesson 09's exercises: forwards to common/algorithms/psm (never a copy).
 #include "exercises.hpp"
 
-#include "psm/bias.hpp"
-#include "psm/cube_faces.hpp"
-#include "psm/enclosing_cone.hpp"
-#include "psm/psm_camera.hpp"
+#include "algorithms/psm/bias.hpp"
+#include "algorithms/psm/cube_faces.hpp"
+#include "algorithms/psm/enclosing_cone.hpp"
+#include "algorithms/psm/psm_camera.hpp"
 
 namespace shadowlab::ex09 {
 

@@ -21,12 +21,12 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "psm/bias.hpp"
-#include "psm/clipping.hpp"
-#include "psm/cube_faces.hpp"
-#include "psm/enclosing_cone.hpp"
-#include "psm/lispsm.hpp"
-#include "psm/psm_camera.hpp"
+#include "algorithms/psm/bias.hpp"
+#include "algorithms/psm/clipping.hpp"
+#include "algorithms/psm/cube_faces.hpp"
+#include "algorithms/psm/enclosing_cone.hpp"
+#include "algorithms/psm/lispsm.hpp"
+#include "algorithms/psm/psm_camera.hpp"
 #include "test_support.hpp"
 
 using namespace shadowlab;

@@ -1,6 +1,6 @@
 #include <doctest/doctest.h>
 
-#include "core/lighting.hpp"
+#include "algorithms/lighting.hpp"
 
 using namespace shadowlab;
 

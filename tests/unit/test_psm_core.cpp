@@ -1,4 +1,4 @@
-// Unit tests for common/psm: conventions, clipping, cone, cameras (hand-derived values).
+// Unit tests for common/algorithms/psm: conventions, clipping, cone, cameras (hand-derived values).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -10,10 +10,10 @@
 
 #include <glm/glm.hpp>
 
-#include "psm/clipping.hpp"
-#include "psm/conventions.hpp"
-#include "psm/enclosing_cone.hpp"
-#include "psm/psm_camera.hpp"
+#include "algorithms/psm/clipping.hpp"
+#include "algorithms/psm/conventions.hpp"
+#include "algorithms/psm/enclosing_cone.hpp"
+#include "algorithms/psm/psm_camera.hpp"
 #include "test_support.hpp"
 
 using namespace shadowlab;

@@ -1,4 +1,4 @@
-// Unit tests for common/psm: cube faces, bias, LiSPSM, cascades, aliasing (hand-derived values).
+// Unit tests for common/algorithms/psm: cube faces, bias, LiSPSM, cascades, aliasing (hand-derived values).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -9,11 +9,11 @@
 
 #include <glm/glm.hpp>
 
-#include "psm/aliasing.hpp"
-#include "psm/bias.hpp"
-#include "psm/cascades.hpp"
-#include "psm/cube_faces.hpp"
-#include "psm/lispsm.hpp"
+#include "algorithms/psm/aliasing.hpp"
+#include "algorithms/psm/bias.hpp"
+#include "algorithms/psm/cascades.hpp"
+#include "algorithms/psm/cube_faces.hpp"
+#include "algorithms/psm/lispsm.hpp"
 
 using namespace shadowlab::psm;
 

@@ -1,4 +1,4 @@
-// core/shadow_math: the shadow-map maths of lessons 02 and 03. Expected values worked out by hand
+// algorithms/shadow_math: the shadow-map maths of lessons 02 and 03. Expected values worked out by hand
 // in the comments.
 #include <doctest/doctest.h>
 
@@ -9,7 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/shadow_math.hpp"
+#include "algorithms/shadow_math.hpp"
 #include "test_support.hpp"
 
 using namespace shadowlab;

@@ -1,4 +1,4 @@
-// Shadow volumes (core/shadow_volume): adjacency and closedness, silhouettes, the volume's
+// Shadow volumes (algorithms/shadow_volume): adjacency and closedness, silhouettes, the volume's
 // closedness and orientation, the infinite projection, the near-plane test, the stencil tables,
 // the light's reach and its scissor rectangle. Expected values are worked out in the comments.
 #include <doctest/doctest.h>
@@ -9,7 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/mesh_gen.hpp"
-#include "core/shadow_volume.hpp"
+#include "algorithms/shadow_volume.hpp"
 
 using namespace shadowlab;
 using namespace shadowlab::volume;

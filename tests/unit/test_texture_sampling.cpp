@@ -1,4 +1,4 @@
-// The CPU texture sampler of lesson 06 (core/texture_sampling): every expected value is worked out
+// The CPU texture sampler of lesson 06 (algorithms/texture_sampling): every expected value is worked out
 // by hand in the comment next to it, from the GL 4.6 spec (8.14) and EXT_texture_filter_anisotropic.
 #include <doctest/doctest.h>
 
@@ -6,7 +6,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "core/texture_sampling.hpp"
+#include "algorithms/texture_sampling.hpp"
 #include "test_support.hpp"
 
 using namespace shadowlab;

@@ -1,4 +1,4 @@
-#include "psm/psm_camera.hpp"
+#include "algorithms/psm/psm_camera.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "core/texture_sampling.hpp"
+#include "algorithms/texture_sampling.hpp"
 
 #include <algorithm>
 #include <cmath>

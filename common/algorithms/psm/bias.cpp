@@ -1,4 +1,4 @@
-#include "psm/bias.hpp"
+#include "algorithms/psm/bias.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "psm/conventions.hpp"
+#include "algorithms/psm/conventions.hpp"
 
 namespace shadowlab::psm {
 

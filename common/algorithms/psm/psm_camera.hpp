@@ -12,9 +12,9 @@
 #include <glm/glm.hpp>
 
 #include "core/mesh.hpp"
-#include "psm/clipping.hpp"
-#include "psm/conventions.hpp"
-#include "psm/enclosing_cone.hpp"
+#include "algorithms/psm/clipping.hpp"
+#include "algorithms/psm/conventions.hpp"
+#include "algorithms/psm/enclosing_cone.hpp"
 
 namespace shadowlab::psm {
 

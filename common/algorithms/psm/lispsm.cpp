@@ -1,4 +1,4 @@
-#include "psm/lispsm.hpp"
+#include "algorithms/psm/lispsm.hpp"
 
 #include <algorithm>
 #include <cmath>

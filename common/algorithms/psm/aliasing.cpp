@@ -1,4 +1,4 @@
-#include "psm/aliasing.hpp"
+#include "algorithms/psm/aliasing.hpp"
 
 #include <cmath>
 #include <stdexcept>

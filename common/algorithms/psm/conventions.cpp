@@ -1,4 +1,4 @@
-#include "psm/conventions.hpp"
+#include "algorithms/psm/conventions.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "psm/enclosing_cone.hpp"
+#include "algorithms/psm/enclosing_cone.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "psm/conventions.hpp"
+#include "algorithms/psm/conventions.hpp"
 
 namespace shadowlab::psm {
 

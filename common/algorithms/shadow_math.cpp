@@ -1,4 +1,4 @@
-#include "core/shadow_math.hpp"
+#include "algorithms/shadow_math.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/lighting.hpp"
+#include "algorithms/lighting.hpp"
 
 namespace shadowlab::shadow {
 

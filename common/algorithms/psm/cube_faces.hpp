@@ -12,8 +12,8 @@
 
 #include <glm/glm.hpp>
 
-#include "psm/conventions.hpp"
-#include "psm/psm_camera.hpp"
+#include "algorithms/psm/conventions.hpp"
+#include "algorithms/psm/psm_camera.hpp"
 
 namespace shadowlab::psm {
 

@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "psm/conventions.hpp"
+#include "algorithms/psm/conventions.hpp"
 
 namespace shadowlab::psm {
 

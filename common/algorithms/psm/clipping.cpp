@@ -1,4 +1,4 @@
-#include "psm/clipping.hpp"
+#include "algorithms/psm/clipping.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "psm/cube_faces.hpp"
+#include "algorithms/psm/cube_faces.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "psm/clipping.hpp"
+#include "algorithms/psm/clipping.hpp"
 
 namespace shadowlab::psm {
 

@@ -1,4 +1,4 @@
-#include "core/lighting.hpp"
+#include "algorithms/lighting.hpp"
 
 #include <algorithm>
 #include <cmath>

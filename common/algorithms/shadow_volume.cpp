@@ -1,4 +1,4 @@
-#include "core/shadow_volume.hpp"
+#include "algorithms/shadow_volume.hpp"
 
 #include <algorithm>
 #include <array>

@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "core/mesh.hpp"
-#include "psm/conventions.hpp"
+#include "algorithms/psm/conventions.hpp"
 
 namespace shadowlab::psm {
 

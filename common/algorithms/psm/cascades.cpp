@@ -1,4 +1,4 @@
-#include "psm/cascades.hpp"
+#include "algorithms/psm/cascades.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,5 +1,5 @@
 #pragma once
-// Conventions shared by every function in common/psm (see docs/psm_conventions.md):
+// Conventions shared by every function in common/algorithms/psm (see docs/psm_conventions.md):
 // - Right-handed world and view space; a camera looks down its view-space -z. GLM column vectors:
 //   a point p is transformed as M * vec4(p, 1), matrices compose right to left.
 // - Camera clip space is OpenGL's: after the divide, the view frustum is the cube [-1,1]^3
