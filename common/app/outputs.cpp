@@ -1,0 +1,98 @@
+#include "app/outputs.hpp"
+
+#include <ctime>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "core/image.hpp"
+#include "gl/texture.hpp"
+
+namespace shadowlab {
+namespace {
+
+void createParent(const std::string& path) {
+  const std::filesystem::path p(path);
+  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+}
+
+}  // namespace
+
+std::string screenshotName(const LessonInfo& info) {
+  std::time_t t = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", std::localtime(&t));
+  return "out/screenshots/" + info.name + "_" + stamp + ".png";
+}
+
+void saveScreenshot(const std::string& path, unsigned fbo, int w, int h) {
+  createParent(path);
+  savePng(path, gl::readPixels(fbo, w, h));
+}
+
+bool BenchLog::open(const std::string& path) {
+  out_.open(path);
+  if (!out_) return false;
+  out_ << "frame,pass,gpu_ms,cpu_ms,frame_ms\n";
+  return true;
+}
+
+void BenchLog::frame(int index, double frameMs, gl::GpuTimers& timers) {
+  frameMs_.resize(std::size_t(index) + 1);
+  frameMs_[std::size_t(index)] = frameMs;
+  flush(timers);
+}
+
+void BenchLog::flush(gl::GpuTimers& timers) {
+  for (const auto& s : timers.takeSamples())
+    out_ << s.frame << ',' << s.pass << ',' << s.gpuMs << ',' << s.cpuMs << ','
+         << (s.frame < int(frameMs_.size()) ? frameMs_[std::size_t(s.frame)] : 0.0) << '\n';
+}
+
+void writeMeasurementJson(const std::string& path, const LessonInfo& info, const MeasureResult& r,
+                          const std::vector<Counter>& counters, const gl::GpuTimers& timers) {
+  if (!r.valid) throw std::runtime_error("--measure: nothing was measured (does the lesson describe its scene?)");
+  nlohmann::ordered_json j;
+  j["lesson"] = info.name;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  if (r.soft) {
+    j["soft"] = {{"pixels", r.soft_.pixels}, {"rmse", r.soft_.rmse}, {"max_abs", r.soft_.maxAbs}};
+  } else {
+    const auto& h = r.hard;
+    j["hard"] = {{"facing_pixels", h.facingPixels},
+                 {"misclassified", h.misclassified},
+                 {"leaks", h.leaks},
+                 {"false_shadows", h.falseShadows},
+                 {"edge_pixels", h.edgePixels},
+                 {"misclassified_pct", h.misclassifiedPct},
+                 {"leak_pct", h.leakPct},
+                 {"false_shadow_pct", h.falseShadowPct},
+                 {"edge_tolerant_pct", h.edgeTolerantPct}};
+  }
+  if (r.hasAliasing) {
+    const auto& a = r.aliasing;
+    j["aliasing"] = {{"pixels", a.pixels}, {"mean", a.mean}, {"rms", a.rms},
+                     {"p95", a.p95},       {"max", a.max},   {"share_above_1", a.shareAbove1}};
+  }
+  j["ground_truth_ms"] = r.groundTruthMs;
+  j["gpu_ms"] = nlohmann::ordered_json::object();
+  j["cpu_ms"] = nlohmann::ordered_json::object();
+  for (const auto& t : timers.passes()) {
+    j["gpu_ms"][t.name] = t.gpuMs;
+    j["cpu_ms"][t.name] = t.cpuMs;
+  }
+  j["counters"] = nlohmann::ordered_json::object();
+  for (const auto& c : counters) j["counters"][c.name] = c.value;
+
+  createParent(path);
+  std::ofstream out(path);
+  out << j.dump(2) << '\n';
+  if (!out) throw std::runtime_error("--measure: cannot write " + path);
+  const std::string stem =
+      path.size() > 5 && path.substr(path.size() - 5) == ".json" ? path.substr(0, path.size() - 5) : path;
+  savePng(stem + "_error.png", r.errorHeatmap);
+  if (r.hasAliasing) savePng(stem + "_aliasing.png", r.aliasingHeatmap);
+}
+
+}  // namespace shadowlab

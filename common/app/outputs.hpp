@@ -1,0 +1,39 @@
+#pragma once
+// What a lesson run writes besides its window: screenshots (--screenshot, F12), the per-pass
+// timing CSV (--bench) and the ground-truth figures (--measure), for tests, benchmarks and slides.
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "app/lesson.hpp"
+#include "app/measurement.hpp"
+#include "gl/timer.hpp"
+
+namespace shadowlab {
+
+// out/screenshots/NN_name_YYYYmmdd_HHMMSS.png
+std::string screenshotName(const LessonInfo& info);
+// Reads `fbo` back and writes a PNG, creating the folder. Throws std::runtime_error naming the path.
+void saveScreenshot(const std::string& path, unsigned fbo, int width, int height);
+
+// --bench FILE: one row per pass per frame (GPU ms arrive a few frames late; each row carries the
+// frame that issued it), plus the CPU time of each whole frame.
+class BenchLog {
+ public:
+  // False when the file cannot be written.
+  bool open(const std::string& path);
+  bool isOpen() const { return out_.is_open(); }
+  void frame(int index, double frameMs, gl::GpuTimers& timers);
+  void flush(gl::GpuTimers& timers);
+
+ private:
+  std::ofstream out_;
+  std::vector<double> frameMs_;
+};
+
+// --measure FILE: the last frame's figures against ground truth as JSON, and its heatmaps as PNGs
+// beside it (FILE minus .json, plus _error.png / _aliasing.png). Throws std::runtime_error.
+void writeMeasurementJson(const std::string& path, const LessonInfo& info, const MeasureResult& result,
+                          const std::vector<Counter>& counters, const gl::GpuTimers& timers);
+
+}  // namespace shadowlab
