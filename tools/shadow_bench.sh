@@ -96,15 +96,15 @@ fi
 culling=$out/culling.csv
 echo "scene,setup,repeat,culling,gpu_shadow_ms,frame_ms,shadow_triangles,culled_casters,cube_faces_skipped" > "$culling"
 first=$(sed -n 1p <<<"$poses"); mid=$(sed -n 2p <<<"$poses")
-setups=("default_maps|$mid|point.position=6 5 4"
-        "small_maps|$mid|point.position=6 5 4,map_size=512,cube_size=256"
-        "light_behind|$first|point.position=36 26 36")
+setups=("default_maps|$mid|light1.position=6 5 4"
+        "small_maps|$mid|light1.position=6 5 4,map_size=512,cube_size=256"
+        "light_behind|$first|light1.position=36 26 36")
 for rep in $(seq 1 "$repeats"); do  # on and off interleaved, repeated: the machine's load drifts
 for scene in $scenes; do
   for setup in "${setups[@]}"; do
     IFS='|' read -r name pose extra <<<"$setup"
     for cull in true false; do
-      sets=(--set scene=$scene --set triangles=$triangles --set point.enabled=true --set spot.enabled=true
+      sets=(--set scene=$scene --set triangles=$triangles --set light1.enabled=true --set light2.enabled=true
             --set cull_casters=$cull --set skip_faces=$cull)
       IFS=, read -ra kvs <<<"$pose,$extra"
       for kv in "${kvs[@]}"; do sets+=(--set "$kv"); done

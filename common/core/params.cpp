@@ -89,6 +89,15 @@ Param& ParamRegistry::insert(Param p) {
   return params_.back();
 }
 
+void ParamRegistry::setHotkey(const std::string& name, const std::string& key) {
+  for (Param& p : params_)
+    if (p.name == name) {
+      p.hotkey = key;
+      return;
+    }
+  throw ParamError("setHotkey: unknown parameter '" + name + "'");
+}
+
 Param& ParamRegistry::add(const std::string& name, float* v, float min, float max, const std::string& why) {
   return insert({name, why, ParamKind::Float, v, min, max});
 }

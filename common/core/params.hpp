@@ -47,6 +47,10 @@ class ParamRegistry {
     return addChoiceRaw(name, reinterpret_cast<int*>(v), std::move(choices), why);
   }
 
+  // Binds a hotkey to a registered parameter (a holder's choice, e.g. for a technique's parameters).
+  // Throws ParamError for an unknown name.
+  void setHotkey(const std::string& name, const std::string& key);
+
   const std::vector<Param>& params() const { return params_; }
   const Param* find(const std::string& name) const;
   bool has(const std::string& name) const { return find(name) != nullptr; }

@@ -122,6 +122,22 @@ bool Program::reloadIfChanged() {
   return build();
 }
 
+Program& ProgramVariants::get(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles) {
+  std::string key;
+  for (const auto& f : extraFiles) key += f + ';';
+  key += '|';
+  for (const auto& d : defines) key += d + ';';
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return *it->second;
+  std::vector<std::string> files = files_;
+  files.insert(files.end(), extraFiles.begin(), extraFiles.end());
+  std::string label = label_;
+  for (const auto& f : extraFiles) label += " + " + f;
+  auto program = std::make_unique<Program>(label, std::move(files), defines);
+  program->build();
+  return *programs_.emplace(key, std::move(program)).first->second;
+}
+
 GLint Program::location(const char* name) const {
   auto it = locations_.find(name);
   if (it != locations_.end()) return it->second;

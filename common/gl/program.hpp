@@ -3,6 +3,8 @@
 // overrides), with #include and #line (core/shader_source), and hot reload: when a file changes the
 // program is rebuilt; if that fails the last good program stays in use and error() says why, with
 // file:line, for the UI header.
+#include <map>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -55,6 +57,22 @@ class Program {
   std::string error_;
   double lastPoll_ = 0;
   mutable std::unordered_map<std::string, GLint> locations_;
+};
+
+// One program per set of #defines (and extra files, such as the fragment shader a shadow technique
+// links in), built on first use and kept: a shader specialised for the features in use, since a
+// software renderer pays for a feature a uniform switches off. Each variant hot-reloads on its own.
+class ProgramVariants {
+ public:
+  ProgramVariants(std::string label, std::vector<std::string> files)
+      : label_(std::move(label)), files_(std::move(files)) {}
+  Program& get(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles = {});
+  std::size_t size() const { return programs_.size(); }
+
+ private:
+  std::string label_;
+  std::vector<std::string> files_;
+  std::map<std::string, std::unique_ptr<Program>> programs_;
 };
 
 // Every live Program, so the framework can list shader errors in the header and reload all.

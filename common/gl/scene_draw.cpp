@@ -1,6 +1,8 @@
 #include "gl/scene_draw.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -15,6 +17,14 @@ void setLight(const Program& program, const std::string& name, const Light& l) {
   program.set((name + ".attenuation").c_str(), l.attenuation);
   program.set((name + ".cosInner").c_str(), std::cos(l.spotInner));
   program.set((name + ".cosOuter").c_str(), std::cos(l.spotOuter));
+}
+
+void setLights(const Program& program, std::span<const Light> lights) {
+  constexpr std::size_t kMaxLights = 4;  // MAX_LIGHTS in shaders/common/light.glsl
+  if (lights.size() > kMaxLights)
+    throw std::invalid_argument(std::to_string(lights.size()) + " lights; the shaders take at most 4");
+  for (std::size_t i = 0; i < lights.size(); ++i) setLight(program, "uLights[" + std::to_string(i) + "]", lights[i]);
+  program.set("uLightCount", int(lights.size()));
 }
 
 std::size_t drawScene(const Program& program, const Scene& scene, const GpuScene& gpu, const SceneDrawOptions& o) {

@@ -6,6 +6,7 @@
 // this keeps the bookkeeping in one place.
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "core/light.hpp"
@@ -29,6 +30,10 @@ struct SceneDrawOptions {
 // Sets a `Light` uniform struct of shaders/common/lighting.glsl (`name` is e.g. "uLight" or
 // "uLights[2]"): kind, enabled, position, direction, colour times intensity, attenuation, cone.
 void setLight(const Program& program, const std::string& name, const Light& light);
+
+// Every light of the lesson, in its order: uLights[i] (shaders/common/light.glsl) and uLightCount.
+// Lights beyond MAX_LIGHTS (4) are an error: throws std::invalid_argument.
+void setLights(const Program& program, std::span<const Light> lights);
 
 // Returns the number of triangles drawn.
 std::size_t drawScene(const Program& program, const Scene& scene, const GpuScene& gpu,

@@ -18,12 +18,16 @@
 #include "app/lesson.hpp"
 #include "core/mesh_gen.hpp"
 #include "core/scene_gen.hpp"
+#include "algorithms/light_cameras.hpp"
 #include "algorithms/shadow_math.hpp"
 #include "exercises.hpp"
 #include "gl/mesh_gpu.hpp"
 #include "gl/program.hpp"
 #include "gl/scene_draw.hpp"
 #include "gl/shadow_map.hpp"
+#include "technique/casters.hpp"
+#include "technique/map_view.hpp"
+#include "technique/scene_cache.hpp"
 
 using namespace shadowlab;
 
@@ -50,7 +54,7 @@ struct Params {
   float lightNear = 2.0f, lightFar = 80.0f;  // the light frustum's depth range: precision lives here
   float ambient = 0.12f;
   bool animate = false;  // swing the spot around the scene
-  Light spot;
+  Light light;           // light0 of the course's rig: a spot
 };
 
 }  // namespace
@@ -94,94 +98,67 @@ class ShadowMapLesson : public Lesson {
         .hotkey = "V";
     r.add("inset", &p_.inset, "show the shadow map in a corner").hotkey = "I";
     r.addChoice("impl", &p_.impl, {"reference", "student"}, "whose exercise code: your texture matrix and CPU lookup");
-    r.add("light.near", &p_.lightNear, 0.05f, 50,
+    r.add("shadow.near", &p_.lightNear, 0.05f, 50,
           "the light frustum's near plane: depth precision depends on far/near");
-    r.add("light.far", &p_.lightFar, 1, 500, "the light frustum's far plane");
+    r.add("shadow.far", &p_.lightFar, 1, 500, "the light frustum's far plane");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: what remains in the shadow");
     r.add("animate", &p_.animate, "swing the spot light around the scene").hotkey = "A";
-    Light& s = p_.spot;
-    s = {LightKind::Spot, {14.0f, 26.0f, 10.0f}};
-    s.direction = glm::normalize(glm::vec3(-14.0f, -26.0f, -10.0f));
-    s.color = {1.0f, 0.95f, 0.85f};
-    s.intensity = 1.6f;
-    s.attenuation = {1.0f, 0.0f, 0.0f};
-    s.spotInner = 0.45f;
-    s.spotOuter = 0.6f;
-    r.add("light.position", &s.position, -100, 100, "where the spot light is");
-    r.add("light.direction", &s.direction, -1, 1, "the spot's axis (where it points)");
-    r.add("light.intensity", &s.intensity, 0, 10, "I: the light's strength");
-    r.add("light.spot_inner", &s.spotInner, 0.01f, 1.2f, "half-angle of the full-strength core (radians)");
-    r.add("light.spot_outer", &s.spotOuter, 0.02f, 1.2f, "half-angle of the cone; the light frustum's fov is twice it");
+    Light& l = p_.light;
+    l = {LightKind::Spot, {14.0f, 26.0f, 10.0f}};
+    l.direction = glm::normalize(glm::vec3(-14.0f, -26.0f, -10.0f));
+    l.color = {1.0f, 0.95f, 0.85f};
+    l.intensity = 1.6f;
+    l.attenuation = {1.0f, 0.0f, 0.0f};
+    l.spotInner = 0.45f;
+    l.spotOuter = 0.6f;
+    declareLight(r, 0, l);  // light0.*: position, direction, spot_outer (the frustum's fov is twice it)
   }
 
   void init() override {
-    depthProgram_.build();
+    casters_.build();
     sceneProgram_.build();
     mapView_.build();
     unlit_.build();
     compareNearest_ = gl::makeCompareSampler(false, "02 compare sampler");
     rawDepth_ = gl::makeRawDepthSampler("02 raw depth sampler");
-    emptyVao_ = gl::makeVertexArray("02 fullscreen");
     gizmo_ = gl::uploadMesh(makeSphere(0.25f, 16, 8), "02 light gizmo");
-    loadScene();
   }
 
-  MeasureSource measureSource() override {
-    return {&scene_, std::uint64_t(builtScene_ * 10000000 + builtTriangles_), {p_.spot}};
-  }
+  MeasureSource measureSource() override { return {&scene_.scene(), scene_.revision(), {p_.light}}; }
 
   void update(const FrameInfo& f) override {
-    if (p_.scene != builtScene_ || p_.triangles != builtTriangles_) loadScene();
+    if (scene_.update(p_.scene, p_.triangles)) cpuVisibility_.clear();
     const int size = std::stoi(kMapSizes[std::size_t(p_.mapSize)]);
     if (map_.size != size || map_.format != p_.format) map_ = gl::makeShadowMap(size, p_.format, "02 shadow map");
     if (p_.animate) {
       const float a = float(f.time) * 0.4f;
-      p_.spot.position = {18.0f * std::cos(a), p_.spot.position.y, 18.0f * std::sin(a)};
-      p_.spot.direction = glm::normalize(glm::vec3(0, 1.5f, 0) - p_.spot.position);
+      p_.light.position = {18.0f * std::cos(a), p_.light.position.y, 18.0f * std::sin(a)};
+      p_.light.direction = glm::normalize(glm::vec3(0, 1.5f, 0) - p_.light.position);
     }
   }
 
   void render(const FrameInfo& f) override {
     // The light camera: a perspective frustum around the spot's cone (seeds 002: good for spots).
-    const glm::mat4 lightView = shadow::lightViewAlong(p_.spot.position, p_.spot.direction);
-    const glm::mat4 lightProj = glm::perspective(std::min(2.0f * p_.spot.spotOuter + 0.05f, 3.0f), 1.0f, p_.lightNear,
-                                                 std::max(p_.lightFar, p_.lightNear + 0.1f));
+    const shadow::LightCamera light =
+        shadow::spotCamera(p_.light, p_.lightNear, p_.lightFar, scene_.casterBoxes(), false);
     const bool student = p_.impl == Impl::Student;
-    const glm::mat4 textureMatrix =
-        student ? ex02::shadowTextureMatrix(lightProj, lightView) : shadow::textureMatrix(lightProj, lightView);
-    debug.frustum(lightProj * lightView, {1.0f, 0.9f, 0.3f, 1.0f});
-    debug.cone(p_.spot.position, glm::normalize(p_.spot.direction), p_.spot.spotOuter, 12.0f, {1.0f, 0.7f, 0.2f, 1.0f});
+    const glm::mat4 textureMatrix = student ? ex02::shadowTextureMatrix(light.projection, light.view)
+                                            : shadow::textureMatrix(light.projection, light.view);
+    debug.frustum(light.viewProj(), {1.0f, 0.9f, 0.3f, 1.0f});
+    debug.cone(p_.light.position, glm::normalize(p_.light.direction), p_.light.spotOuter, 12.0f,
+               {1.0f, 0.7f, 0.2f, 1.0f});
 
     // ==== 1. shadow map: depth from the light ======================================================
     // The god view re-renders the frame from outside: the map the viewer's frame made is reused.
     if (!f.godView) {
       auto t = scope("shadow map");
       gl::beginShadowPass(map_);
-      glEnable(GL_DEPTH_TEST);
       glEnable(GL_POLYGON_OFFSET_FILL);  // seeds 002: glPolygonOffset(4, 4) against self-shadowing
       glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
-      depthProgram_.use();
-      depthProgram_.set("uLightViewProj", lightProj * lightView);
-      depthProgram_.set("uAlphaTest", p_.alphaTest);
-      depthProgram_.set("uTexture", 0);
-      std::size_t triangles = 0;
-      for (const SceneObject& o : scene_.objects) {
-        if (!o.castsShadow) continue;
-        const Material& m = scene_.materials[o.material];
-        const GLuint tex = gpu_.materialTextures[o.material].id();
-        depthProgram_.set("uModel", o.model);
-        depthProgram_.set("uAlphaCutoff", m.alphaCutoff);
-        depthProgram_.set("uUseTexture", tex != 0);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, tex);
-        m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
-        gpu_.meshes[o.mesh].draw();
-        triangles += scene_.meshes[o.mesh].indices.size() / 3;
-      }
+      shadowTriangles_ = casters_.draw(scene_, light.viewProj(), {}, {p_.alphaTest, false});
       glDisable(GL_POLYGON_OFFSET_FILL);
       glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer);
       glViewport(0, 0, f.width, f.height);
-      shadowTriangles_ = triangles;
     }
     counters = {{"shadow triangles", std::to_string(shadowTriangles_)},
                 {"shadow texels", std::to_string(std::uint64_t(map_.size) * std::uint64_t(map_.size))},
@@ -211,42 +188,21 @@ class ShadowMapLesson : public Lesson {
     // ==== 3. views: the shadow map (full screen or inset), the light ==============================
     if (p_.view == View::ShadowMap || (p_.inset && !f.godView)) {
       auto t = scope("map view");
-      const int side = p_.view == View::ShadowMap ? std::min(f.width, f.height) : std::min(f.width, f.height) / 3;
-      glViewport(p_.view == View::ShadowMap ? (f.width - side) / 2 : f.width - side - 8,
-                 p_.view == View::ShadowMap ? 0 : 8, side, side);
-      glDisable(GL_DEPTH_TEST);
-      mapView_.use();
-      mapView_.set("uDepth", 2);
-      mapView_.set("uPerspective", true);
-      mapView_.set("uNear", p_.lightNear);
-      mapView_.set("uFar", p_.lightFar);
-      glActiveTexture(GL_TEXTURE2);
-      glBindTexture(GL_TEXTURE_2D, map_.texture.id());
-      glBindSampler(2, rawDepth_.id());
-      glBindVertexArray(emptyVao_.id());
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-      glBindSampler(2, 0);
-      glViewport(0, 0, f.width, f.height);
-      glEnable(GL_DEPTH_TEST);
+      const bool full = p_.view == View::ShadowMap;
+      const int side = full ? std::min(f.width, f.height) : std::min(f.width, f.height) / 3;
+      mapView_.draw(map_, full ? (f.width - side) / 2 : f.width - side - 8, full ? 0 : 8, side, side,
+                    glm::vec2(p_.lightNear, p_.lightFar));
     }
     if (p_.view != View::ShadowMap) {
       auto t = scope("gizmo");
       unlit_.use();
-      unlit_.set("uMvp", f.projection * f.view * glm::translate(glm::mat4(1), p_.spot.position));
+      unlit_.set("uMvp", f.projection * f.view * glm::translate(glm::mat4(1), p_.light.position));
       unlit_.set("uColor", glm::vec4(1.0f, 0.9f, 0.4f, 1.0f));
       gizmo_.draw();
     }
   }
 
  private:
-  void loadScene() {
-    scene_ = makeScene(sceneNames()[std::size_t(p_.scene)], 1, std::size_t(p_.triangles));
-    gpu_ = gl::uploadScene(scene_, "02 scene");
-    cpuVisibility_.clear();
-    builtScene_ = p_.scene;
-    builtTriangles_ = p_.triangles;
-  }
-
   void drawScene(const FrameInfo& f, const glm::mat4& textureMatrix) {
     sceneProgram_.use();
     sceneProgram_.set("uViewProj", f.projection * f.view);
@@ -261,15 +217,7 @@ class ShadowMapLesson : public Lesson {
     sceneProgram_.set("uTexture", 0);
     sceneProgram_.set("uShadowMap", 1);  // one texture on two units: one sampler type each
     sceneProgram_.set("uShadowDepth", 2);
-    const Light& s = p_.spot;
-    sceneProgram_.set("uSpot.kind", int(s.kind));
-    sceneProgram_.set("uSpot.enabled", s.enabled);
-    sceneProgram_.set("uSpot.position", s.position);
-    sceneProgram_.set("uSpot.direction", glm::normalize(s.direction));
-    sceneProgram_.set("uSpot.color", s.color * s.intensity);
-    sceneProgram_.set("uSpot.attenuation", s.attenuation);
-    sceneProgram_.set("uSpot.cosInner", std::cos(s.spotInner));
-    sceneProgram_.set("uSpot.cosOuter", std::cos(s.spotOuter));
+    gl::setLight(sceneProgram_, "uLight", p_.light);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, map_.texture.id());
     glBindSampler(1, compareNearest_.id());
@@ -287,7 +235,7 @@ class ShadowMapLesson : public Lesson {
         glVertexAttrib1f(3, 1.0f);
       }
     };
-    gl::drawScene(sceneProgram_, scene_, gpu_, draw);
+    gl::drawScene(sceneProgram_, scene_.scene(), scene_.gpu(), draw);
     glBindSampler(1, 0);
     glBindSampler(2, 0);
     glActiveTexture(GL_TEXTURE0);
@@ -300,12 +248,13 @@ class ShadowMapLesson : public Lesson {
     glBindTexture(GL_TEXTURE_2D, map_.texture.id());
     glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
     const shadow::DepthMap map(map_.size, map_.size, std::move(texels));
-    while (cpuVisibility_.size() < scene_.objects.size())
+    const Scene& scene = scene_.scene();
+    while (cpuVisibility_.size() < scene.objects.size())
       cpuVisibility_.push_back(gl::makeBuffer(GL_ARRAY_BUFFER, "02 cpu visibility"));
     std::vector<float> v;
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      const SceneObject& o = scene_.objects[i];
-      const Mesh& mesh = scene_.meshes[o.mesh];
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+      const SceneObject& o = scene.objects[i];
+      const Mesh& mesh = scene.meshes[o.mesh];
       v.resize(mesh.positions.size());
       for (std::size_t k = 0; k < v.size(); ++k) {
         const glm::vec3 uvz = shadow::shadowCoord(textureMatrix, glm::vec3(o.model * glm::vec4(mesh.positions[k], 1)));
@@ -317,19 +266,16 @@ class ShadowMapLesson : public Lesson {
   }
 
   Params p_;
-  Scene scene_;
-  gl::GpuScene gpu_;
+  tech::SceneCache scene_{"02 scene"};
   gl::ShadowMap map_;
   gl::Sampler compareNearest_, rawDepth_;
-  gl::VertexArray emptyVao_;
-  gl::Program depthProgram_{"02 depth", {"02_shadow_maps/depth.vert", "02_shadow_maps/depth.frag"}};
+  tech::CasterPass casters_{"02 depth"};
   gl::Program sceneProgram_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"}};
-  gl::Program mapView_{"02 map view", {"common/fullscreen.vert", "02_shadow_maps/depth_view.frag"}};
+  tech::DepthMapView mapView_;
   gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};
   gl::GpuMesh gizmo_;
   std::vector<gl::Buffer> cpuVisibility_;  // per object, V per vertex (compare=cpu_vertex)
   std::size_t shadowTriangles_ = 0;
-  int builtScene_ = -1, builtTriangles_ = -1;
 };
 
 int main(int argc, char** argv) { return runLesson<ShadowMapLesson>(argc, argv); }

@@ -9,7 +9,7 @@ in vec2 vUv;
 in vec4 vShadow;
 in float vCpuVisibility;
 
-uniform Light uSpot;
+uniform Light uLight;
 uniform vec3 uEye;
 uniform vec3 uAmbient;
 uniform vec3 uAlbedo;
@@ -52,8 +52,8 @@ void main() {
   if (uView == 1) { fragColor = vec4(vec3(visibility), 1.0); return; }
   if (uView == 2) { fragColor = vec4(vec3(vShadow.w > 0.0 ? vShadow.z / vShadow.w : 1.0), 1.0); return; }
   vec3 kd = uAlbedo * texel.rgb;
-  vec3 L = toLight(uSpot, vWorldPos);
-  vec3 color = uAmbient * kd + lightContribution(N, L, V, incidentRadiance(uSpot, vWorldPos), visibility, kd,
+  vec3 L = toLight(uLight, vWorldPos);
+  vec3 color = uAmbient * kd + lightContribution(N, L, V, incidentRadiance(uLight, vWorldPos), visibility, kd,
                                                  uSpecular, uShininess, true);
   fragColor = vec4(toDisplay(color), 1.0);
 }

@@ -2,20 +2,7 @@
 //   I = ka Ia + sum_i V_i f_att,i I_i [kd (N.L_i) + ks (R_i.V)^pow]
 // Mirrors common/algorithms/lighting.cpp (the reference the graders test); keep the two in step.
 
-const int LIGHT_POINT = 0;
-const int LIGHT_SPOT = 1;
-const int LIGHT_DIRECTIONAL = 2;
-const int MAX_LIGHTS = 4;
-
-struct Light {
-  int kind;
-  bool enabled;
-  vec3 position;     // point, spot
-  vec3 direction;    // spot axis, directional travel direction (unit)
-  vec3 color;        // colour times intensity
-  vec3 attenuation;  // c0, c1, c2
-  float cosInner, cosOuter;
-};
+#include "common/light.glsl"
 
 float attenuationFactor(vec3 c, float d) { return 1.0 / (c.x + c.y * d + c.z * d * d); }
 

@@ -1,7 +1,8 @@
 #version 410 core
-// Lesson 04, pass 1: depth and ambient. Lays down the depth every later pass tests against and
-// the light that reaches everywhere (ka Ia). For the measurement it writes V = 0 for every
-// surface: the measured light's lit pass overwrites it with 1 where the stencil count is 0.
+// Stencil shadow volumes (common/technique/stencil_volumes, lesson 04), pass 1: depth and ambient.
+// Lays down the depth every later pass tests against and the light that reaches everywhere (ka Ia).
+// For the measurement it writes V = 0 for every surface: the measured light's lit pass overwrites
+// it with 1 where the stencil count is 0.
 #include "common/lighting.glsl"
 #include "common/measure.glsl"
 

@@ -1,7 +1,8 @@
 #version 410 core
-// Lesson 04, pass 3: one light, added where the stencil count is 0 (V = 1 there, by the stencil
-// test; pixels in shadow never run this shader). Blended additively over the ambient pass, in
-// linear light: the frame holds display-encoded colour, so the sum is re-encoded (see below).
+// Stencil shadow volumes (common/technique/stencil_volumes, lesson 04), pass 3: one light, added
+// where the stencil count is 0 (V = 1 there, by the stencil test; pixels in shadow never run this
+// shader). Blended additively over the ambient pass, in linear light: the frame holds display-
+// encoded colour, so the sum is re-encoded (see below).
 #include "common/lighting.glsl"
 #include "common/measure.glsl"
 

@@ -1,6 +1,6 @@
 #version 410 core
-// Pass 1 (seeds 002): the scene seen from the light, depth only. Lesson 03 reuses it for every
-// light camera (spot, fitted directional, cube faces).
+// The depth pass of every shadow map (seeds 002): the scene seen from the light, depth only, for
+// every light camera of every technique (spot, fitted directional, cube faces; common/technique/casters).
 layout(location = 0) in vec3 aPosition;
 layout(location = 2) in vec2 aUv;
 

@@ -1,6 +1,6 @@
 #version 410 core
 // The shadow map itself, as an image: depth linearised to distance, so near casters are dark and
-// the empty far plane is white. Lesson 03 uses it for its orthographic maps (already linear).
+// the empty far plane is white; orthographic maps are already linear (common/technique/map_view).
 #include "common/measure.glsl"
 
 in vec2 vUv;

@@ -1,7 +1,8 @@
 #version 410 core
-// Lesson 04, passes 1 and 3: the scene. The depth/ambient pass and every light's lit pass draw the
-// same triangles with this shader; the lit pass tests depth EQUAL, so gl_Position must come out
-// bit for bit the same each time: `invariant`.
+// The scene from a camera (the eye, or the god view's), for every lit pass of the technique layer:
+// only world data goes down; shadow coordinates are computed per fragment by the technique (a
+// normal offset moves the lookup point first). Techniques that draw the same triangles several
+// times with depth EQUAL (stencil volumes) need gl_Position bit for bit the same: `invariant`.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;

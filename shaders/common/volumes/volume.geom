@@ -1,10 +1,11 @@
 #version 410 core
-// Lesson 04, pass 2 on the GPU: silhouettes with GL_TRIANGLES_ADJACENCY (core since 3.2). Each
-// input is a triangle (0, 2, 4) with the far vertex of each neighbour (1, 3, 5). A triangle toward
-// the light emits a quad to infinity on each edge whose neighbour is turned away (the same rule as
-// algorithms/shadow_volume.cpp, so the CPU and GPU volumes agree); a triangle turned away emits the two
-// caps when z-fail needs them. An open edge's "neighbour" is the triangle's own third vertex, which
-// makes it a silhouette edge of a lit face, like the CPU path.
+// Stencil shadow volumes (common/technique/stencil_volumes, lesson 04), pass 2 on the GPU:
+// silhouettes with GL_TRIANGLES_ADJACENCY (core since 3.2). Each input is a triangle (0, 2, 4) with
+// the far vertex of each neighbour (1, 3, 5). A triangle toward the light emits a quad to infinity
+// on each edge whose neighbour is turned away (the same rule as algorithms/shadow_volume.cpp, so
+// the CPU and GPU volumes agree); a triangle turned away emits the two caps when z-fail needs them.
+// An open edge's "neighbour" is the triangle's own third vertex, which makes it a silhouette edge
+// of a lit face, like the CPU path.
 layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 18) out;
 

@@ -1,5 +1,5 @@
 #version 410 core
-// Pass 1, fragment: no colour is written, only depth. An alpha-tested caster (leaf cards, a
+// The depth pass, fragment: no colour is written, only depth. An alpha-tested caster (leaf cards, a
 // fence) must discard its holes HERE too, or it casts the shadow of a solid card (seeds 002).
 in vec2 vUv;
 

@@ -1,0 +1,70 @@
+#pragma once
+// The light cameras of the uniform shadow-map technique (lesson 03), GL-free: for each kind of
+// light, the camera its map is rendered from and the casters that camera must draw.
+//   directional  an orthographic frustum fitted to the receivers the view needs (or the whole
+//                scene), casters culled against the light volume swept from the view frustum
+//   spot         a perspective frustum around the cone, casters culled against it
+//   point        six 90-degree faces (a cube map), casters culled per face, faces whose frustum
+//                misses the view frustum skipped
+// The GL half (common/technique/uniform_maps) renders what these say; the tests check them here.
+#include <array>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "algorithms/shadow_math.hpp"
+#include "core/light.hpp"
+#include "core/mesh.hpp"
+
+namespace shadowlab::shadow {
+
+// One light camera: what it sees and which casters it draws.
+struct LightCamera {
+  glm::mat4 view{1.0f}, projection{1.0f};
+  std::vector<char> casters;  // per scene object: 1 when drawn into this camera's map
+  int culled = 0;             // shadow casters left out
+  float texelWorld = 0.0f;    // directional: the world size of one texel across the map
+  bool skipped = false;       // cube face: its frustum misses the view, so it is not rendered
+  glm::mat4 viewProj() const { return projection * view; }
+};
+
+// The scene as the culling tests see it: every object's world box, which objects cast shadows,
+// and the bounds of everything.
+struct CasterBoxes {
+  std::span<const Aabb> boxes;
+  std::span<const char> casts;  // same length as boxes
+  Aabb bounds;
+};
+
+// Replaceable steps, so a lesson can run a student's version (impl=student); empty: the reference.
+using CasterTest = std::function<bool(const Aabb&, const ConvexVolume&, const glm::vec3&)>;
+using OrthoFitter =
+    std::function<OrthoFit(const glm::vec3&, std::span<const glm::vec3>, std::span<const Aabb>, int, bool)>;
+
+struct DirectionalFitOptions {
+  bool fitToView = true;    // receivers: the scene bounds inside the view frustum; false: the whole scene
+  bool snap = true;         // texel snapping (only when fitted to the view: a scene fit never moves)
+  bool cullCasters = true;  // leave out casters that cannot shade anything in view
+  int mapSize = 2048;
+  CasterTest casterTest;  // default casterMayShadow
+  OrthoFitter fitter;     // default fitOrthographic
+};
+
+// A directional light travelling along `direction`. `view`: the viewer's frustum (never a debug
+// camera's). Throws std::invalid_argument as fitOrthographic does.
+LightCamera fitDirectional(const glm::vec3& direction, const CasterBoxes& scene, const ConvexVolume& view,
+                           const DirectionalFitOptions& options);
+
+// The spot's frustum: a square perspective whose field of view holds the cone,
+// min(2 * spotOuter + 0.05, 3) radians, from nearZ to max(farZ, nearZ + 0.1).
+float spotFieldOfView(const Light& spot);
+LightCamera spotCamera(const Light& spot, float nearZ, float farZ, const CasterBoxes& scene, bool cullCasters);
+
+// The point light's six faces in GL's cube order (+X, -X, +Y, -Y, +Z, -Z), each a 90-degree
+// perspective from nearZ to max(farZ, nearZ + 0.1), so that the map is what samplerCube reads.
+std::array<LightCamera, 6> cubeCameras(const glm::vec3& position, float nearZ, float farZ, const CasterBoxes& scene,
+                                       const ConvexVolume& view, bool cullCasters, bool skipFaces);
+
+}  // namespace shadowlab::shadow

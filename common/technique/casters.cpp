@@ -1,0 +1,35 @@
+#include "technique/casters.hpp"
+
+namespace shadowlab::tech {
+
+std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& lightViewProj, std::span<const char> keep,
+                             const CasterOptions& o) {
+  const Scene& scene = cache.scene();
+  program_.use();
+  program_.set("uLightViewProj", lightViewProj);
+  program_.set("uAlphaTest", o.alphaTest);
+  program_.set("uTexture", 0);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_CULL_FACE);
+  glCullFace(o.cullFront ? GL_FRONT : GL_BACK);
+  std::size_t triangles = 0;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& object = scene.objects[i];
+    if (!object.castsShadow || (!keep.empty() && !keep[i])) continue;
+    const Material& m = scene.materials[object.material];
+    const GLuint texture = cache.gpu().materialTextures[object.material].id();
+    program_.set("uModel", object.model);
+    program_.set("uAlphaCutoff", m.alphaCutoff);
+    program_.set("uUseTexture", texture != 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
+    cache.gpu().meshes[object.mesh].draw();
+    triangles += scene.meshes[object.mesh].triangleCount();
+  }
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  return triangles;
+}
+
+}  // namespace shadowlab::tech

@@ -1,0 +1,42 @@
+#pragma once
+// The scene a lesson draws, built from a procedural scene choice (core/scene_gen) and uploaded
+// once: rebuilt only when the choice or the size changes, never per frame. It also keeps what every
+// shadow technique culls against (each object's world box, which objects cast, the bounds) and a
+// revision that names the content, so the ground truth rebuilds its BVH only when the scene does.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "algorithms/light_cameras.hpp"
+#include "core/scene.hpp"
+#include "gl/mesh_gpu.hpp"
+
+namespace shadowlab::tech {
+
+class SceneCache {
+ public:
+  explicit SceneCache(std::string label = "scene") : label_(std::move(label)) {}
+  // sceneIndex indexes sceneNames(); seed 1. Returns true when it (re)built the scene.
+  bool update(int sceneIndex, int triangles);
+
+  const Scene& scene() const { return scene_; }
+  const gl::GpuScene& gpu() const { return gpu_; }
+  std::span<const Aabb> boxes() const { return boxes_; }
+  std::span<const char> casts() const { return casts_; }
+  const Aabb& bounds() const { return bounds_; }
+  shadow::CasterBoxes casterBoxes() const { return {boxes_, casts_, bounds_}; }
+  // Names the content (scene and size): equal revisions are equal scenes. 0 before the first build.
+  std::uint64_t revision() const { return revision_; }
+
+ private:
+  std::string label_;
+  Scene scene_;
+  gl::GpuScene gpu_;
+  std::vector<Aabb> boxes_;
+  std::vector<char> casts_;
+  Aabb bounds_;
+  std::uint64_t revision_ = 0;
+};
+
+}  // namespace shadowlab::tech

@@ -1,0 +1,94 @@
+#pragma once
+// The technique layer: every shadow technique of the course as a module that a lesson, the A/B
+// split and the showdown can hold, several at once. A technique
+//   declare(r, prefix)    registers its parameters under a prefix ("" keeps the bare names, for the
+//                         lesson whose subject it is; the showdown gives each its own prefix)
+//   init()                creates its GL resources (programs, samplers)
+//   renderShadows(c)      fits itself to the viewer, the scene and the lights (the GL-free part lives
+//                         in common/algorithms), then renders its shadow passes under timer scopes
+//   then, for the lit pass, one of two ways:
+//     map techniques      name a fragment shader defining the one GLSL function every lit shader
+//                         calls (see shaders/common/scene.frag),
+//                           float shadowVisibility(int light, vec3 worldPos, vec3 N, out vec2 texel);
+//                         and bind what it reads (bindVisibility); LitPass links the two
+//     lit-pass owners     (stencil volumes) draw the lit frame themselves: renderLit(c, lit)
+//   stats()               shadow triangles, texels, bytes, culled casters, skipped faces, reused maps
+// and pushes its debug shapes (frusta, cones, volumes) for the god view while it renders.
+// docs/adding_a_technique.md walks through writing one, with the uniform shadow map as the example.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "app/lesson.hpp"
+#include "core/light.hpp"
+#include "core/params.hpp"
+#include "gl/program.hpp"
+
+namespace shadowlab::tech {
+
+class SceneCache;
+
+// What a technique sees of the frame being drawn.
+struct ShadowContext {
+  const FrameInfo& frame;         // where and from which camera to draw (the god view's, sometimes)
+  const OrbitCamera& viewer;      // the camera the shadows serve: fit to this, never to frame.view
+  const SceneCache& scene;        // everything that casts and receives
+  std::span<const Light> lights;  // the lesson's lights, in its own order (light i is uLights[i])
+  gl::GpuTimers& timers;          // one scope per pass
+  DebugDraw& debug;               // shapes for the god view
+  float viewerAspect() const { return float(frame.width) / float(frame.height > 0 ? frame.height : 1); }
+  glm::mat4 viewerViewProj() const { return viewer.projection(viewerAspect()) * viewer.view(); }
+};
+
+// What the lit pass needs that is not the technique's: the lecture's model's other terms.
+struct LitSettings {
+  glm::vec3 ambient{0.1f};         // ka Ia
+  int view = 0;                    // 0 lit, 1 the visibility of the measured light (white lit, black shadowed)
+  std::optional<float> specular;   // override every material's ks (a lesson's slider)
+  std::optional<float> shininess;  // override every material's exponent
+};
+
+// The work a technique spent and skipped in its last frame, for the header and the benchmarks.
+struct ShadowStats {
+  std::size_t triangles = 0;   // triangles drawn into shadow maps or volumes
+  std::uint64_t texels = 0;    // shadow-map texels rendered this frame
+  std::uint64_t bytes = 0;     // GPU memory the technique holds (maps, volumes, indices)
+  int culledCasters = 0;       // casters left out of a light camera (counted per camera)
+  int skippedFaces = 0;        // cube faces not rendered
+  int reusedMaps = 0;          // maps kept from an earlier frame because nothing changed
+  bool culls = true;           // the technique culls casters and skips faces (else those lines are left out)
+  std::vector<Counter> extra;  // the technique's own figures ("light0 texel", "z-fail objects")
+  // The header lines: the shared figures first, under the names the benchmark runner reads.
+  std::vector<Counter> counters() const;
+};
+
+class ShadowTechnique {
+ public:
+  virtual ~ShadowTechnique() = default;
+  virtual std::string name() const = 0;  // the choice's name: "uniform", "volumes"
+  virtual void declare(ParamRegistry& r, const std::string& prefix) = 0;
+  virtual void init() = 0;
+  // Shadow passes for this frame's viewer. The god view re-renders a frame from outside: a
+  // technique then keeps the maps the viewer's frame made (frame.godView).
+  virtual void renderShadows(const ShadowContext& c) = 0;
+  virtual const ShadowStats& stats() const = 0;
+
+  // ---- map techniques: the lesson's lit shader calls shadowVisibility() -----------------------
+  // The fragment shader (relative to shaders/) defining shadowVisibility, linked into lit programs.
+  virtual std::string visibilityShader() const { return ""; }
+  // #defines that specialise the lit program for the technique's current settings.
+  virtual std::vector<std::string> shaderDefines() const { return {}; }
+  // Uniforms and textures for the bound lit program; units from `firstUnit` up are the technique's.
+  virtual void bindVisibility(const gl::Program& lit, int firstUnit) const {}
+  virtual void unbindVisibility(int firstUnit) const {}
+
+  // ---- techniques that own the lit pass (stencil volumes) ---------------------------------------
+  virtual bool ownsLitPass() const { return false; }
+  virtual void renderLit(const ShadowContext& c, const LitSettings& lit) {}
+};
+
+}  // namespace shadowlab::tech

@@ -1,0 +1,213 @@
+#include "technique/uniform_maps.hpp"
+
+#include <string>
+
+#include "technique/scene_cache.hpp"
+
+namespace shadowlab::tech {
+namespace {
+
+constexpr int kMaxLights = 4;  // MAX_LIGHTS in shaders/common/light.glsl
+const glm::vec4 kLightColours[] = {
+    {1.0f, 0.9f, 0.3f, 1.0f}, {1.0f, 0.6f, 0.3f, 1.0f}, {0.5f, 0.7f, 1.0f, 1.0f}, {0.5f, 1.0f, 0.5f, 1.0f}};
+
+std::uint64_t depthBytes(gl::DepthFormat f) { return f == gl::DepthFormat::Depth16 ? 2 : 4; }
+
+}  // namespace
+
+const std::vector<std::string>& UniformShadowMaps::mapSizes() {
+  static const std::vector<std::string> sizes{"256", "512", "1024", "2048", "4096", "8192"};
+  return sizes;
+}
+
+int UniformShadowMaps::size2D() const { return std::stoi(mapSizes()[std::size_t(p_.mapSize)]); }
+int UniformShadowMaps::sizeCube() const { return std::stoi(mapSizes()[std::size_t(p_.cubeSize)]); }
+
+void UniformShadowMaps::declare(ParamRegistry& r, const std::string& n) {
+  r.addChoice(n + "map_size", &p_.mapSize, mapSizes(), "directional and spot map resolution (texels per side)");
+  r.addChoice(n + "cube_size", &p_.cubeSize, mapSizes(), "point light cube-map face resolution");
+  r.addChoice(n + "format", &p_.format, {"16", "24", "32f"}, "depth format of every map");
+  r.addChoice(n + "filter", &p_.filter, {"nearest", "hardware_2x2", "pcf_nxn", "poisson"},
+              "one comparison, GL_LINEAR compare (2x2), N x N taps, or 16 rotated Poisson taps");
+  r.add(n + "pcf.size", &p_.pcfSize, 1, 9, "N of the N x N kernel (odd)");
+  r.add(n + "pcf.radius", &p_.poissonRadius, 0.5f, 8, "Poisson disk radius in texels");
+  r.add(n + "bias.constant", &p_.constantBias, 0, 0.1f, "constant depth bias in the shader");
+  r.add(n + "bias.slope", &p_.slopeBias, 0, 0.02f, "slope-scaled bias in the shader: times tan(theta)");
+  r.add(n + "bias.max", &p_.maxBias, 0, 0.1f, "upper clamp of the in-shader bias");
+  r.add(n + "offset.factor", &p_.offsetFactor, 0, 10, "glPolygonOffset factor: slope-scaled, in the depth pass");
+  r.add(n + "offset.units", &p_.offsetUnits, 0, 100, "glPolygonOffset units: constant, in depth-format steps");
+  r.add(n + "bias.normal_offset", &p_.normalOffset, 0, 4, "look up from a point this many texels along the normal");
+  r.add(n + "bias.receiver_plane", &p_.receiverPlane, "filter taps follow the receiver's plane (no PCF acne)");
+  r.add(n + "cull_front", &p_.cullFront, "depth pass draws back faces only: closed casters need no bias");
+  r.addChoice(n + "fit", &p_.fit, {"scene", "view"},
+              "sun frustum: around the scene, or fitted to the receivers in view");
+  r.add(n + "snap", &p_.snap, "texel snapping of the fitted frustum (no shimmer)");
+  r.add(n + "cull_casters", &p_.cullCasters, "skip casters that cannot shade anything in view");
+  r.add(n + "skip_faces", &p_.skipFaces, "skip cube faces whose frustum misses the view frustum");
+  r.add(n + "cube.near", &p_.cubeNear, 0.01f, 10, "cube faces' near plane");
+  r.add(n + "cube.far", &p_.cubeFar, 1, 500, "cube faces' far plane: beyond it, lit");
+  r.add(n + "spot.near", &p_.spotNear, 0.01f, 50, "the spot frustum's near plane: depth precision lives here");
+  r.add(n + "spot.far", &p_.spotFar, 1, 500, "the spot frustum's far plane");
+}
+
+void UniformShadowMaps::init() {
+  casters_.build();
+  compareNearest_ = gl::makeCompareSampler(false, "uniform maps: compare nearest");
+  compareLinear_ = gl::makeCompareSampler(true, "uniform maps: compare linear (2x2 PCF)");
+  dummy2D_ = gl::makeShadowMap(1, gl::DepthFormat::Depth16, "uniform maps: no 2D map");
+  dummyCube_ = gl::makeShadowCube(1, gl::DepthFormat::Depth16, "uniform maps: no cube map");
+}
+
+const gl::ShadowMap* UniformShadowMaps::map2D(int light) const {
+  if (light < 0 || light >= int(lights_.size())) return nullptr;
+  const PerLight& l = lights_[std::size_t(light)];
+  return l.type == Type::Ortho || l.type == Type::Perspective ? &l.map : nullptr;
+}
+
+const shadow::LightCamera* UniformShadowMaps::camera(int light) const {
+  return map2D(light) ? &lights_[std::size_t(light)].camera : nullptr;
+}
+
+// ==== 1. the light cameras: fit, cull, skip (GL-free, algorithms/light_cameras) =================
+void UniformShadowMaps::fitLight(const ShadowContext& c, int i, const shadow::ConvexVolume& view) {
+  const Light& light = c.lights[std::size_t(i)];
+  PerLight& l = lights_[std::size_t(i)];
+  const shadow::CasterBoxes boxes = c.scene.casterBoxes();
+  l.type = !light.enabled                         ? Type::None
+           : light.kind == LightKind::Directional ? Type::Ortho
+           : light.kind == LightKind::Spot        ? Type::Perspective
+                                                  : Type::Cube;
+  const int size = l.type == Type::Cube ? sizeCube() : size2D();
+  if (l.type == Type::None) {
+    l.map = {};
+    return;
+  }
+  if (l.map.size != size || l.map.format != p_.format || l.map.cube != (l.type == Type::Cube))
+    l.map = l.type == Type::Cube ? gl::makeShadowCube(size, p_.format, "light" + std::to_string(i) + " cube map")
+                                 : gl::makeShadowMap(size, p_.format, "light" + std::to_string(i) + " shadow map");
+  if (l.type == Type::Ortho) {
+    l.camera = shadow::fitDirectional(light.direction, boxes, view,
+                                      {p_.fit == Fit::View, p_.snap, p_.cullCasters, size, casterTest, fitter});
+    l.texel = l.camera.texelWorld;
+  } else if (l.type == Type::Perspective) {
+    l.camera = shadow::spotCamera(light, p_.spotNear, p_.spotFar, boxes, p_.cullCasters);
+    l.texel = 2.0f * std::tan(0.5f * shadow::spotFieldOfView(light)) / float(size);
+  } else {
+    l.faces = shadow::cubeCameras(light.position, p_.cubeNear, p_.cubeFar, boxes, view, p_.cullCasters, p_.skipFaces);
+  }
+  // (A spot's matrix takes its view-projection whole, as lesson 02 builds it.)
+  l.textureMatrix = l.type == Type::Ortho ? shadow::textureMatrix(l.camera.projection, l.camera.view)
+                                          : shadow::textureMatrix(glm::mat4(1.0f), l.camera.viewProj());
+}
+
+// ==== 2. the depth passes: one per 2D map, one per cube face that is not skipped ================
+void UniformShadowMaps::renderLight(const ShadowContext& c, int i) {
+  PerLight& l = lights_[std::size_t(i)];
+  if (l.type == Type::None) return;
+  auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
+  const CasterOptions options{true, p_.cullFront};
+  const std::uint64_t side = std::uint64_t(l.map.size);
+  if (l.type != Type::Cube) {
+    gl::beginShadowPass(l.map);
+    stats_.triangles += casters_.draw(c.scene, l.camera.viewProj(), l.camera.casters, options);
+    stats_.culledCasters += l.camera.culled;
+    stats_.texels += side * side;
+    return;
+  }
+  for (int face = 0; face < 6; ++face) {
+    const shadow::LightCamera& f = l.faces[std::size_t(face)];
+    gl::beginShadowPass(l.map, face);  // a skipped face is cleared: lit, never stale
+    if (f.skipped) {
+      ++stats_.skippedFaces;
+      continue;
+    }
+    stats_.triangles += casters_.draw(c.scene, f.viewProj(), f.casters, options);
+    stats_.culledCasters += f.culled;
+    stats_.texels += side * side;
+  }
+}
+
+void UniformShadowMaps::renderShadows(const ShadowContext& c) {
+  // The god view re-renders the viewer's frame from outside: the viewer's maps and cameras stay.
+  if (c.frame.godView) {
+    pushShapes(c);
+    return;
+  }
+  lights_.resize(c.lights.size());
+  const shadow::ConvexVolume view = shadow::volumeFromViewProj(c.viewerViewProj());
+  stats_ = {};
+  for (int i = 0; i < int(c.lights.size()); ++i) fitLight(c, i, view);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
+  for (int i = 0; i < int(c.lights.size()); ++i) renderLight(c, i);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glBindFramebuffer(GL_FRAMEBUFFER, c.frame.framebuffer);
+  glViewport(0, 0, c.frame.width, c.frame.height);
+  for (int i = 0; i < int(lights_.size()); ++i) {
+    const PerLight& l = lights_[std::size_t(i)];
+    if (l.type != Type::None)
+      stats_.bytes +=
+          std::uint64_t(l.map.size) * l.map.size * (l.type == Type::Cube ? 6 : 1) * depthBytes(l.map.format);
+    if (l.type == Type::Ortho)
+      stats_.extra.push_back(
+          {"light" + std::to_string(i) + " texel", std::to_string(l.texel * 100.0f).substr(0, 5) + " cm"});
+  }
+  pushShapes(c);
+}
+
+// The god view's shapes: each light's frustum (directional, spot) or position (point), and the
+// scene's bounds the directional fit clips against.
+void UniformShadowMaps::pushShapes(const ShadowContext& c) const {
+  for (std::size_t i = 0; i < lights_.size(); ++i) {
+    const PerLight& l = lights_[i];
+    const glm::vec4 colour = kLightColours[i % 4];
+    if (l.type == Type::Ortho || l.type == Type::Perspective) c.debug.frustum(l.camera.viewProj(), colour);
+    if (l.type == Type::Cube) c.debug.cross(c.lights[i].position, 0.5f, colour);
+  }
+  if (p_.fit == Fit::View) c.debug.box(c.scene.bounds(), {0.4f, 0.4f, 0.4f, 1.0f});
+}
+
+// ==== 3. what the lit pass reads: per light its matrix, texel size and map ======================
+void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) const {
+  lit.set("uCubeNear", p_.cubeNear);
+  lit.set("uCubeFar", std::max(p_.cubeFar, p_.cubeNear + 0.1f));
+  lit.set("uFilter", int(p_.filter));
+  lit.set("uPcfSize", p_.pcfSize | 1);  // an even N has no centre tap: the next odd one
+  lit.set("uPoissonRadius", p_.poissonRadius);
+  lit.set("uConstantBias", p_.constantBias);
+  lit.set("uSlopeBias", p_.slopeBias);
+  lit.set("uMaxBias", p_.maxBias);
+  lit.set("uNormalOffset", p_.normalOffset);
+  lit.set("uReceiverPlane", p_.receiverPlane);
+  const bool nearest = p_.filter == Filter::Nearest || p_.filter == Filter::BoxNxN;
+  const GLuint sampler = nearest ? compareNearest_.id() : compareLinear_.id();
+  for (int i = 0; i < kMaxLights; ++i) {
+    const PerLight* l = i < int(lights_.size()) ? &lights_[std::size_t(i)] : nullptr;
+    const Type type = l ? l->type : Type::None;
+    const std::string n = "[" + std::to_string(i) + "]";
+    lit.set(("uShadowType" + n).c_str(), int(type));
+    if (type != Type::None) {
+      lit.set(("uShadowMatrix" + n).c_str(), l->textureMatrix);
+      lit.set(("uShadowTexel" + n).c_str(), l->texel);
+      lit.set(("uShadowSize" + n).c_str(), float(l->map.size));
+    }
+    const int unit2D = firstUnit + i, unitCube = firstUnit + kMaxLights + i;
+    lit.set(("uShadowMap" + n).c_str(), unit2D);
+    lit.set(("uShadowCube" + n).c_str(), unitCube);
+    const bool cube = type == Type::Cube, flat = type == Type::Ortho || type == Type::Perspective;
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit2D));
+    glBindTexture(GL_TEXTURE_2D, flat ? l->map.texture.id() : dummy2D_.texture.id());
+    glBindSampler(GLuint(unit2D), sampler);
+    glActiveTexture(GLenum(GL_TEXTURE0 + unitCube));
+    glBindTexture(GL_TEXTURE_CUBE_MAP, cube ? l->map.texture.id() : dummyCube_.texture.id());
+    glBindSampler(GLuint(unitCube), sampler);
+  }
+  glActiveTexture(GL_TEXTURE0);
+}
+
+void UniformShadowMaps::unbindVisibility(int firstUnit) const {
+  for (int u = firstUnit; u < firstUnit + 2 * kMaxLights; ++u) glBindSampler(GLuint(u), 0);
+}
+
+}  // namespace shadowlab::tech

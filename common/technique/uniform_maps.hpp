@@ -1,0 +1,96 @@
+#pragma once
+// The uniform shadow-map technique (lesson 03, Williams 1978 with everything that makes it good):
+// one depth map per light, uniform texels in the light's own space,
+//   directional  an orthographic map fitted to the receivers in view (or the whole scene), casters
+//                culled against the light volume swept from the view frustum, texel snapping
+//   spot         a perspective map around the cone, casters culled against its frustum
+//   point        a cube map, casters culled per face, faces the view cannot see skipped
+// with the bias family (constant, slope-scaled in the shader and by polygon offset, normal offset,
+// receiver plane, front-face culling) and the PCF family (nearest, hardware 2x2, N x N, Poisson).
+// The light cameras are GL-free (algorithms/light_cameras); the GLSL is
+// shaders/common/shadow_uniform.frag.
+#include <array>
+#include <vector>
+
+#include "algorithms/light_cameras.hpp"
+#include "gl/shadow_map.hpp"
+#include "technique/casters.hpp"
+#include "technique/technique.hpp"
+
+namespace shadowlab::tech {
+
+enum class Filter { Nearest, Hardware2x2, BoxNxN, Poisson };
+enum class Fit { Scene, View };
+
+struct UniformMapParams {
+  int mapSize = 3;                                    // index into mapSizes(): 2048^2 (directional, spot)
+  int cubeSize = 2;                                   // 1024^2 per cube face
+  gl::DepthFormat format = gl::DepthFormat::Depth24;  // every map's depth format
+  Filter filter = Filter::Hardware2x2;                // GL_LINEAR on a comparison sampler: free 2x2 PCF
+  int pcfSize = 3;                                    // N of N x N PCF (odd)
+  float poissonRadius = 2.0f;                         // Poisson disk radius in texels
+  float constantBias = 0.0005f;                       // depth units subtracted before the comparison
+  float slopeBias = 0.0005f;                          // times tan(theta): steep receivers need more
+  float maxBias = 0.003f;                             // clamp: tan(theta) grows without bound
+  float offsetFactor = 1.0f;                          // glPolygonOffset factor (depth pass)
+  float offsetUnits = 1.0f;                           // glPolygonOffset units (depth pass)
+  float normalOffset = 0.5f;                          // lookup point moved this many texels along N
+  bool receiverPlane = false;                         // filter taps compare against the receiver's plane
+  bool cullFront = false;                             // depth pass draws back faces
+  Fit fit = Fit::View;                                // directional frustum around the scene or the view
+  bool snap = true;                                   // texel snapping of the fitted frustum
+  bool cullCasters = true;                            // skip casters that cannot shade the view
+  bool skipFaces = true;                              // skip cube faces the view frustum misses
+  float cubeNear = 0.2f, cubeFar = 60.0f;             // the cube faces' depth range
+  float spotNear = 0.5f, spotFar = 150.0f;            // the spot frustum's depth range
+};
+
+class UniformShadowMaps : public ShadowTechnique {
+ public:
+  explicit UniformShadowMaps(UniformMapParams defaults = {}) : p_(defaults) {}
+  static const std::vector<std::string>& mapSizes();  // "256" .. "8192"
+
+  std::string name() const override { return "uniform"; }
+  void declare(ParamRegistry& r, const std::string& prefix) override;
+  void init() override;
+  void renderShadows(const ShadowContext& c) override;
+  const ShadowStats& stats() const override { return stats_; }
+  std::string visibilityShader() const override { return "common/shadow_uniform.frag"; }
+  void bindVisibility(const gl::Program& lit, int firstUnit) const override;
+  void unbindVisibility(int firstUnit) const override;
+
+  // A student's versions of the directional light's steps (impl=student); empty: the reference.
+  shadow::CasterTest casterTest;
+  shadow::OrthoFitter fitter;
+
+  UniformMapParams& params() { return p_; }
+  // Light i's 2D map (directional or spot, when on), for views of the map; nullptr otherwise.
+  const gl::ShadowMap* map2D(int light) const;
+  // Light i's camera this frame (2D maps), for the god view and for tests.
+  const shadow::LightCamera* camera(int light) const;
+
+ private:
+  enum class Type { None, Ortho, Perspective, Cube };
+  struct PerLight {
+    Type type = Type::None;
+    gl::ShadowMap map;
+    shadow::LightCamera camera;                // 2D maps
+    std::array<shadow::LightCamera, 6> faces;  // cube map
+    glm::mat4 textureMatrix{1.0f};
+    float texel = 0.0f;  // ortho: world texel; perspective: 2 tan(fov / 2) / size
+  };
+  void fitLight(const ShadowContext& c, int i, const shadow::ConvexVolume& view);
+  void renderLight(const ShadowContext& c, int i);
+  void pushShapes(const ShadowContext& c) const;
+  int size2D() const;
+  int sizeCube() const;
+
+  UniformMapParams p_;
+  std::vector<PerLight> lights_;
+  CasterPass casters_{"uniform maps: depth pass"};
+  gl::Sampler compareNearest_, compareLinear_;
+  gl::ShadowMap dummy2D_, dummyCube_;  // bound where a light has no map of that kind
+  ShadowStats stats_;
+};
+
+}  // namespace shadowlab::tech

@@ -1,0 +1,136 @@
+#version 410 core
+// The uniform shadow-map technique's visibility (common/technique/uniform_maps; lesson 03), linked
+// into every lit program that serves it (shaders/common/scene.frag declares the function). Per
+// light, one of three maps: a fitted orthographic 2D map (directional), a perspective 2D map (spot)
+// or a cube map (point); the bias family and the PCF family on top. Mirrors
+// common/algorithms/shadow_math; keep the two in step.
+#include "common/light.glsl"
+
+const int SHADOW_NONE = 0, SHADOW_ORTHO = 1, SHADOW_PERSPECTIVE = 2, SHADOW_CUBE = 3;
+
+uniform Light uLights[MAX_LIGHTS];
+uniform int uShadowType[MAX_LIGHTS];           // SHADOW_NONE: no map (the light is off): lit
+uniform mat4 uShadowMatrix[MAX_LIGHTS];        // 2D maps: the texture matrix (seeds 002)
+uniform float uShadowTexel[MAX_LIGHTS];        // ortho: world size of a texel; perspective: 2 tan(fov/2) / size
+uniform float uShadowSize[MAX_LIGHTS];         // texels per side (of a cube face)
+uniform sampler2DShadow uShadowMap[MAX_LIGHTS];
+uniform samplerCubeShadow uShadowCube[MAX_LIGHTS];
+uniform float uCubeNear, uCubeFar;
+
+uniform int uFilter;           // 0 nearest, 1 hardware 2x2, 2 N x N, 3 Poisson disk (rotated)
+uniform int uPcfSize;          // N (odd)
+uniform float uPoissonRadius;  // in texels
+uniform float uConstantBias;   // depth units
+uniform float uSlopeBias;      // depth units per unit of tan(theta)
+uniform float uMaxBias;
+uniform float uNormalOffset;   // texels of world offset along the normal
+uniform bool uReceiverPlane;   // receiver-plane depth bias for the filter taps
+
+const vec2 POISSON[16] = vec2[](
+    vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725), vec2(-0.094184101, -0.92938870), vec2(0.34495938, 0.29387760),
+    vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464), vec2(-0.38277543, 0.27676845), vec2(0.97484398, 0.75648379),
+    vec2(0.44323325, -0.97511554), vec2(0.53742981, -0.47373420), vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
+    vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590), vec2(0.19984126, 0.78641367), vec2(0.14383161, -0.14100790));
+
+float slopeScaledBias(float cosTheta) {  // shadow::slopeScaledBias
+  if (cosTheta <= 0.0) return uMaxBias;
+  float c = min(cosTheta, 1.0);
+  return min(uConstantBias + uSlopeBias * sqrt(1.0 - c * c) / c, uMaxBias);
+}
+
+float rotationAngle(vec2 pixel) {  // shadow::rotationAngle
+  return fract(sin(dot(pixel, vec2(12.9898, 78.233))) * 43758.5453) * 6.28318530718;
+}
+
+// A filtered lookup in a 2D map. p = (u, v, depth); dzduv: the receiver plane's depth slope in
+// texture space (0 when off), so each tap compares against the plane's depth at the tap.
+float filtered2D(sampler2DShadow map, vec3 p, float bias, vec2 dzduv, float size) {
+  if (p.z > 1.0) return 1.0;
+  float ref = p.z - bias;
+  if (uFilter <= 1) return texture(map, vec3(p.xy, ref));  // the sampler is nearest or linear
+  float texel = 1.0 / size, sum = 0.0;
+  if (uFilter == 2) {
+    int h = uPcfSize / 2;
+    for (int y = -h; y <= h; ++y)
+      for (int x = -h; x <= h; ++x) {
+        vec2 o = vec2(x, y) * texel;
+        sum += texture(map, vec3(p.xy + o, ref + dot(dzduv, o)));
+      }
+    return sum / float(uPcfSize * uPcfSize);
+  }
+  float a = rotationAngle(gl_FragCoord.xy);
+  mat2 R = mat2(cos(a), sin(a), -sin(a), cos(a));
+  for (int i = 0; i < 16; ++i) {
+    vec2 o = R * POISSON[i] * uPoissonRadius * texel;
+    sum += texture(map, vec3(p.xy + o, ref + dot(dzduv, o)));
+  }
+  return sum / 16.0;
+}
+
+// The receiver plane (Isidoro 2006): from the screen derivatives of (u, v, depth), the depth
+// change per unit of u and v.
+vec2 receiverPlane(vec3 p) {
+  vec3 dx = dFdx(p), dy = dFdy(p);
+  float det = dx.x * dy.y - dx.y * dy.x;
+  if (!uReceiverPlane || abs(det) < 1e-12) return vec2(0.0);
+  return vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
+}
+
+float cubeDepth(float majorAxis) {  // shadow::cubeDepth
+  float ndc = (uCubeFar + uCubeNear) / (uCubeFar - uCubeNear) - 2.0 * uCubeFar * uCubeNear / ((uCubeFar - uCubeNear) * majorAxis);
+  return 0.5 * ndc + 0.5;
+}
+
+float cubeVisibility(samplerCubeShadow map, vec3 lightPos, vec3 q, float cosTheta, float size) {
+  vec3 d = q - lightPos;
+  vec3 a = abs(d);
+  float major = max(a.x, max(a.y, a.z));
+  if (major >= uCubeFar) return 1.0;
+  // Bias in window depth: the slope-scaled bias times the depth's rate at this distance.
+  float ref = cubeDepth(major) - slopeScaledBias(cosTheta) * (uCubeNear / major);
+  if (uFilter <= 1) return texture(map, vec4(d, ref));
+  // Taps on the plane across the lookup direction, one texel = 2 major / size.
+  vec3 n = normalize(d);
+  vec3 t = normalize(cross(n, abs(n.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
+  vec3 b = cross(n, t);
+  float texel = 2.0 * major / size, sum = 0.0;
+  float angle = rotationAngle(gl_FragCoord.xy);
+  int count = uFilter == 2 ? uPcfSize * uPcfSize : 16;
+  for (int i = 0; i < count; ++i) {
+    vec2 o = uFilter == 2 ? vec2(i % uPcfSize - uPcfSize / 2, i / uPcfSize - uPcfSize / 2)
+                          : mat2(cos(angle), sin(angle), -sin(angle), cos(angle)) * POISSON[i] * uPoissonRadius;
+    sum += texture(map, vec4(d + (t * o.x + b * o.y) * texel, ref));
+  }
+  return sum / float(count);
+}
+
+// V of light i at the surface point. Call in uniform control flow (before any discard): the
+// receiver plane and the aliasing measurement take screen-space derivatives. Normal offset: the
+// lookup point moves along the normal by a few texels' world size, scaled by sin(theta) (nothing
+// head-on, most at grazing light).
+float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
+  texelCoords = vec2(0.0);
+  int type = uShadowType[i];
+  if (type == SHADOW_NONE) return 1.0;
+  vec3 toLightPos = uLights[i].position - worldPos;
+  if (type == SHADOW_CUBE) {
+    float cosPoint = dot(N, normalize(toLightPos));
+    vec3 q = worldPos + N * uNormalOffset * 2.0 * length(toLightPos) / uShadowSize[i] *
+                            sqrt(max(1.0 - cosPoint * cosPoint, 0.0));
+    return cubeVisibility(uShadowCube[i], uLights[i].position, q, cosPoint, uShadowSize[i]);
+  }
+  float cosTheta;
+  vec3 q;
+  if (type == SHADOW_ORTHO) {
+    cosTheta = dot(N, -uLights[i].direction);
+    q = worldPos + N * uNormalOffset * uShadowTexel[i] * sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
+  } else {
+    cosTheta = dot(N, normalize(toLightPos));
+    q = worldPos + N * uNormalOffset * uShadowTexel[i] * length(toLightPos) * sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
+  }
+  vec4 h = uShadowMatrix[i] * vec4(q, 1.0);
+  vec3 p = h.w > 0.0 ? h.xyz / h.w : vec3(0.5, 0.5, 2.0);  // behind a spot: nothing known, lit
+  vec2 plane = receiverPlane(p);
+  texelCoords = p.xy * uShadowSize[i];
+  return filtered2D(uShadowMap[i], p, slopeScaledBias(cosTheta), plane, uShadowSize[i]);
+}
