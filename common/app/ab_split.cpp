@@ -45,6 +45,7 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
     if (sharedWithB(name)) params.set(name, value);
 
   FrameInfo b = frame;
+  const std::vector<Counter> countersA = lesson.counters;  // the header shows A's work, not B's
   lesson.timers.setEnabled(false);
   lesson.update(b);
   if (measured) measurementB_.mirror(*measured);
@@ -55,6 +56,7 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
   render(b);
   if (measured) measurementB_.end(lesson.measureSource(), target_.fbo.id(), true);
   lesson.timers.setEnabled(true);
+  lesson.counters = countersA;
   figuresB_ = figures(measured ? &measurementB_ : nullptr);
 
   // Back to A exactly as it was.

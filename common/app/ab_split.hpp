@@ -28,6 +28,11 @@ class AbSplit {
   // Labels for the UI: "A: ..." and "B: ..." with their figures.
   std::string labelA(const Measurement* measured) const;
   std::string labelB() const;
+  // Measure B at full resolution in the next frame too (headless --measure).
+  void requestFullResolution() { measurementB_.requestFullResolution(); }
+  // B's preset and its measurement of the last frame (valid when the lesson is measurable).
+  const std::string& presetB() const { return presetNames_[std::size_t(preset_)]; }
+  const Measurement& measurementB() const { return measurementB_; }
 
  private:
   bool enabled_ = false;

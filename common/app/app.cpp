@@ -268,7 +268,10 @@ class Runner {
 
   // The replayed pose, then the viewer's camera as the frame's.
   FrameInfo beginFrame(int frame, double dt, bool lastFrame) {
-    if (lastFrame && !cl_.measure.empty()) measurement_.requestFullResolution();
+    if (lastFrame && !cl_.measure.empty()) {
+      measurement_.requestFullResolution();
+      ab_.requestFullResolution();
+    }
     if (!replay_.empty()) {
       const double t0 = replay_.keys().front().time;
       const double t = replayAt_ >= 0   ? t0 + replayAt_
@@ -368,8 +371,11 @@ class Runner {
     }
     if (!gl::caps().khrDebug) gl::checkErrors("end of frame");
     try {
-      if (lastFrame && !cl_.measure.empty())
-        writeMeasurementJson(cl_.measure, info_, measurement_.result(), lesson_.counters, lesson_.timers);
+      if (lastFrame && !cl_.measure.empty()) {
+        const SplitFigures b{ab_.enabled() ? ab_.presetB() : "", ab_.measurementB().result()};
+        writeMeasurementJson(cl_.measure, info_, measurement_.result(), lesson_.counters, lesson_.timers,
+                             ab_.enabled() ? &b : nullptr);
+      }
       if (lastFrame && !cl_.screenshot.empty()) saveScreenshot(cl_.screenshot, fi.framebuffer, width_, height_);
     } catch (const std::exception& e) {
       std::cerr << info_.name << ": " << e.what() << '\n';

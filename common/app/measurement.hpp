@@ -75,7 +75,7 @@ class Measurement {
     scale_ = other.scale_;
     samples_ = other.samples_;
     live_ = other.live_;
-    forceFull_ = other.forceFull_;
+    forceFull_ = forceFull_ || other.forceFull_;  // a full-resolution request of its own stays
   }
   // Force a full-resolution measurement of the next frame (headless --measure).
   void requestFullResolution() { forceFull_ = true; }

@@ -49,11 +49,10 @@ void BenchLog::flush(gl::GpuTimers& timers) {
          << (s.frame < int(frameMs_.size()) ? frameMs_[std::size_t(s.frame)] : 0.0) << '\n';
 }
 
-void writeMeasurementJson(const std::string& path, const LessonInfo& info, const MeasureResult& r,
-                          const std::vector<Counter>& counters, const gl::GpuTimers& timers) {
-  if (!r.valid) throw std::runtime_error("--measure: nothing was measured (does the lesson describe its scene?)");
+// The figures of one measured frame: hard errors (or soft RMSE) and, where a map was sampled,
+// the aliasing factor.
+nlohmann::ordered_json figures(const MeasureResult& r) {
   nlohmann::ordered_json j;
-  j["lesson"] = info.name;
   j["width"] = r.width;
   j["height"] = r.height;
   if (r.soft) {
@@ -74,6 +73,20 @@ void writeMeasurementJson(const std::string& path, const LessonInfo& info, const
     const auto& a = r.aliasing;
     j["aliasing"] = {{"pixels", a.pixels}, {"mean", a.mean}, {"rms", a.rms},
                      {"p95", a.p95},       {"max", a.max},   {"share_above_1", a.shareAbove1}};
+  }
+  return j;
+}
+
+void writeMeasurementJson(const std::string& path, const LessonInfo& info, const MeasureResult& r,
+                          const std::vector<Counter>& counters, const gl::GpuTimers& timers, const SplitFigures* b) {
+  if (!r.valid) throw std::runtime_error("--measure: nothing was measured (does the lesson describe its scene?)");
+  nlohmann::ordered_json j;
+  j["lesson"] = info.name;
+  j.update(figures(r));
+  // The A/B split: B (a preset over the same camera) measured on its own whole frame.
+  if (b && b->result.valid) {
+    j["b"] = figures(b->result);
+    j["b"]["preset"] = b->preset;
   }
   j["ground_truth_ms"] = r.groundTruthMs;
   j["gpu_ms"] = nlohmann::ordered_json::object();

@@ -31,9 +31,17 @@ class BenchLog {
   std::vector<double> frameMs_;
 };
 
+// B's half of an A/B split: its preset and its own whole-frame measurement.
+struct SplitFigures {
+  std::string preset;
+  const MeasureResult& result;
+};
+
 // --measure FILE: the last frame's figures against ground truth as JSON, and its heatmaps as PNGs
-// beside it (FILE minus .json, plus _error.png / _aliasing.png). Throws std::runtime_error.
+// beside it (FILE minus .json, plus _error.png / _aliasing.png); with the A/B split on, B's figures
+// too (under "b"). Throws std::runtime_error.
 void writeMeasurementJson(const std::string& path, const LessonInfo& info, const MeasureResult& result,
-                          const std::vector<Counter>& counters, const gl::GpuTimers& timers);
+                          const std::vector<Counter>& counters, const gl::GpuTimers& timers,
+                          const SplitFigures* b = nullptr);
 
 }  // namespace shadowlab

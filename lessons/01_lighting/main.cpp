@@ -21,6 +21,7 @@
 #include "gl/mesh_gpu.hpp"
 #include "gl/program.hpp"
 #include "gl/scene_draw.hpp"
+#include "technique/scene_cache.hpp"
 
 using namespace shadowlab;
 
@@ -93,13 +94,12 @@ class LightingLesson : public Lesson {
     sceneProgram_.build();
     unlit_.build();
     gizmo_ = gl::uploadMesh(makeSphere(0.12f, 16, 8), "light gizmo");
-    loadScene();
   }
 
   // The ground truth traces the same scene toward the same lights: every pixel this lesson lights
   // although the reference says it is in shadow shows up as a light leak.
   MeasureSource measureSource() override {
-    return {&scene, std::uint64_t(builtScene_ * 10000000 + builtTriangles_), {p_.lights, p_.lights + kLightCount}};
+    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLightCount}};
   }
 
   // A recorded path moves the sun (the light measured by default).
@@ -109,7 +109,7 @@ class LightingLesson : public Lesson {
   }
 
   void update(const FrameInfo& f) override {
-    if (p_.scene != builtScene_ || p_.triangles != builtTriangles_) loadScene();
+    if (scene_.update(p_.scene, p_.triangles)) colors_.clear();
     if (p_.animate) {
       const float a = float(f.time) * 0.6f;
       p_.lights[1].position = {4.0f * std::cos(a), p_.lights[1].position.y, 4.0f * std::sin(a)};
@@ -119,7 +119,7 @@ class LightingLesson : public Lesson {
   void render(const FrameInfo& f) override {
     const glm::mat4 viewProj = f.projection * f.view;
     const bool cpu = p_.impl == Impl::Student || p_.shading == Shading::PerVertexCpu;
-    counters = {{"triangles", std::to_string(scene.triangleCount())},
+    counters = {{"triangles", std::to_string(scene_.scene().triangleCount())},
                 {"shading", cpu ? (p_.impl == Impl::Student ? "CPU per vertex, student code" : "CPU per vertex")
                                 : "GPU per pixel"}};
 
@@ -151,7 +151,7 @@ class LightingLesson : public Lesson {
       draw.specular = p_.specular;
       draw.shininess = p_.shininess;
       draw.beforeDraw = [this](std::size_t i) { bindVertexColors(i); };
-      gl::drawScene(sceneProgram_, scene, gpu_, draw);  // beforeDraw sets attribute 3 for every object
+      gl::drawScene(sceneProgram_, scene_.scene(), scene_.gpu(), draw);  // beforeDraw sets attribute 3 for every object
     }
 
     // ==== 3. light gizmos ===========================================================================
@@ -170,14 +170,6 @@ class LightingLesson : public Lesson {
   }
 
  private:
-  void loadScene() {
-    scene = makeScene(sceneNames()[p_.scene], 1, std::size_t(p_.triangles));
-    gpu_ = gl::uploadScene(scene, "scene");
-    colors_.clear();
-    builtScene_ = p_.scene;
-    builtTriangles_ = p_.triangles;
-  }
-
   // Only the enabled lights go to the shader: a software rasteriser runs every loop iteration for
   // every pixel, so a switched-off light must cost nothing.
   void setLightUniforms() {
@@ -204,6 +196,7 @@ class LightingLesson : public Lesson {
   void shadeVerticesOnCpu() {
     const bool student = p_.impl == Impl::Student;
     const glm::vec3 eye = camera.position();
+    const Scene& scene = scene_.scene();
     while (colors_.size() < scene.objects.size()) colors_.push_back(gl::makeBuffer(GL_ARRAY_BUFFER, "cpu colours"));
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       const SceneObject& o = scene.objects[i];
@@ -243,14 +236,12 @@ class LightingLesson : public Lesson {
   }
 
   Params p_;
-  Scene scene;
-  gl::GpuScene gpu_;
+  tech::SceneCache scene_{"01 scene"};
   gl::Program sceneProgram_{"01 scene", {"01_lighting/scene.vert", "01_lighting/scene.frag"}};
   gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};
   gl::GpuMesh gizmo_;
   std::vector<gl::Buffer> colors_;  // per object, CPU-shaded vertex colours
   std::vector<glm::vec3> scratch_;
-  int builtScene_ = -1, builtTriangles_ = -1;
 };
 
 int main(int argc, char** argv) { return runLesson<LightingLesson>(argc, argv); }
