@@ -35,7 +35,8 @@ foreach(lesson IN LISTS SHADOWLAB_LESSONS)
   set_tests_properties(gpu.${name}.headless gpu.${name}.presets gpu.${name}.ui gpu.${name}.bench
                        gpu.${name}.god_view gpu.${name}.ab_split PROPERTIES LABELS gpu)
   # Same pictures as before a refactor: every preset against the images recorded in
-  # tests/data/golden/NAME (SHADOWLAB_RECORD_GOLDEN=1 ctest -R golden records them anew).
+  # tests/data/golden/NAME (SHADOWLAB_RECORD_GOLDEN=1 ctest -R golden records them anew; =missing only
+  # those of new presets).
   if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/${name})
     add_test(NAME gpu.${name}.golden COMMAND lesson_check ${bin} --all-presets --png ${shots}/${name}_golden.png
              --golden ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/${name}

@@ -464,6 +464,10 @@ void declareCamera(ParamRegistry& params, OrbitCamera& c) {
   params.add("camera.far", &c.farZ, 0.1f, 1e7f, "far plane distance").hidden = true;
 }
 
+void declareImpl(ParamRegistry& r, Impl* impl, const std::string& why) {
+  r.addChoice("impl", impl, {"reference", "student"}, why);
+}
+
 void declareLight(ParamRegistry& r, int index, Light& l) {
   const std::string n = "light" + std::to_string(index) + ".";
   r.add(n + "enabled", &l.enabled, "switch this light on or off").hotkey = std::to_string(index + 1);

@@ -86,6 +86,11 @@ int runLesson(int argc, char** argv) {
   return runLesson([] { return std::unique_ptr<Lesson>(new L()); }, argc, argv);
 }
 
+// Whose code runs where a lesson has exercises: the reference in common/algorithms, or the
+// student's exercises.cpp (the parameter `impl`; `why` says what it switches in this lesson).
+enum class Impl { Reference, Student };
+void declareImpl(ParamRegistry& params, Impl* impl, const std::string& why);
+
 // The camera's pose as hidden parameters (camera.yaw, ...), so presets snapshot it.
 void declareCamera(ParamRegistry& params, OrbitCamera& camera);
 // Light `index` as parameters lightN.enabled (hotkey N+1), .kind, .position, .direction, .color,

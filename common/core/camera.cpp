@@ -52,6 +52,12 @@ void OrbitCamera::orbit(float dYaw, float dPitch) {
   pitch = clampPitch(pitch + dPitch);
 }
 
+void OrbitCamera::aim(const glm::vec3& t, float d, float p) {
+  target = t;
+  distance = d;
+  pitch = p;
+}
+
 void OrbitCamera::zoom(float factor) {
   if (!(factor > 0.0f)) return;  // a zero or negative factor has no meaning for a distance
   distance = std::clamp(distance * factor, minDistance, maxDistance);

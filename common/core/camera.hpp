@@ -21,6 +21,8 @@ struct OrbitCamera {
   void orbit(float dYaw, float dPitch);
   void zoom(float factor);           // distance *= factor
   void pan(const glm::vec2& delta);  // moves target in the view plane, scaled by distance
+  // A starting view: look at `target` from `distance`, `pitch` above the horizon (yaw kept).
+  void aim(const glm::vec3& target, float distance, float pitch);
   // Sets target, distance, yaw and pitch so the eye is at `eye` looking at `target` (replaying a
   // recorded path). Throws std::invalid_argument when the two points coincide.
   void lookFrom(const glm::vec3& eye, const glm::vec3& target);

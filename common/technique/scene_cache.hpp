@@ -9,16 +9,27 @@
 #include <vector>
 
 #include "algorithms/light_cameras.hpp"
+#include "core/params.hpp"
 #include "core/scene.hpp"
 #include "gl/mesh_gpu.hpp"
 
 namespace shadowlab::tech {
 
+// Which procedural scene, and how big: the parameters `scene` and `triangles` every scene lesson has.
+struct SceneChoice {
+  int scene = 0;           // index into sceneNames()
+  int triangles = 100000;  // target size (10k to 1M)
+};
+
 class SceneCache {
  public:
   explicit SceneCache(std::string label = "scene") : label_(std::move(label)) {}
-  // sceneIndex indexes sceneNames(); seed 1. Returns true when it (re)built the scene.
-  bool update(int sceneIndex, int triangles);
+  // Registers `scene` (a choice among sceneNames()) and `triangles` on `choice`, with the lesson's
+  // reasons for its defaults.
+  static void declare(ParamRegistry& r, SceneChoice* choice, const std::string& whyScene,
+                      const std::string& whyTriangles);
+  // Builds makeScene(name, seed 1, triangles) when the choice changed. Returns true when it did.
+  bool update(const SceneChoice& choice);
 
   const Scene& scene() const { return scene_; }
   const gl::GpuScene& gpu() const { return gpu_; }

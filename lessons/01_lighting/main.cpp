@@ -28,12 +28,10 @@ using namespace shadowlab;
 namespace {
 
 enum class View { Lit, Normals, Albedo, NdcRemap };
-enum class Impl { Reference, Student };
 enum class Shading { PerPixelGpu, PerVertexCpu };
 
 struct Params {
-  int scene = 0;                           // which procedural scene (showcase: shapes on a plane)
-  int triangles = 100000;                  // scene size: shading cost grows with it
+  tech::SceneChoice scene{0, 100000};      // showcase: shapes on a plane; shading cost grows with size
   View view = View::Lit;                   // debug views: what the shader sees
   Impl impl = Impl::Reference;             // student: your exercises.cpp drives the shading
   Shading shading = Shading::PerPixelGpu;  // per-vertex CPU shading shows Gouraud's artefacts
@@ -49,32 +47,28 @@ struct Params {
 
 constexpr int kLightCount = 3;
 
+// What the launcher and the F1 overlay say about this lesson.
+const char* const kSummary =
+    "The illumination model with the visibility term V_i: ambient, diffuse, specular, attenuation, three "
+    "kinds of light.";
+const char* const kHelp = R"(Orbit around the scene and move the lights (Parameters panel).
+Try: turn lights on one at a time; compare Phong (B off) and Blinn highlights;
+raise light1.attenuation's quadratic term; set view=normals and view=ndc_remap.
+Notice: nothing casts a shadow. V_i = 1 everywhere: that is what lessons 02+ fix.
+Press M: the ground truth (Embree rays) marks every pixel lit here but in shadow in red.)";
+
 }  // namespace
 
+// No shadows yet: the lesson draws the scene itself, lit by the lecture's model with V_i = 1.
 class LightingLesson : public Lesson {
  public:
-  LessonInfo info() const override {
-    return {"01",
-            "01_lighting",
-            "Lighting",
-            "The illumination model with the visibility term V_i: ambient, diffuse, specular, attenuation, three kinds "
-            "of light.",
-            1,
-            "Orbit around the scene and move the lights (Parameters panel).\n"
-            "Try: turn lights on one at a time; compare Phong (B off) and Blinn highlights;\n"
-            "raise light1.attenuation's quadratic term; set view=normals and view=ndc_remap.\n"
-            "Notice: nothing casts a shadow. V_i = 1 everywhere: that is what lessons 02+ fix.\n"
-            "Press M: the ground truth (Embree rays) marks every pixel lit here but in shadow in red.",
-            true};
-  }
-
   void declare(ParamRegistry& r) override {
     camera.target = {0, 0.8f, 0};
-    r.addChoice("scene", &p_.scene, sceneNames(), "procedural scene (deterministic from its seed)");
-    r.add("triangles", &p_.triangles, 10000, 1000000, "scene size in triangles: the cost of every pass");
+    tech::SceneCache::declare(r, &p_.scene, "procedural scene (deterministic from its seed)",
+                              "scene size in triangles: the cost of every pass");
     r.addChoice("view", &p_.view, {"lit", "normals", "albedo", "ndc_remap"}, "what the fragment shader outputs")
         .hotkey = "V";
-    r.addChoice("impl", &p_.impl, {"reference", "student"}, "whose exercise code shades (student: CPU per vertex)");
+    declareImpl(r, &p_.impl, "whose exercise code shades (student: CPU per vertex)");
     r.addChoice("shading", &p_.shading, {"pixel_gpu", "vertex_cpu"},
                 "per-pixel on the GPU, or per-vertex on the CPU (Gouraud)");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: light that reaches everywhere, even where V_i = 0");
@@ -89,6 +83,8 @@ class LightingLesson : public Lesson {
     const std::vector<Light> rig = lighting::courseLights();
     for (int i = 0; i < kLightCount; ++i) declareLight(r, i, p_.lights[i] = rig[std::size_t(i)]);
   }
+
+  LessonInfo info() const override { return {"01", "01_lighting", "Lighting", kSummary, 1, kHelp, true}; }
 
   void init() override {
     sceneProgram_.build();
@@ -109,7 +105,7 @@ class LightingLesson : public Lesson {
   }
 
   void update(const FrameInfo& f) override {
-    if (scene_.update(p_.scene, p_.triangles)) colors_.clear();
+    if (scene_.update(p_.scene)) colors_.clear();
     if (p_.animate) {
       const float a = float(f.time) * 0.6f;
       p_.lights[1].position = {4.0f * std::cos(a), p_.lights[1].position.y, 4.0f * std::sin(a)};

@@ -35,13 +35,11 @@ namespace {
 
 enum class View { Lit, Visibility, LightDepth, ShadowMap };
 enum class Compare { Hardware, Manual, CpuVertex, Off };
-enum class Impl { Reference, Student };
 const std::vector<std::string> kMapSizes{"256", "512", "1024", "2048", "4096"};
 
 struct Params {
-  int scene = 2;                                      // forest: leaf cards and a fence are alpha-tested casters
-  int triangles = 100000;                             // scene size: the depth pass draws all of it again
-  int mapSize = 3;                                    // index into kMapSizes: 2048^2 texels
+  tech::SceneChoice scene{2, 100000};  // forest: alpha-tested casters; the depth pass draws all of it again
+  int mapSize = 3;                     // index into kMapSizes: 2048^2 texels
   gl::DepthFormat format = gl::DepthFormat::Depth24;  // 16 bits shows banding and acne first
   Compare compare = Compare::Hardware;                // ARB_shadow in the sampler, or the same test by hand
   float offsetFactor = 4.0f;                          // glPolygonOffset factor: bias grows with the depth slope
@@ -57,30 +55,25 @@ struct Params {
   Light light;           // light0 of the course's rig: a spot
 };
 
+// What the launcher and the F1 overlay say about this lesson.
+const char* const kSummary =
+    "Depth from the light into a texture, then a depth comparison through the texture matrix: a spot "
+    "light's hard shadows.";
+const char* const kHelp = R"(Pass 1 renders depth from the spot light; pass 2 compares every pixel's light-space depth.
+Try: polygon offset 0 0 (acne everywhere); format 16 bits; compare=manual (same image);
+alpha_test off (leaf cards cast solid shadows); map_size 256 (blocky edges);
+view=shadow_map; O: the god view with the light frustum; M: error and aliasing heatmaps.)";
+
 }  // namespace
 
+// The first shadow map, drawn by hand: the lesson's two passes are its own (the technique layer
+// gives it the scene, the depth pass's caster loop and the map view).
 class ShadowMapLesson : public Lesson {
  public:
-  LessonInfo info() const override {
-    return {"02",
-            "02_shadow_maps",
-            "Shadow maps",
-            "Depth from the light into a texture, then a depth comparison through the texture matrix: a spot light's "
-            "hard shadows.",
-            2,
-            "Pass 1 renders depth from the spot light; pass 2 compares every pixel's light-space depth.\n"
-            "Try: polygon offset 0 0 (acne everywhere); format 16 bits; compare=manual (same image);\n"
-            "alpha_test off (leaf cards cast solid shadows); map_size 256 (blocky edges);\n"
-            "view=shadow_map; O: the god view with the light frustum; M: error and aliasing heatmaps.",
-            true};
-  }
-
   void declare(ParamRegistry& r) override {
-    camera.target = {0, 1.5f, 0};
-    camera.distance = 30.0f;
-    camera.pitch = 0.55f;
-    r.addChoice("scene", &p_.scene, sceneNames(), "procedural scene (forest: alpha-tested leaves and fence)");
-    r.add("triangles", &p_.triangles, 10000, 1000000, "scene size: both passes draw every triangle");
+    camera.aim({0, 1.5f, 0}, 30.0f, 0.55f);  // the forest from above the fence
+    tech::SceneCache::declare(r, &p_.scene, "procedural scene (forest: alpha-tested leaves and fence)",
+                              "scene size: both passes draw every triangle");
     r.addChoice("map_size", &p_.mapSize, kMapSizes, "shadow-map resolution: texels per side");
     r.addChoice("format", &p_.format, {"16", "24", "32f"}, "depth texture format (ARB_depth_texture: 16, 24, 32F bits)")
         .hotkey = "F";
@@ -97,7 +90,7 @@ class ShadowMapLesson : public Lesson {
                 "lit, V alone, the fragment's depth in the light, or the map (linearised)")
         .hotkey = "V";
     r.add("inset", &p_.inset, "show the shadow map in a corner").hotkey = "I";
-    r.addChoice("impl", &p_.impl, {"reference", "student"}, "whose exercise code: your texture matrix and CPU lookup");
+    declareImpl(r, &p_.impl, "whose exercise code: your texture matrix and CPU lookup");
     r.add("shadow.near", &p_.lightNear, 0.05f, 50,
           "the light frustum's near plane: depth precision depends on far/near");
     r.add("shadow.far", &p_.lightFar, 1, 500, "the light frustum's far plane");
@@ -114,6 +107,8 @@ class ShadowMapLesson : public Lesson {
     declareLight(r, 0, l);  // light0.*: position, direction, spot_outer (the frustum's fov is twice it)
   }
 
+  LessonInfo info() const override { return {"02", "02_shadow_maps", "Shadow maps", kSummary, 2, kHelp, true}; }
+
   void init() override {
     casters_.build();
     sceneProgram_.build();
@@ -127,7 +122,7 @@ class ShadowMapLesson : public Lesson {
   MeasureSource measureSource() override { return {&scene_.scene(), scene_.revision(), {p_.light}}; }
 
   void update(const FrameInfo& f) override {
-    if (scene_.update(p_.scene, p_.triangles)) cpuVisibility_.clear();
+    if (scene_.update(p_.scene)) cpuVisibility_.clear();
     const int size = std::stoi(kMapSizes[std::size_t(p_.mapSize)]);
     if (map_.size != size || map_.format != p_.format) map_ = gl::makeShadowMap(size, p_.format, "02 shadow map");
     if (p_.animate) {

@@ -32,12 +32,10 @@ namespace {
 
 enum class Technique { Uniform, Volumes };
 enum class View { Lit, Visibility, SunMap };
-enum class Impl { Reference, Student };
 constexpr int kLights = 3;
 
 struct Params {
-  int scene = 1;                             // city: long straight edges show acne, aliasing and shimmer
-  int triangles = 60000;                     // every shadow pass draws what survives culling
+  tech::SceneChoice scene{1, 60000};         // city: long straight edges show acne, aliasing and shimmer
   Technique technique = Technique::Uniform;  // the uniform maps, or lesson 04's volumes on the same scene
   View view = View::Lit;
   Impl impl = Impl::Reference;  // student: your culling test and fit drive the directional light's pass
@@ -46,38 +44,31 @@ struct Params {
   Light lights[kLights];  // a sun, a point light with a cube map (off), a spot (off)
 };
 
+// What the launcher and the F1 overlay say about this lesson.
+const char* const kSummary =
+    "Bias family, resolution, PCF family, a directional light fitted to the view with caster culling and "
+    "texel snapping, cube maps, several lights.";
+const char* const kHelp = R"(Bias: bias.* sliders, B front-face culling, N normal offset, R receiver plane.
+Filtering: P cycles nearest, hardware 2x2, N x N, Poisson. map_size 256..8192.
+Fit: fit=scene vs view; K caster culling (culled casters in the header); S snapping
+with D (camera drift): shimmer without it. 1 2 3: sun, point (cube map), spot.
+T: stencil volumes on the same scene. M: error and aliasing heatmaps; O: god view.)";
+
 }  // namespace
 
+// The lesson holds two techniques and draws with the one `technique` picks; the uniform maps'
+// parameters keep their bare names, the volumes' get the prefix volumes.
 class ShadowQualityLesson : public Lesson {
  public:
-  LessonInfo info() const override {
-    return {"03",
-            "03_shadow_quality",
-            "Shadow-map quality",
-            "Bias family, resolution, PCF family, a directional light fitted to the view with caster culling and "
-            "texel snapping, cube maps, several lights.",
-            3,
-            "Bias: bias.* sliders, B front-face culling, N normal offset, R receiver plane.\n"
-            "Filtering: P cycles nearest, hardware 2x2, N x N, Poisson. map_size 256..8192.\n"
-            "Fit: fit=scene vs view; K caster culling (culled casters in the header); S snapping\n"
-            "with D (camera drift): shimmer without it. 1 2 3: sun, point (cube map), spot.\n"
-            "T: stencil volumes on the same scene. M: error and aliasing heatmaps; O: god view.",
-            true};
-  }
-
   void declare(ParamRegistry& r) override {
-    camera.target = {0, 2, 0};
-    camera.distance = 45.0f;
-    camera.pitch = 0.5f;
-    r.addChoice("scene", &p_.scene, sceneNames(), "procedural scene");
-    r.add("triangles", &p_.triangles, 10000, 1000000, "scene size: what the shadow passes draw");
+    camera.aim({0, 2, 0}, 45.0f, 0.5f);  // a city block from above: long shadows across streets
+    tech::SceneCache::declare(r, &p_.scene, "procedural scene", "scene size: what the shadow passes draw");
     r.addChoice("technique", &p_.technique, {"uniform", "volumes"},
                 "uniform shadow maps (this lesson), or lesson 04's stencil volumes on the same scene")
         .hotkey = "T";
     r.addChoice("view", &p_.view, {"lit", "visibility", "sun_map"}, "lit, V of the measured light, or light 0's map")
         .hotkey = "V";
-    r.addChoice("impl", &p_.impl, {"reference", "student"},
-                "whose caster-culling test and orthographic fit drive the directional light's pass");
+    declareImpl(r, &p_.impl, "whose caster-culling test and orthographic fit drive the directional light's pass");
     r.add("drift", &p_.drift, "move the camera slowly along x (watch edges shimmer without snapping)").hotkey = "D";
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     maps_.declare(r, "");  // this lesson's subject: its parameters keep their bare names
@@ -93,6 +84,10 @@ class ShadowQualityLesson : public Lesson {
     declareLights(r);
   }
 
+  LessonInfo info() const override {
+    return {"03", "03_shadow_quality", "Shadow-map quality", kSummary, 3, kHelp, true};
+  }
+
   void init() override {
     maps_.init();
     volumes_.init();
@@ -104,7 +99,7 @@ class ShadowQualityLesson : public Lesson {
   }
 
   void update(const FrameInfo& f) override {
-    scene_.update(p_.scene, p_.triangles);
+    scene_.update(p_.scene);
     if (p_.drift) camera.target.x += float(f.dt) * 0.37f;
     // impl=student: the student's culling test and fit replace the reference's in the technique.
     const bool student = p_.impl == Impl::Student;

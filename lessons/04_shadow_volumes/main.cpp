@@ -32,13 +32,11 @@ using namespace shadowlab;
 
 namespace {
 
-enum class Impl { Reference, Student };
 constexpr int kLights = 4;
 
 struct Params {
-  int scene = 0;                // showcase: closed shapes on an open ground plane
-  int triangles = 40000;        // more triangles: more silhouette edges, more fill
-  Impl impl = Impl::Reference;  // student: your exercises.cpp drives the lesson
+  tech::SceneChoice scene{0, 40000};  // showcase: closed shapes on an open ground plane
+  Impl impl = Impl::Reference;        // student: your exercises.cpp drives the lesson
   float ambient = 0.08f;
   float specular = 0.35f;
   float shininess = 48.0f;
@@ -46,34 +44,30 @@ struct Params {
   Light lights[kLights];
 };
 
+// What the launcher and the F1 overlay say about this lesson.
+const char* const kSummary =
+    "Stencil shadow volumes: silhouettes from adjacency, z-pass and z-fail, caps, infinite far plane, "
+    "many lights.";
+const char* const kHelp = R"(V cycles the view: volumes, wireframe, the stencil count as a heatmap, silhouettes.
+Z: auto / z-pass / z-fail. Preset camera_in_volume: z-pass inverts the shadow, z-fail holds.
+S: silhouettes on the CPU or in a geometry shader. T: two-sided stencil or two passes.
+The header counts objects drawn z-pass and z-fail, open meshes, and the fill per light.
+Press M: against ground truth the only errors are on shadow boundaries.)";
+
 }  // namespace
 
+// The stencil-volume technique does the passes; the lesson picks the scene, the lights and the
+// student's code, and shows the technique's own views.
 class ShadowVolumeLesson : public Lesson {
  public:
-  LessonInfo info() const override {
-    return {"04",
-            "04_shadow_volumes",
-            "Shadow volumes",
-            "Stencil shadow volumes: silhouettes from adjacency, z-pass and z-fail, caps, infinite far plane, many "
-            "lights.",
-            3,
-            "V cycles the view: volumes, wireframe, the stencil count as a heatmap, silhouettes.\n"
-            "Z: auto / z-pass / z-fail. Preset camera_in_volume: z-pass inverts the shadow, z-fail holds.\n"
-            "S: silhouettes on the CPU or in a geometry shader. T: two-sided stencil or two passes.\n"
-            "The header counts objects drawn z-pass and z-fail, open meshes, and the fill per light.\n"
-            "Press M: against ground truth the only errors are on shadow boundaries.",
-            true};
-  }
-
   void declare(ParamRegistry& r) override {
-    camera.target = {0, 0.8f, 0};
-    r.addChoice("scene", &p_.scene, sceneNames(), "procedural scene (deterministic from its seed)");
-    r.add("triangles", &p_.triangles, 10000, 1000000, "scene size: silhouette edges and volume fill grow with it");
-    volumes_.declare(r, "");  // this lesson's subject: its parameters keep their bare names
+    volumes_.declare(r, "");  // this lesson's subject, first: its parameters keep their bare names
     for (const auto& [name, key] : {std::pair{"view", "V"}, {"method", "Z"}, {"silhouettes", "S"}, {"two_sided", "T"}})
       r.setHotkey(name, key);
-    r.addChoice("impl", &p_.impl, {"reference", "student"},
-                "whose exercise code runs: silhouettes, projection, stencil ops, z-fail test");
+    tech::SceneCache::declare(r, &p_.scene, "procedural scene (deterministic from its seed)",
+                              "scene size: silhouette edges and volume fill grow with it");
+    camera.target = {0, 0.8f, 0};
+    declareImpl(r, &p_.impl, "whose exercise code runs: silhouettes, projection, stencil ops, z-fail test");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: the light shadows never take away");
     r.add("specular", &p_.specular, 0, 1, "ks");
     r.add("shininess", &p_.shininess, 1, 256, "the specular exponent");
@@ -84,6 +78,8 @@ class ShadowVolumeLesson : public Lesson {
     for (int i = 0; i < kLights; ++i) declareLight(r, i, p_.lights[i] = rig[std::size_t(i)]);
   }
 
+  LessonInfo info() const override { return {"04", "04_shadow_volumes", "Shadow volumes", kSummary, 3, kHelp, true}; }
+
   void init() override { volumes_.init(); }
 
   MeasureSource measureSource() override {
@@ -91,7 +87,7 @@ class ShadowVolumeLesson : public Lesson {
   }
 
   void update(const FrameInfo& f) override {
-    scene_.update(p_.scene, p_.triangles);
+    scene_.update(p_.scene);
     if (p_.animate) {
       const float a = float(f.time) * 0.6f;
       p_.lights[1].position = {4.0f * std::cos(a), p_.lights[1].position.y, 4.0f * std::sin(a)};

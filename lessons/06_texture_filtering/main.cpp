@@ -45,7 +45,6 @@ enum class View { Shaded, MipLevel, Anisotropy, CpuReference, Difference };
 enum class Sampling { Hardware, RipMap };
 enum class Combine { Replace, Modulate, Blend };
 enum class Channels { Rgb, Luminance, Alpha };
-enum class Impl { Reference, Student };
 
 struct Params {
   SceneKind scene = SceneKind::Ground;         // a plane to the horizon shows every LOD at once
@@ -88,27 +87,21 @@ std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 
   return buf;
 }
 
+// What the launcher and the F1 overlay say about this lesson.
+const char* const kSummary =
+    "Texels and pixels: wrap modes, magnification, the four mipmap modes, trilinear, anisotropic, RIP "
+    "maps, normal maps.";
+const char* const kHelp = R"(Look at the ground plane near the horizon: that is minification.
+Try: filter.mip=none with filter.min=nearest (moire), then trilinear, then filter.aniso=16;
+view=mip_level colours the level per pixel; the header shows lambda and the anisotropic
+probes under the cursor; view=difference compares the GPU with the CPU reference sampler.)";
+
 }  // namespace
 
 class TextureFilteringLesson : public Lesson {
  public:
-  LessonInfo info() const override {
-    return {"06",
-            "06_texture_filtering",
-            "Texture filtering",
-            "Texels and pixels: wrap modes, magnification, the four mipmap modes, trilinear, anisotropic, RIP maps, "
-            "normal maps.",
-            2,
-            "Look at the ground plane near the horizon: that is minification.\n"
-            "Try: filter.mip=none with filter.min=nearest (moire), then trilinear, then filter.aniso=16;\n"
-            "view=mip_level colours the level per pixel; the header shows lambda and the anisotropic\n"
-            "probes under the cursor; view=difference compares the GPU with the CPU reference sampler."};
-  }
-
   void declare(ParamRegistry& r) override {
-    camera.target = {0, 1, 0};
-    camera.pitch = 0.12f;
-    camera.distance = 4.0f;
+    camera.aim({0, 1, 0}, 4.0f, 0.12f);  // low over the ground plane: every LOD to the horizon
     camera.farZ = 500.0f;
     r.addChoice("scene", &p_.scene, {"ground", "tunnel", "sphere"}, "a plane to the horizon, a tunnel, a sphere")
         .hotkey = "S";
@@ -154,9 +147,11 @@ class TextureFilteringLesson : public Lesson {
     r.add("probe.y", &p_.probeY, 0, 8192, "pixel row of the readout, from the top");
     r.add("measure", &p_.measure, "render a supersampled reference each frame and print RMSE and flicker");
     r.add("measure.supersample", &p_.supersample, 2, 8, "reference pixels per pixel, per axis");
-    r.addChoice("impl", &p_.impl, {"reference", "student"}, "whose sampler the CPU view uses (student: exercises.cpp)");
+    declareImpl(r, &p_.impl, "whose sampler the CPU view uses (student: exercises.cpp)");
     r.add("diff_gain", &p_.diffGain, 1.0f, 64.0f, "difference view: |GPU - CPU| times this");
   }
+
+  LessonInfo info() const override { return {"06", "06_texture_filtering", "Texture filtering", kSummary, 2, kHelp}; }
 
   void init() override {
     program_.build();

@@ -10,7 +10,8 @@
 // --golden DIR: the --png of each run (with --all-presets: of each preset) must match DIR/NAME.png
 //   (NAME: the preset, or "default") within the stated tolerance: at most 0.2 % of the pixels
 //   with a channel more than 2 levels off, and an RMSE of at most 1 level. The worst difference
-//   is printed. SHADOWLAB_RECORD_GOLDEN=1 writes DIR/NAME.png instead (record before a refactor).
+//   is printed. SHADOWLAB_RECORD_GOLDEN=1 writes DIR/NAME.png instead (record before a refactor);
+//   SHADOWLAB_RECORD_GOLDEN=missing writes only the images of new presets and checks the others.
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -80,7 +81,9 @@ Result run(const std::vector<std::string>& args, const std::string& root) {
 bool checkGolden(const std::string& png, const fs::path& golden) {
   try {
     const shadowlab::Image8 now = shadowlab::loadImage(png, 3);  // RGB: alpha is always opaque
-    if (const char* rec = std::getenv("SHADOWLAB_RECORD_GOLDEN"); rec && std::string(rec) == "1") {
+    const char* rec = std::getenv("SHADOWLAB_RECORD_GOLDEN");
+    const std::string mode = rec ? rec : "";
+    if (mode == "1" || (mode == "missing" && !fs::exists(golden))) {
       fs::create_directories(golden.parent_path());
       shadowlab::savePng(golden.string(), now);
       std::cout << "recorded: " << golden.string() << '\n';
