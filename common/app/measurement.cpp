@@ -141,29 +141,56 @@ void Measurement::end(const MeasureSource& source, unsigned frameFbo, bool viewC
   if (overlay_ != Overlay::None) drawOverlay(frameFbo);
 }
 
-void Measurement::compute(const MeasureSource& source) {
-  result_ = {};
-  if (!source.scene || source.lights.empty()) return;
-  if (light_ >= int(source.lights.size()))
-    throw std::runtime_error("measure.light = " + std::to_string(light_) + ", but the lesson has " +
-                             std::to_string(source.lights.size()) + " light(s): valid 0.." +
-                             std::to_string(source.lights.size() - 1));
-  const int factor = forceFull_ ? 1 : scale_;
+namespace {
 
-  // 1. read back what the rasteriser shaded
-  double t0 = nowMs();
+// The ground truth's visibility as grey levels (background transparent).
+Image8 referenceImage(const ImageF& reference) {
+  Image8 out;
+  out.width = reference.width;
+  out.height = reference.height;
+  out.data.resize(std::size_t(reference.width) * reference.height * 4);
+  for (std::size_t i = 0; i < reference.data.size(); ++i) {
+    const float v = reference.data[i];
+    const auto g = std::uint8_t(v < 0 ? 40 : std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+    std::uint8_t* px = &out.data[i * 4];
+    px[0] = px[1] = px[2] = g;
+    px[3] = v == measure::kBackground ? 0 : 255;
+  }
+  return out;
+}
+
+// The technique's own V of the measured light, from the normal attachment's w.
+ImageF techniqueVisibility(const ImageF& normal) {
+  ImageF technique;
+  technique.width = normal.width;
+  technique.height = normal.height;
+  technique.channels = 1;
+  technique.data.resize(std::size_t(normal.width) * normal.height);
+  for (std::size_t i = 0; i < technique.data.size(); ++i) technique.data[i] = normal.data[i * 4 + 3];
+  return technique;
+}
+
+}  // namespace
+
+// 1. read back what the rasteriser shaded (position.w marks covered pixels)
+Measurement::Readback Measurement::readBack(int factor) {
+  const double t0 = nowMs();
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
-  ImageF position = subsample(readFloat(GL_COLOR_ATTACHMENT1, GL_RGBA, 4, width_, height_), factor);
+  Readback r;
+  r.position = subsample(readFloat(GL_COLOR_ATTACHMENT1, GL_RGBA, 4, width_, height_), factor);
   // Coverage from depth: the lesson's glClear paints its clear colour (alpha 1) into every
   // attachment, so position.w alone cannot tell the sky from a surface.
   const ImageF depth = subsample(readFloat(GL_NONE, GL_DEPTH_COMPONENT, 1, width_, height_), factor);
   for (std::size_t i = 0; i < depth.data.size(); ++i)
-    if (!(depth.data[i] < 1.0f)) position.data[i * 4 + 3] = 0.0f;
-  const ImageF normal = subsample(readFloat(GL_COLOR_ATTACHMENT2, GL_RGBA, 4, width_, height_), factor);
-  const ImageF jacobian = subsample(readFloat(GL_COLOR_ATTACHMENT3, GL_RGBA, 4, width_, height_), factor);
+    if (!(depth.data[i] < 1.0f)) r.position.data[i * 4 + 3] = 0.0f;
+  r.normal = subsample(readFloat(GL_COLOR_ATTACHMENT2, GL_RGBA, 4, width_, height_), factor);
+  r.jacobian = subsample(readFloat(GL_COLOR_ATTACHMENT3, GL_RGBA, 4, width_, height_), factor);
   result_.readbackMs = nowMs() - t0;
+  return r;
+}
 
-  // 2. the BVH, rebuilt only when the lesson's scene changed
+// 2. the BVH, rebuilt only when the lesson's scene changed
+void Measurement::ensureTruth(const MeasureSource& source) {
   for (const Material& m : source.scene->materials)
     if (m.alphaCutoff > 0 && !m.texture.empty() && !textures_.count(m.texture))
       textures_[m.texture] = loadImage(textureRoot() + "/" + m.texture, 4);
@@ -173,15 +200,38 @@ void Measurement::compute(const MeasureSource& source) {
     truthRevision_ = source.sceneRevision;
     result_.buildMs = truth_->lastBuildMs();
   }
+}
 
-  // 3. rays from the very points that were shaded (position.w marks covered pixels)
-  const measure::SurfaceBuffer surface = measure::surfaceFromImages(position, normal);
-  ImageF technique;
-  technique.width = normal.width;
-  technique.height = normal.height;
-  technique.channels = 1;
-  technique.data.resize(std::size_t(normal.width) * normal.height);
-  for (std::size_t i = 0; i < technique.data.size(); ++i) technique.data[i] = normal.data[i * 4 + 3];
+// 4. aliasing, for techniques that sample a shadow map (their Jacobian is non-zero)
+void Measurement::measureAliasing(ImageF jacobian, const std::vector<std::uint8_t>& covered) {
+  bool anyJ = false;
+  for (std::size_t i = 0; i < covered.size(); ++i) {
+    if (!covered[i]) {
+      for (int c = 0; c < 4; ++c) jacobian.data[i * 4 + c] = std::nanf("");  // background
+    } else {
+      for (int c = 0; c < 4; ++c) anyJ = anyJ || jacobian.data[i * 4 + c] != 0.0f;
+    }
+  }
+  result_.hasAliasing = anyJ;
+  if (anyJ) {
+    result_.aliasing = measure::aliasingStats(jacobian);
+    result_.aliasingHeatmap = measure::aliasingHeatmap(jacobian);
+  }
+}
+
+void Measurement::compute(const MeasureSource& source) {
+  result_ = {};
+  if (!source.scene || source.lights.empty()) return;
+  if (light_ >= int(source.lights.size()))
+    throw std::runtime_error("measure.light = " + std::to_string(light_) + ", but the lesson has " +
+                             std::to_string(source.lights.size()) + " light(s): valid 0.." +
+                             std::to_string(source.lights.size() - 1));
+  const Readback shaded = readBack(forceFull_ ? 1 : scale_);
+  ensureTruth(source);
+
+  // 3. rays from the very points that were shaded
+  const measure::SurfaceBuffer surface = measure::surfaceFromImages(shaded.position, shaded.normal);
+  const ImageF technique = techniqueVisibility(shaded.normal);
   const Light& light = source.lights[std::size_t(light_)];
   result_.width = surface.width;
   result_.height = surface.height;
@@ -196,37 +246,14 @@ void Measurement::compute(const MeasureSource& source) {
     result_.hard = measure::compareHard(technique, reference);
     result_.errorHeatmap = measure::hardErrorHeatmap(technique, reference);
   }
-
-  // 4. aliasing, for techniques that sample a shadow map (their Jacobian is non-zero)
-  ImageF js = jacobian;
-  bool anyJ = false;
-  for (std::size_t i = 0; i < surface.covered.size(); ++i) {
-    if (!surface.covered[i]) {
-      for (int c = 0; c < 4; ++c) js.data[i * 4 + c] = std::nanf("");  // background
-    } else {
-      for (int c = 0; c < 4; ++c) anyJ = anyJ || js.data[i * 4 + c] != 0.0f;
-    }
-  }
-  result_.hasAliasing = anyJ;
-  if (anyJ) {
-    result_.aliasing = measure::aliasingStats(js);
-    result_.aliasingHeatmap = measure::aliasingHeatmap(js);
-  }
-
-  // The reference itself, as grey levels (background transparent).
-  result_.referenceImage.width = reference.width;
-  result_.referenceImage.height = reference.height;
-  result_.referenceImage.data.resize(std::size_t(reference.width) * reference.height * 4);
-  for (std::size_t i = 0; i < reference.data.size(); ++i) {
-    const float v = reference.data[i];
-    const auto g = std::uint8_t(v < 0 ? 40 : std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-    std::uint8_t* px = &result_.referenceImage.data[i * 4];
-    px[0] = px[1] = px[2] = g;
-    px[3] = v == measure::kBackground ? 0 : 255;
-  }
+  measureAliasing(shaded.jacobian, surface.covered);
+  result_.referenceImage = referenceImage(reference);
   result_.valid = true;
+  uploadOverlay();
+}
 
-  const Image8* shown = overlay_ == Overlay::Aliasing    ? (anyJ ? &result_.aliasingHeatmap : nullptr)
+void Measurement::uploadOverlay() {
+  const Image8* shown = overlay_ == Overlay::Aliasing    ? (result_.hasAliasing ? &result_.aliasingHeatmap : nullptr)
                         : overlay_ == Overlay::Reference ? &result_.referenceImage
                                                          : &result_.errorHeatmap;
   if (shown) overlayTexture_ = gl::uploadTexture(*shown, "measurement overlay", false);

@@ -92,7 +92,14 @@ class Measurement {
 
  private:
   void ensureTarget(int width, int height);
+  struct Readback {
+    ImageF position, normal, jacobian;
+  };
   void compute(const MeasureSource& source);
+  Readback readBack(int factor);
+  void ensureTruth(const MeasureSource& source);
+  void measureAliasing(ImageF jacobian, const std::vector<std::uint8_t>& covered);
+  void uploadOverlay();
   void drawOverlay(unsigned frameFbo);
 
   enum class Overlay { None, Error, Aliasing, Reference };
