@@ -1,6 +1,7 @@
 # The technique layer (common/technique) through the lessons that compose it (label gpu):
 #   gpu.technique.ab_versus  lesson 03's A/B split of the uniform map against lesson 04's stencil
 #                            volumes: each half measures what its own lesson measures
+#   gpu.technique.none       the smallest technique (V = 1): every error is a leak, and there are leaks
 if(SHADOWLAB_UNIT_ONLY OR NOT TARGET lesson_03_shadow_quality OR NOT TARGET lesson_04_shadow_volumes)
   return()
 endif()
@@ -8,3 +9,6 @@ add_test(NAME gpu.technique.ab_versus COMMAND ${CMAKE_COMMAND}
          -DLESSON03=$<TARGET_FILE:lesson_03_shadow_quality> -DLESSON04=$<TARGET_FILE:lesson_04_shadow_volumes>
          -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_ab_versus.cmake)
 set_tests_properties(gpu.technique.ab_versus PROPERTIES LABELS gpu TIMEOUT 300)
+add_test(NAME gpu.technique.none COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_03_shadow_quality>
+         -DOUT=${CMAKE_BINARY_DIR}/test-screenshots/technique_none.json -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_no_shadows.cmake)
+set_tests_properties(gpu.technique.none PROPERTIES LABELS gpu TIMEOUT 300)

@@ -11,6 +11,9 @@ gl::Program& LitPass::program(const ShadowTechnique& t) {
 
 std::size_t LitPass::draw(const ShadowContext& c, const ShadowTechnique& t, const LitSettings& s) {
   const gl::Program& p = program(t);
+  glEnable(GL_DEPTH_TEST);  // whatever the technique's passes left: the lit pass writes depth
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
   p.use();
   p.set("uViewProj", c.frame.projection * c.frame.view);
   p.set("uEye", c.frame.eye);

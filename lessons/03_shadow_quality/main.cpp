@@ -22,6 +22,7 @@
 #include "exercises.hpp"
 #include "technique/lit_pass.hpp"
 #include "technique/map_view.hpp"
+#include "technique/no_shadows.hpp"
 #include "technique/scene_cache.hpp"
 #include "technique/stencil_volumes.hpp"
 #include "technique/uniform_maps.hpp"
@@ -30,13 +31,13 @@ using namespace shadowlab;
 
 namespace {
 
-enum class Technique { Uniform, Volumes };
+enum class Technique { Uniform, Volumes, None };
 enum class View { Lit, Visibility, SunMap };
 constexpr int kLights = 3;
 
 struct Params {
   tech::SceneChoice scene{1, 60000};         // city: long straight edges show acne, aliasing and shimmer
-  Technique technique = Technique::Uniform;  // the uniform maps, or lesson 04's volumes on the same scene
+  Technique technique = Technique::Uniform;  // the uniform maps, lesson 04's volumes, or none (V = 1)
   View view = View::Lit;
   Impl impl = Impl::Reference;  // student: your culling test and fit drive the directional light's pass
   bool drift = false;           // move the camera slowly (shows shimmer without snapping)
@@ -63,8 +64,8 @@ class ShadowQualityLesson : public Lesson {
   void declare(ParamRegistry& r) override {
     camera.aim({0, 2, 0}, 45.0f, 0.5f);  // a city block from above: long shadows across streets
     tech::SceneCache::declare(r, &p_.scene, "procedural scene", "scene size: what the shadow passes draw");
-    r.addChoice("technique", &p_.technique, {"uniform", "volumes"},
-                "uniform shadow maps (this lesson), or lesson 04's stencil volumes on the same scene")
+    r.addChoice("technique", &p_.technique, {"uniform", "volumes", "none"},
+                "uniform shadow maps (this lesson), lesson 04's stencil volumes on the same scene, or none (V = 1)")
         .hotkey = "T";
     r.addChoice("view", &p_.view, {"lit", "visibility", "sun_map"}, "lit, V of the measured light, or light 0's map")
         .hotkey = "V";
@@ -109,9 +110,8 @@ class ShadowQualityLesson : public Lesson {
 
   void render(const FrameInfo& f) override {
     const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
-    tech::ShadowTechnique& technique = p_.technique == Technique::Uniform
-                                           ? static_cast<tech::ShadowTechnique&>(maps_)
-                                           : static_cast<tech::ShadowTechnique&>(volumes_);
+    tech::ShadowTechnique* const techniques[] = {&maps_, &volumes_, &none_};
+    tech::ShadowTechnique& technique = *techniques[int(p_.technique)];
 
     // ==== 1. the light cameras: fit, cull casters, skip cube faces (algorithms/light_cameras) =====
     // ==== 2. shadow passes: one map per directional or spot light, six faces per point light =====
@@ -165,6 +165,7 @@ class ShadowQualityLesson : public Lesson {
   tech::SceneCache scene_{"03 scene"};
   tech::UniformShadowMaps maps_;
   tech::StencilVolumes volumes_;
+  tech::NoShadows none_;
   tech::LitPass lit_{"03 scene"};
   tech::DepthMapView mapView_;
 };
