@@ -2,6 +2,10 @@
 #   gpu.technique.ab_versus  lesson 03's A/B split of the uniform map against lesson 04's stencil
 #                            volumes: each half measures what its own lesson measures
 #   gpu.technique.none       the smallest technique (V = 1): every error is a leak, and there are leaks
+#   gpu.technique.generic    the lit pass's generic shaders (SHADOWLAB_SPECIALISE=0: no #defines, every
+#                            feature a uniform) draw the golden pictures of the specialised ones on a
+#                            preset of each light kind and filter: the fallback a window shows while a
+#                            specialised program compiles
 if(SHADOWLAB_UNIT_ONLY OR NOT TARGET lesson_03_shadow_quality OR NOT TARGET lesson_04_shadow_volumes)
   return()
 endif()
@@ -12,3 +16,9 @@ set_tests_properties(gpu.technique.ab_versus PROPERTIES LABELS gpu TIMEOUT 300)
 add_test(NAME gpu.technique.none COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_03_shadow_quality>
          -DOUT=${CMAKE_BINARY_DIR}/test-screenshots/technique_none.json -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_no_shadows.cmake)
 set_tests_properties(gpu.technique.none PROPERTIES LABELS gpu TIMEOUT 300)
+add_test(NAME gpu.technique.generic COMMAND lesson_check $<TARGET_FILE:lesson_03_shadow_quality>
+         --presets default,several_lights,receiver_plane,poisson,point_light,versus_volumes
+         --png ${CMAKE_BINARY_DIR}/test-screenshots/technique_generic.png
+         --golden ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/03_shadow_quality
+         -- --headless --frames 2 --size 320x180 --screenshot ${CMAKE_BINARY_DIR}/test-screenshots/technique_generic.png)
+set_tests_properties(gpu.technique.generic PROPERTIES LABELS gpu TIMEOUT 600 ENVIRONMENT SHADOWLAB_SPECIALISE=0)

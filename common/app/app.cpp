@@ -59,7 +59,7 @@ std::vector<std::string> shaderErrors() {
 
 bool programsReady() {
   for (const gl::Program* p : gl::livePrograms())
-    if (!p->valid()) return false;
+    if (!p->valid() && !p->building()) return false;
   return true;
 }
 
@@ -144,6 +144,9 @@ class Runner {
         caps.renderer.find("llvmpipe") != std::string::npos || caps.renderer.find("softpipe") != std::string::npos;
     if (const char* s = std::getenv("SHADOWLAB_SYNC_TIMERS")) sync = std::string(s) == "1";
     lesson_.timers.setSynchronous(sync);
+    // A window compiles specialised shaders in the background; headless frames must not depend on
+    // how fast the driver compiles, so they wait for every program.
+    gl::setAsyncCompile(!cl_.headless);
 
     installInputCallbacks(context_->window(), &input_);
     uiVisible_ = !cl_.headless || cl_.showUi;

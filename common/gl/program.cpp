@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -58,6 +59,17 @@ std::string infoLog(GLuint object, bool isProgram) {
 
 const std::vector<Program*>& livePrograms() { return registry(); }
 
+namespace {
+bool g_async = false;
+}
+
+void setAsyncCompile(bool on) {
+  g_async = on && epoxy_has_gl_extension("GL_KHR_parallel_shader_compile");
+  if (g_async) glMaxShaderCompilerThreadsKHR(0xFFFFFFFFu);  // as many threads as the driver likes
+}
+
+bool asyncCompile() { return g_async; }
+
 Program::Program(std::string label, std::vector<std::string> files, std::vector<std::string> defines)
     : label_(std::move(label)), files_(std::move(files)), defines_(std::move(defines)) {}
 
@@ -66,47 +78,86 @@ Program::~Program() {
   live.erase(std::remove(live.begin(), live.end(), this), live.end());
 }
 
-bool Program::build() {
+// Compiles every stage and links, without waiting for the results: with
+// GL_KHR_parallel_shader_compile the driver does the work on its own threads.
+void Program::start() {
   auto& live = registry();
   if (std::find(live.begin(), live.end(), this) == live.end()) live.push_back(this);
-  std::vector<ShaderSource> sources;
-  std::vector<ShaderHandle> shaders;
+  pending_ = std::make_unique<Pending>();
   const std::string root = shaderRoot();
   try {
     for (const auto& file : files_) {
-      sources.push_back(loadShaderSource(root + "/" + file, {root}));
-      const std::string text = withDefines(sources.back().text, defines_);
+      pending_->sources.push_back(loadShaderSource(root + "/" + file, {root}));
+      const std::string text = withDefines(pending_->sources.back().text, defines_);
       ShaderHandle shader(glCreateShader(glStage(stageFromPath(file))));
       const char* src = text.c_str();
       glShaderSource(shader.id(), 1, &src, nullptr);
       glCompileShader(shader.id());
-      GLint ok = 0;
-      glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-      if (!ok) throw ShaderSourceError(mapCompileLog(infoLog(shader.id(), false), sources.back().files));
       gl::label(GL_SHADER, shader.id(), label_ + ":" + file);
-      shaders.push_back(std::move(shader));
+      pending_->shaders.push_back(std::move(shader));
     }
   } catch (const ShaderSourceError& e) {
-    // Keep the sources read so far: a fix to any of them triggers the next reload. (A file that
-    // could not be read at all leaves the list short, and the next poll simply tries again.)
-    sources_ = std::move(sources);
-    error_ = label_ + ": " + e.what();
+    pending_->error = label_ + ": " + e.what();
+    return;
+  }
+  pending_->program = ProgramHandle(glCreateProgram());
+  for (const auto& s : pending_->shaders) glAttachShader(pending_->program.id(), s.id());
+  glLinkProgram(pending_->program.id());
+}
+
+// Takes the results: the new program, or the error (file:line) with the last good program kept.
+bool Program::finish() {
+  Pending p = std::move(*pending_);
+  pending_.reset();
+  // Keep the sources read so far, also on failure: a fix to any of them triggers the next reload.
+  // (A file that could not be read at all leaves the list short, and the next poll tries again.)
+  sources_ = std::move(p.sources);
+  if (!p.error.empty()) {
+    error_ = p.error;
     return false;
   }
-  ProgramHandle program(glCreateProgram());
-  for (const auto& s : shaders) glAttachShader(program.id(), s.id());
-  glLinkProgram(program.id());
+  for (std::size_t i = 0; i < p.shaders.size(); ++i) {
+    GLint ok = 0;
+    glGetShaderiv(p.shaders[i].id(), GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      error_ = label_ + ": " + mapCompileLog(infoLog(p.shaders[i].id(), false), sources_[i].files);
+      return false;
+    }
+  }
   GLint ok = 0;
-  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-  sources_ = std::move(sources);
+  glGetProgramiv(p.program.id(), GL_LINK_STATUS, &ok);
   if (!ok) {
-    error_ = label_ + ": link failed: " + infoLog(program.id(), true);
+    error_ = label_ + ": link failed: " + infoLog(p.program.id(), true);
     return false;
   }
-  gl::label(GL_PROGRAM, program.id(), label_);
-  program_ = std::move(program);
+  gl::label(GL_PROGRAM, p.program.id(), label_);
+  program_ = std::move(p.program);
   locations_.clear();
   error_.clear();
+  return true;
+}
+
+bool Program::build() {
+  start();
+  return finish();
+}
+
+void Program::buildAsync() {
+  if (!asyncCompile()) {
+    build();
+    return;
+  }
+  start();
+}
+
+bool Program::ready() {
+  if (!pending_) return true;
+  if (pending_->program) {
+    GLint done = GL_FALSE;
+    glGetProgramiv(pending_->program.id(), GL_COMPLETION_STATUS_KHR, &done);
+    if (!done) return false;
+  }
+  finish();
   return true;
 }
 
@@ -122,7 +173,8 @@ bool Program::reloadIfChanged() {
   return build();
 }
 
-Program& ProgramVariants::get(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles) {
+Program& ProgramVariants::variant(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles,
+                                  bool async) {
   std::string key;
   for (const auto& f : extraFiles) key += f + ';';
   key += '|';
@@ -133,9 +185,23 @@ Program& ProgramVariants::get(const std::vector<std::string>& defines, const std
   files.insert(files.end(), extraFiles.begin(), extraFiles.end());
   std::string label = label_;
   for (const auto& f : extraFiles) label += " + " + f;
+  for (const auto& d : defines) label += " [" + d + "]";
   auto program = std::make_unique<Program>(label, std::move(files), defines);
-  program->build();
+  async ? program->buildAsync() : void(program->build());
   return *programs_.emplace(key, std::move(program)).first->second;
+}
+
+Program& ProgramVariants::get(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles) {
+  // SHADOWLAB_SPECIALISE=0: every program generic, for measuring what specialisation buys.
+  static const bool specialise =
+      !std::getenv("SHADOWLAB_SPECIALISE") || std::string(std::getenv("SHADOWLAB_SPECIALISE")) != "0";
+  if (!specialise) return variant({}, extraFiles, false);
+  if (!asyncCompile() || defines.empty()) return variant(defines, extraFiles, false);
+  // Interactive: the specialised program compiles on the driver's threads; until it is ready the
+  // generic one (the same shaders without the defines, driven by uniforms) draws the same picture.
+  Program& generic = variant({}, extraFiles, false);
+  Program& specialised = variant(defines, extraFiles, true);
+  return specialised.ready() ? specialised : generic;
 }
 
 GLint Program::location(const char* name) const {

@@ -30,6 +30,12 @@ class Program {
   // Compiles and links. On failure the previous program (if any) is kept and error() is set;
   // returns whether the new build succeeded.
   bool build();
+  // The same without waiting, where the driver compiles in parallel (asyncCompile()); ready()
+  // says when the result is in (and takes it). Without parallel compilation: build().
+  void buildAsync();
+  bool ready();
+  // A first build still compiling: nothing to draw with yet, and no error either.
+  bool building() const { return pending_ && !program_; }
   // Polls the files (cheaply, at most every 250 ms) and rebuilds when one changed.
   bool reloadIfChanged();
   bool valid() const { return bool(program_); }
@@ -49,10 +55,20 @@ class Program {
   void set(const char* name, const glm::mat4& v) const;
 
  private:
+  struct Pending {
+    std::vector<ShaderSource> sources;
+    std::vector<ShaderHandle> shaders;
+    ProgramHandle program;
+    std::string error;  // a source that could not be read or expanded
+  };
+  void start();
+  bool finish();
+
   std::string label_;
   std::vector<std::string> files_;
   std::vector<std::string> defines_;
   std::vector<ShaderSource> sources_;
+  std::unique_ptr<Pending> pending_;
   ProgramHandle program_;
   std::string error_;
   double lastPoll_ = 0;
@@ -66,14 +82,23 @@ class ProgramVariants {
  public:
   ProgramVariants(std::string label, std::vector<std::string> files)
       : label_(std::move(label)), files_(std::move(files)) {}
+  // The program for `defines`. Compiled asynchronously when asyncCompile() is on (interactive
+  // windows): until it is ready this returns the generic variant (no defines), so switching a
+  // feature never stalls a frame. Headless runs build synchronously (deterministic frames).
   Program& get(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles = {});
   std::size_t size() const { return programs_.size(); }
 
  private:
+  Program& variant(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles, bool async);
   std::string label_;
   std::vector<std::string> files_;
   std::map<std::string, std::unique_ptr<Program>> programs_;
 };
+
+// Parallel shader compilation (GL_KHR_parallel_shader_compile), where the driver has it: the app
+// turns it on for interactive windows, off for headless runs whose frames must be reproducible.
+void setAsyncCompile(bool on);
+bool asyncCompile();
 
 // Every live Program, so the framework can list shader errors in the header and reload all.
 const std::vector<Program*>& livePrograms();

@@ -5,12 +5,26 @@
 
 namespace shadowlab::tech {
 
-gl::Program& LitPass::program(const ShadowTechnique& t) {
-  return variants_.get(t.shaderDefines(), {t.visibilityShader()});
+std::vector<std::string> LitPass::lightDefines(std::span<const Light> lights, int view) {
+  std::string on, kinds;
+  for (std::size_t i = 0; i < 4; ++i) {  // MAX_LIGHTS entries, the ones past the lesson's off
+    const bool used = i < lights.size() && lights[i].enabled;
+    on += std::string(i ? ", " : "") + (used ? "true" : "false");
+    kinds += std::string(i ? ", " : "") + std::to_string(used ? int(lights[i].kind) : 0);
+  }
+  return {"LIGHT_COUNT " + std::to_string(lights.size()), "LIGHT_ON " + on, "LIGHT_KINDS " + kinds,
+          "VIEW " + std::to_string(view)};
+}
+
+gl::Program& LitPass::program(const ShadowContext& c, const ShadowTechnique& t, const LitSettings& s) {
+  std::vector<std::string> defines = lightDefines(c.lights, s.view);
+  const std::vector<std::string> own = t.shaderDefines();
+  defines.insert(defines.end(), own.begin(), own.end());
+  return variants_.get(defines, {t.visibilityShader()});
 }
 
 std::size_t LitPass::draw(const ShadowContext& c, const ShadowTechnique& t, const LitSettings& s) {
-  const gl::Program& p = program(t);
+  const gl::Program& p = program(c, t, s);
   glEnable(GL_DEPTH_TEST);  // whatever the technique's passes left: the lit pass writes depth
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);

@@ -15,8 +15,11 @@ class LitPass {
   explicit LitPass(std::string label, std::string vertex = "common/scene.vert",
                    std::string fragment = "common/scene.frag")
       : variants_(std::move(label), {std::move(vertex), std::move(fragment)}) {}
-  // The program that serves `technique` as it is now set (built on first use).
-  gl::Program& program(const ShadowTechnique& technique);
+  // The program that serves `technique` and these lights as they are now set (built on first use,
+  // specialised for the lights that are on, their kinds, the view and the technique's defines).
+  gl::Program& program(const ShadowContext& c, const ShadowTechnique& technique, const LitSettings& settings);
+  // The lit pass's own defines (LIGHT_COUNT, LIGHT_ON, LIGHT_KINDS, VIEW) for these lights.
+  static std::vector<std::string> lightDefines(std::span<const Light> lights, int view);
   // Draws the scene into the bound framebuffer (material texture on unit 0, the technique's from
   // unit 1 up). Returns the triangles drawn.
   std::size_t draw(const ShadowContext& c, const ShadowTechnique& technique, const LitSettings& settings);

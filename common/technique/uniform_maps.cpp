@@ -168,6 +168,17 @@ void UniformShadowMaps::pushShapes(const ShadowContext& c) const {
   if (p_.fit == Fit::View) c.debug.box(c.scene.bounds(), {0.4f, 0.4f, 0.4f, 1.0f});
 }
 
+// The lit program specialised for this frame: each light's kind of map, the filter, its size.
+std::vector<std::string> UniformShadowMaps::shaderDefines() const {
+  std::string types;
+  for (int i = 0; i < kMaxLights; ++i)
+    types +=
+        std::string(i ? ", " : "") + std::to_string(i < int(lights_.size()) ? int(lights_[std::size_t(i)].type) : 0);
+  return {"SHADOW_TYPES " + types, "SHADOW_FILTER " + std::to_string(int(p_.filter)),
+          "PCF_SIZE " + std::to_string(p_.pcfSize | 1),
+          std::string("RECEIVER_PLANE ") + (p_.receiverPlane ? "1" : "0")};
+}
+
 // ==== 3. what the lit pass reads: per light its matrix, texel size and map ======================
 void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) const {
   lit.set("uCubeNear", p_.cubeNear);
@@ -193,8 +204,8 @@ void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) co
       lit.set(("uShadowSize" + n).c_str(), float(l->map.size));
     }
     const int unit2D = firstUnit + i, unitCube = firstUnit + kMaxLights + i;
-    lit.set(("uShadowMap" + n).c_str(), unit2D);
-    lit.set(("uShadowCube" + n).c_str(), unitCube);
+    lit.set(("uShadowMap" + std::to_string(i)).c_str(), unit2D);
+    lit.set(("uShadowCube" + std::to_string(i)).c_str(), unitCube);
     const bool cube = type == Type::Cube, flat = type == Type::Ortho || type == Type::Perspective;
     glActiveTexture(GLenum(GL_TEXTURE0 + unit2D));
     glBindTexture(GL_TEXTURE_2D, flat ? l->map.texture.id() : dummy2D_.texture.id());

@@ -56,6 +56,7 @@ class UniformShadowMaps : public ShadowTechnique {
   void renderShadows(const ShadowContext& c) override;
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "common/shadow_uniform.frag"; }
+  std::vector<std::string> shaderDefines() const override;
   void bindVisibility(const gl::Program& lit, int firstUnit) const override;
   void unbindVisibility(int firstUnit) const override;
 

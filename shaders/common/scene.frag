@@ -4,6 +4,12 @@
 // with V_i from the technique, whichever it is: its own fragment shader, linked into this program,
 // defines shadowVisibility (shaders/common/shadow_*.frag). One shader for any technique and any
 // number of lights (up to MAX_LIGHTS).
+//
+// Specialised (common/technique/lit_pass): a software renderer pays for every light the loop
+// visits, even one a uniform switches off, so LitPass compiles a variant per light set with
+//   LIGHT_COUNT n   LIGHT_ON a, b, c, d (1 on, 0 off)   LIGHT_KINDS k0, k1, k2, k3   VIEW v
+// and the loops unroll around the lights that are on, each of its kind. Without the defines (the
+// generic variant, drawn while a specialised one compiles) the same code runs on the uniforms.
 #include "common/lighting.glsl"
 #include "common/measure.glsl"
 
@@ -29,6 +35,28 @@ uniform int uView;  // 0 lit, 1 the visibility of the measured light (light 0 wh
 
 out vec4 fragColor;
 
+#ifdef LIGHT_COUNT
+const bool kLightOn[MAX_LIGHTS] = bool[](LIGHT_ON);
+const int kLightKind[MAX_LIGHTS] = int[](LIGHT_KINDS);
+#define LIGHTS LIGHT_COUNT
+#define LIGHT_IS_ON(i) kLightOn[i]
+#define SCENE_VIEW VIEW
+// Light i with its kind as a constant: the branches on the kind fold away.
+Light sceneLight(int i) {
+  Light l = uLights[i];
+  l.kind = kLightKind[i];
+  l.enabled = true;
+  return l;
+}
+#else
+// A loop of constant length unrolls, so each light's index (and the technique's sampler for it)
+// is a constant too: a sampler array indexed by a variable costs a software renderer dearly.
+#define LIGHTS MAX_LIGHTS
+#define LIGHT_IS_ON(i) (i < uLightCount)
+#define SCENE_VIEW uView
+Light sceneLight(int i) { return uLights[i]; }
+#endif
+
 void main() {
   vec3 N = normalize(vNormal);
   vec3 V = normalize(uEye - vWorldPos);
@@ -41,21 +69,27 @@ void main() {
     vis[i] = 1.0;
     texelCoords[i] = vec2(0.0);
   }
-  for (int i = 0; i < uLightCount; ++i) vis[i] = shadowVisibility(i, vWorldPos, N, texelCoords[i]);
+  // Written out per light, so every index is a constant whether or not the compiler unrolls.
+#define VISIBILITY(i) \
+  if (i < LIGHTS && LIGHT_IS_ON(i)) vis[i] = shadowVisibility(i, vWorldPos, N, texelCoords[i]);
+  VISIBILITY(0) VISIBILITY(1) VISIBILITY(2) VISIBILITY(3)
 
   vec4 texel = uUseTexture ? texture(uTexture, vUv) : vec4(1.0);
   if (uAlphaCutoff > 0.0 && texel.a < uAlphaCutoff) discard;  // the holes of leaf cards and fences
 
-  int m = clamp(uMeasureLight, 0, max(uLightCount - 1, 0));
+  int m = clamp(uMeasureLight, 0, max(LIGHTS - 1, 0));
   writeMeasurement(vWorldPos, N, vis[m], texelCoords[m]);
-  if (uView == 1) {
+  if (SCENE_VIEW == 1) {
     fragColor = vec4(vec3(vis[uMeasureLight >= 0 ? m : 0]), 1.0);
     return;
   }
   vec3 kd = uAlbedo * texel.rgb;
   vec3 color = uAmbient * kd;
-  for (int i = 0; i < uLightCount; ++i)
-    color += lightContribution(N, toLight(uLights[i], vWorldPos), V, incidentRadiance(uLights[i], vWorldPos), vis[i],
-                               kd, uSpecular, uShininess, true);
+  for (int i = 0; i < LIGHTS; ++i) {
+    if (!LIGHT_IS_ON(i)) continue;
+    Light light = sceneLight(i);
+    color += lightContribution(N, toLight(light, vWorldPos), V, incidentRadiance(light, vWorldPos), vis[i], kd,
+                               uSpecular, uShininess, true);
+  }
   fragColor = vec4(toDisplay(color), 1.0);
 }

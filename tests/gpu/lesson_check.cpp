@@ -7,6 +7,7 @@
 //   to prove a missing shader or texture is reported by name and never crashes.
 // --write REL TEXT: like --without, but REL is replaced by TEXT (a malformed preset file...).
 // --all-presets: run once per preset (from --list-presets), each with --preset NAME added.
+// --presets A,B,C: the same for the listed presets only.
 // --golden DIR: the --png of each run (with --all-presets: of each preset) must match DIR/NAME.png
 //   (NAME: the preset, or "default") within the stated tolerance: at most 0.2 % of the pixels
 //   with a channel more than 2 levels off, and an RMSE of at most 1 level. The worst difference
@@ -134,7 +135,7 @@ int main(int argc, char** argv) {
   int expectExit = 0;
   std::string expectStderr, png, root, golden;
   bool allPresets = false;
-  std::vector<std::string> extra;
+  std::vector<std::string> extra, chosen;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--") {
@@ -145,7 +146,11 @@ int main(int argc, char** argv) {
     else if (a == "--golden" && i + 1 < argc) golden = argv[++i];
     else if (a == "--root" && i + 1 < argc) root = argv[++i];
     else if (a == "--all-presets") allPresets = true;
-    else if ((a == "--without" && i + 1 < argc) || (a == "--write" && i + 2 < argc)) {
+    else if (a == "--presets" && i + 1 < argc) {
+      std::stringstream list(argv[++i]);
+      for (std::string n; std::getline(list, n, ',');)
+        if (!n.empty()) chosen.push_back(n);
+    } else if ((a == "--without" && i + 1 < argc) || (a == "--write" && i + 2 < argc)) {
       // A doctored copy of the data the lessons read: shaders, textures, lesson presets.
       const fs::path copy = fs::temp_directory_path() / ("lesson_check_root_" + std::to_string(getpid()));
       if (root.empty()) {
@@ -168,6 +173,7 @@ int main(int argc, char** argv) {
     }
   }
   std::vector<std::string> presets = {""};
+  if (!chosen.empty()) presets = chosen;
   if (allPresets) {
     const Result list = run({lesson, "--list-presets"}, root);
     std::istringstream names(list.out);
