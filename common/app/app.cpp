@@ -310,6 +310,12 @@ class Runner {
         }
         initError_ = e.what();
       }
+      // Programs built on first use (specialised variants) report here: headless, a broken or
+      // missing shader ends the run as it does at init.
+      if (cl_.headless && !shaderErrors().empty()) {
+        for (const auto& e : shaderErrors()) std::cerr << info_.name << ": " << e << '\n';
+        return 1;
+      }
     }
     if (!ready || !initError_.empty()) {  // nothing valid to draw with: a dark red frame
       glClearColor(0.25f, 0.05f, 0.05f, 1.0f);

@@ -205,6 +205,7 @@ Program& ProgramVariants::get(const std::vector<std::string>& defines, const std
 }
 
 GLint Program::location(const char* name) const {
+  if (!program_) return -1;  // never built, or its first build failed: nothing to set
   auto it = locations_.find(name);
   if (it != locations_.end()) return it->second;
   const GLint loc = glGetUniformLocation(program_.id(), name);
@@ -212,16 +213,27 @@ GLint Program::location(const char* name) const {
   return loc;
 }
 
-void Program::set(const char* n, float v) const { glUniform1f(location(n), v); }
-void Program::set(const char* n, int v) const { glUniform1i(location(n), v); }
-void Program::set(const char* n, const glm::vec2& v) const { glUniform2fv(location(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::vec3& v) const { glUniform3fv(location(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::vec4& v) const { glUniform4fv(location(n), 1, glm::value_ptr(v)); }
+// A program that never built has nothing bound to set (GL would report the call as an error).
+void Program::set(const char* n, float v) const {
+  if (program_) glUniform1f(location(n), v);
+}
+void Program::set(const char* n, int v) const {
+  if (program_) glUniform1i(location(n), v);
+}
+void Program::set(const char* n, const glm::vec2& v) const {
+  if (program_) glUniform2fv(location(n), 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::vec3& v) const {
+  if (program_) glUniform3fv(location(n), 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::vec4& v) const {
+  if (program_) glUniform4fv(location(n), 1, glm::value_ptr(v));
+}
 void Program::set(const char* n, const glm::mat3& v) const {
-  glUniformMatrix3fv(location(n), 1, GL_FALSE, glm::value_ptr(v));
+  if (program_) glUniformMatrix3fv(location(n), 1, GL_FALSE, glm::value_ptr(v));
 }
 void Program::set(const char* n, const glm::mat4& v) const {
-  glUniformMatrix4fv(location(n), 1, GL_FALSE, glm::value_ptr(v));
+  if (program_) glUniformMatrix4fv(location(n), 1, GL_FALSE, glm::value_ptr(v));
 }
 
 }  // namespace shadowlab::gl

@@ -29,6 +29,7 @@ void setLights(const Program& program, std::span<const Light> lights) {
 
 std::size_t drawScene(const Program& program, const Scene& scene, const GpuScene& gpu, const SceneDrawOptions& o) {
   std::size_t triangles = 0;
+  if (!program.valid()) return 0;  // a variant that failed to build: its error is in the header
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     if (o.filter && !o.filter(i)) continue;
     const SceneObject& object = scene.objects[i];

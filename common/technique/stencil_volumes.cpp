@@ -46,7 +46,7 @@ void StencilVolumes::declare(ParamRegistry& r, const std::string& n) {
 }
 
 void StencilVolumes::init() {
-  for (gl::Program* p : {&ambient_, &lit_, &volume_, &volumeGs_, &heat_}) p->build();
+  for (gl::Program* p : {&ambient_, &volume_, &volumeGs_, &heat_}) p->build();
   emptyVao_ = gl::makeVertexArray("volumes: fullscreen triangle");
   lineVao_ = gl::makeVertexArray("volumes: silhouette lines");
   lineBuffer_ = gl::makeBuffer(GL_ARRAY_BUFFER, "volumes: silhouette lines");
@@ -273,9 +273,10 @@ void StencilVolumes::litPass(const Frame& f, int i, const LitSettings& lit) {
     glColorMaski(a, on, on, on, on);
   }
   if (!light.enabled) glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  lit_.use();
-  gl::setLight(lit_, "uLight", light);
-  drawScene(f, lit_, lit);
+  const gl::Program& program = lit_.get({"LIGHT_KIND " + std::to_string(int(light.kind))});
+  program.use();
+  gl::setLight(program, "uLight", light);
+  drawScene(f, program, lit);
   for (GLuint a = 0; a <= 3; ++a) glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDisable(GL_BLEND);
   glDepthFunc(GL_LESS);

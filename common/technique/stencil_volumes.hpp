@@ -107,7 +107,7 @@ class StencilVolumes : public ShadowTechnique {
   int zPassCount_ = 0, zFailCount_ = 0;
   std::size_t volumeTriangles_ = 0;  // volume triangles drawn this frame (counting and fill passes)
   gl::Program ambient_{"volumes: depth + ambient", {"common/scene.vert", "common/volumes/ambient.frag"}};
-  gl::Program lit_{"volumes: lit", {"common/scene.vert", "common/volumes/lit.frag"}};
+  gl::ProgramVariants lit_{"volumes: lit", {"common/scene.vert", "common/volumes/lit.frag"}};  // per light kind
   gl::Program volume_{"volumes: volume", {"common/volumes/volume.vert", "common/volumes/volume.frag"}};
   gl::Program volumeGs_{"volumes: volume gs",
                         {"common/volumes/volume_gs.vert", "common/volumes/volume.geom", "common/volumes/volume.frag"}};

@@ -87,7 +87,6 @@ class LightingLesson : public Lesson {
   LessonInfo info() const override { return {"01", "01_lighting", "Lighting", kSummary, 1, kHelp, true}; }
 
   void init() override {
-    sceneProgram_.build();
     unlit_.build();
     gizmo_ = gl::uploadMesh(makeSphere(0.12f, 16, 8), "light gizmo");
   }
@@ -132,22 +131,24 @@ class LightingLesson : public Lesson {
       glEnable(GL_CULL_FACE);
       glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      sceneProgram_.use();
-      sceneProgram_.set("uViewProj", viewProj);
-      sceneProgram_.set("uEye", f.eye);
-      sceneProgram_.set("uAmbient", glm::vec3(p_.ambient));
-      sceneProgram_.set("uBlinn", p_.blinn);
-      sceneProgram_.set("uView", cpu && p_.view == View::Lit ? 4 : int(p_.view));
-      sceneProgram_.set("uNdcToTexture", p_.impl == Impl::Student ? ex01::ndcToTexture() : lighting::ndcToTexture());
-      sceneProgram_.set("uTexture", 0);
-      sceneProgram_.set("uMeasureLight", f.measureLight);
-      setLightUniforms();
+      const int view = cpu && p_.view == View::Lit ? 4 : int(p_.view);
+      const gl::Program& program = sceneProgram(view);
+      program.use();
+      program.set("uViewProj", viewProj);
+      program.set("uEye", f.eye);
+      program.set("uAmbient", glm::vec3(p_.ambient));
+      program.set("uBlinn", p_.blinn);
+      program.set("uView", view);
+      program.set("uNdcToTexture", p_.impl == Impl::Student ? ex01::ndcToTexture() : lighting::ndcToTexture());
+      program.set("uTexture", 0);
+      program.set("uMeasureLight", f.measureLight);
+      setLightUniforms(program);
       gl::SceneDrawOptions draw;
       draw.textures = p_.textures;
       draw.specular = p_.specular;
       draw.shininess = p_.shininess;
       draw.beforeDraw = [this](std::size_t i) { bindVertexColors(i); };
-      gl::drawScene(sceneProgram_, scene_.scene(), scene_.gpu(), draw);  // beforeDraw sets attribute 3 for every object
+      gl::drawScene(program, scene_.scene(), scene_.gpu(), draw);  // beforeDraw sets attribute 3 for every object
     }
 
     // ==== 3. light gizmos ===========================================================================
@@ -166,13 +167,27 @@ class LightingLesson : public Lesson {
   }
 
  private:
-  // Only the enabled lights go to the shader: a software rasteriser runs every loop iteration for
-  // every pixel, so a switched-off light must cost nothing.
-  void setLightUniforms() {
+  // The scene program compiled for what is in use: the enabled lights and their kinds, the view,
+  // Phong or Blinn (a software rasteriser pays for every branch a uniform would switch).
+  const gl::Program& sceneProgram(int view) {
+    std::string kinds;
     int n = 0;
     for (const Light& l : p_.lights)
-      if (l.enabled) gl::setLight(sceneProgram_, "uLights[" + std::to_string(n++) + "]", l);
-    sceneProgram_.set("uLightCount", n);
+      if (l.enabled) kinds += (n++ ? ", " : "") + std::to_string(int(l.kind));
+    for (; n < 4; ++n) kinds += n ? ", 0" : "0";
+    const int enabled =
+        int(std::count_if(std::begin(p_.lights), std::end(p_.lights), [](const Light& l) { return l.enabled; }));
+    return sceneVariants_.get({"LIGHT_COUNT " + std::to_string(enabled), "LIGHT_KINDS " + kinds,
+                               "VIEW " + std::to_string(view), std::string("BLINN ") + (p_.blinn ? "1" : "0")});
+  }
+
+  // Only the enabled lights go to the shader: a software rasteriser runs every loop iteration for
+  // every pixel, so a switched-off light must cost nothing.
+  void setLightUniforms(const gl::Program& program) {
+    int n = 0;
+    for (const Light& l : p_.lights)
+      if (l.enabled) gl::setLight(program, "uLights[" + std::to_string(n++) + "]", l);
+    program.set("uLightCount", n);
   }
 
   // The CPU-shaded colours of object i at attribute 3 (vertex_cpu shading), or a constant.
@@ -233,7 +248,7 @@ class LightingLesson : public Lesson {
 
   Params p_;
   tech::SceneCache scene_{"01 scene"};
-  gl::Program sceneProgram_{"01 scene", {"01_lighting/scene.vert", "01_lighting/scene.frag"}};
+  gl::ProgramVariants sceneVariants_{"01 scene", {"01_lighting/scene.vert", "01_lighting/scene.frag"}};
   gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};
   gl::GpuMesh gizmo_;
   std::vector<gl::Buffer> colors_;  // per object, CPU-shaded vertex colours

@@ -111,7 +111,6 @@ class ShadowMapLesson : public Lesson {
 
   void init() override {
     casters_.build();
-    sceneProgram_.build();
     mapView_.build();
     unlit_.build();
     compareNearest_ = gl::makeCompareSampler(false, "02 compare sampler");
@@ -199,20 +198,23 @@ class ShadowMapLesson : public Lesson {
 
  private:
   void drawScene(const FrameInfo& f, const glm::mat4& textureMatrix) {
-    sceneProgram_.use();
-    sceneProgram_.set("uViewProj", f.projection * f.view);
-    sceneProgram_.set("uEye", f.eye);
-    sceneProgram_.set("uTextureMatrix", textureMatrix);
-    sceneProgram_.set("uAmbient", glm::vec3(p_.ambient));
-    sceneProgram_.set("uCompare", int(p_.compare));
-    sceneProgram_.set("uBias", p_.bias);
-    sceneProgram_.set("uMapSize", float(map_.size));
-    sceneProgram_.set("uView", int(p_.view));
-    sceneProgram_.set("uMeasureLight", f.measureLight);
-    sceneProgram_.set("uTexture", 0);
-    sceneProgram_.set("uShadowMap", 1);  // one texture on two units: one sampler type each
-    sceneProgram_.set("uShadowDepth", 2);
-    gl::setLight(sceneProgram_, "uLight", p_.light);
+    // Compiled for the comparison and the view in use (both are constants in that variant).
+    const gl::Program& program =
+        sceneVariants_.get({"COMPARE " + std::to_string(int(p_.compare)), "VIEW " + std::to_string(int(p_.view))});
+    program.use();
+    program.set("uViewProj", f.projection * f.view);
+    program.set("uEye", f.eye);
+    program.set("uTextureMatrix", textureMatrix);
+    program.set("uAmbient", glm::vec3(p_.ambient));
+    program.set("uCompare", int(p_.compare));
+    program.set("uBias", p_.bias);
+    program.set("uMapSize", float(map_.size));
+    program.set("uView", int(p_.view));
+    program.set("uMeasureLight", f.measureLight);
+    program.set("uTexture", 0);
+    program.set("uShadowMap", 1);  // one texture on two units: one sampler type each
+    program.set("uShadowDepth", 2);
+    gl::setLight(program, "uLight", p_.light);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, map_.texture.id());
     glBindSampler(1, compareNearest_.id());
@@ -230,7 +232,7 @@ class ShadowMapLesson : public Lesson {
         glVertexAttrib1f(3, 1.0f);
       }
     };
-    gl::drawScene(sceneProgram_, scene_.scene(), scene_.gpu(), draw);
+    gl::drawScene(program, scene_.scene(), scene_.gpu(), draw);
     glBindSampler(1, 0);
     glBindSampler(2, 0);
     glActiveTexture(GL_TEXTURE0);
@@ -265,7 +267,7 @@ class ShadowMapLesson : public Lesson {
   gl::ShadowMap map_;
   gl::Sampler compareNearest_, rawDepth_;
   tech::CasterPass casters_{"02 depth"};
-  gl::Program sceneProgram_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"}};
+  gl::ProgramVariants sceneVariants_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"}};
   tech::DepthMapView mapView_;
   gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};
   gl::GpuMesh gizmo_;

@@ -28,12 +28,21 @@ uniform int uView;                   // 0 lit, 1 visibility, 2 light-space depth
 
 out vec4 fragColor;
 
+// Specialised by the lesson: COMPARE c and VIEW v as constants (a software renderer pays for every
+// branch a uniform would switch); without them the same code reads the uniforms.
+#ifndef COMPARE
+#define COMPARE uCompare
+#endif
+#ifndef VIEW
+#define VIEW uView
+#endif
+
 float shadowVisibility(vec4 s) {
-  if (uCompare == 2) return vCpuVisibility;
-  if (uCompare == 3 || s.w <= 0.0) return 1.0;  // behind the light: the spot cone is zero there
+  if (COMPARE == 2) return vCpuVisibility;
+  if (COMPARE == 3 || s.w <= 0.0) return 1.0;  // behind the light: the spot cone is zero there
   vec3 p = s.xyz / s.w;
   if (p.z > 1.0) return 1.0;                     // beyond the light's far plane: nothing known
-  if (uCompare == 0) return textureProj(uShadowMap, vec4(s.xy, s.z - uBias * s.w, s.w));
+  if (COMPARE == 0) return textureProj(uShadowMap, vec4(s.xy, s.z - uBias * s.w, s.w));
   if (any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)))) return 1.0;
   float stored = texture(uShadowDepth, p.xy).r;
   return p.z - uBias <= stored ? 1.0 : 0.0;      // the comparison ARB_shadow does in hardware
@@ -49,8 +58,8 @@ void main() {
   vec2 uv = vShadow.w > 0.0 ? vShadow.xy / vShadow.w : vec2(0.0);
   writeMeasurement(vWorldPos, N, visibility, uv * uMapSize);
 
-  if (uView == 1) { fragColor = vec4(vec3(visibility), 1.0); return; }
-  if (uView == 2) { fragColor = vec4(vec3(vShadow.w > 0.0 ? vShadow.z / vShadow.w : 1.0), 1.0); return; }
+  if (VIEW == 1) { fragColor = vec4(vec3(visibility), 1.0); return; }
+  if (VIEW == 2) { fragColor = vec4(vec3(vShadow.w > 0.0 ? vShadow.z / vShadow.w : 1.0), 1.0); return; }
   vec3 kd = uAlbedo * texel.rgb;
   vec3 L = toLight(uLight, vWorldPos);
   vec3 color = uAmbient * kd + lightContribution(N, L, V, incidentRadiance(uLight, vWorldPos), visibility, kd,

@@ -21,6 +21,15 @@ uniform bool uTwoSided;
 
 out vec4 fragColor;
 
+// Specialised per light kind (LIGHT_KIND k, from the technique): the kind's branches fold away.
+Light passLight() {
+  Light l = uLight;
+#ifdef LIGHT_KIND
+  l.kind = LIGHT_KIND;
+#endif
+  return l;
+}
+
 void main() {
   vec3 N = normalize(vNormal);
   vec3 V = normalize(uEye - vWorldPos);
@@ -29,8 +38,9 @@ void main() {
   writeMeasurement(vWorldPos, N, 1.0, vec2(0.0));
   vec3 kd = uAlbedo;
   if (uUseTexture) kd *= texture(uTexture, vUv).rgb;
-  vec3 L = toLight(uLight, vWorldPos);
-  vec3 c = lightContribution(N, L, V, incidentRadiance(uLight, vWorldPos), 1.0, kd, uSpecular, uShininess, true);
+  Light light = passLight();
+  vec3 L = toLight(light, vWorldPos);
+  vec3 c = lightContribution(N, L, V, incidentRadiance(light, vWorldPos), 1.0, kd, uSpecular, uShininess, true);
   // Additive blending adds display values; the light's own term is encoded on its own. An exact
   // sum in linear light would need a float target; this keeps the frame RGBA8 like every lesson.
   fragColor = vec4(toDisplay(c), 1.0);
