@@ -6,6 +6,8 @@
 #                            feature a uniform) draw the golden pictures of the specialised ones on a
 #                            preset of each light kind and filter: the fallback a window shows while a
 #                            specialised program compiles
+#   gpu.technique.map_reuse  static lights over a static scene: every map drawn once, then reused, and
+#                            the picture equals the one redrawn every frame
 if(SHADOWLAB_UNIT_ONLY OR NOT TARGET lesson_03_shadow_quality OR NOT TARGET lesson_04_shadow_volumes)
   return()
 endif()
@@ -22,3 +24,6 @@ add_test(NAME gpu.technique.generic COMMAND lesson_check $<TARGET_FILE:lesson_03
          --golden ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/03_shadow_quality
          -- --headless --frames 2 --size 320x180 --screenshot ${CMAKE_BINARY_DIR}/test-screenshots/technique_generic.png)
 set_tests_properties(gpu.technique.generic PROPERTIES LABELS gpu TIMEOUT 600 ENVIRONMENT SHADOWLAB_SPECIALISE=0)
+add_test(NAME gpu.technique.map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_03_shadow_quality>
+         -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
+set_tests_properties(gpu.technique.map_reuse PROPERTIES LABELS gpu TIMEOUT 300)

@@ -48,6 +48,7 @@ void UniformShadowMaps::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "cube.far", &p_.cubeFar, 1, 500, "cube faces' far plane: beyond it, lit");
   r.add(n + "spot.near", &p_.spotNear, 0.01f, 50, "the spot frustum's near plane: depth precision lives here");
   r.add(n + "spot.far", &p_.spotFar, 1, 500, "the spot frustum's far plane");
+  r.add(n + "reuse_maps", &p_.reuseMaps, "keep a map nothing invalidated (light, casters, light camera unchanged)");
 }
 
 void UniformShadowMaps::init() {
@@ -80,11 +81,14 @@ void UniformShadowMaps::fitLight(const ShadowContext& c, int i, const shadow::Co
   const int size = l.type == Type::Cube ? sizeCube() : size2D();
   if (l.type == Type::None) {
     l.map = {};
+    l.rendered.clear();
     return;
   }
-  if (l.map.size != size || l.map.format != p_.format || l.map.cube != (l.type == Type::Cube))
+  if (l.map.size != size || l.map.format != p_.format || l.map.cube != (l.type == Type::Cube)) {
+    l.rendered.clear();
     l.map = l.type == Type::Cube ? gl::makeShadowCube(size, p_.format, "light" + std::to_string(i) + " cube map")
                                  : gl::makeShadowMap(size, p_.format, "light" + std::to_string(i) + " shadow map");
+  }
   if (l.type == Type::Ortho) {
     l.camera = shadow::fitDirectional(light.direction, boxes, view,
                                       {p_.fit == Fit::View, p_.snap, p_.cullCasters, size, casterTest, fitter});
@@ -100,29 +104,44 @@ void UniformShadowMaps::fitLight(const ShadowContext& c, int i, const shadow::Co
                                           : shadow::textureMatrix(glm::mat4(1.0f), l.camera.viewProj());
 }
 
+// What light i's map depends on: its cameras and the casters they keep, the scene, the depth pass's
+// settings. A static light over a static scene (and a sun fitted to an unmoving view) keeps it.
+PassKey UniformShadowMaps::passKey(const ShadowContext& c, const PerLight& l) const {
+  PassKey key;
+  key << c.scene.revision() << l.map.size << l.map.format << p_.offsetFactor << p_.offsetUnits << p_.cullFront;
+  if (l.type != Type::Cube) return key << l.camera.viewProj() << std::span<const char>(l.camera.casters);
+  for (const shadow::LightCamera& f : l.faces) key << f.skipped << f.viewProj() << std::span<const char>(f.casters);
+  return key;
+}
+
 // ==== 2. the depth passes: one per 2D map, one per cube face that is not skipped ================
 void UniformShadowMaps::renderLight(const ShadowContext& c, int i) {
   PerLight& l = lights_[std::size_t(i)];
   if (l.type == Type::None) return;
+  // What the light cameras left out, whether or not the map is drawn again.
+  if (l.type != Type::Cube) stats_.culledCasters += l.camera.culled;
+  for (const shadow::LightCamera& f : l.faces)
+    if (l.type == Type::Cube) f.skipped ? ++stats_.skippedFaces : stats_.culledCasters += f.culled;
+  PassKey key = passKey(c, l);
+  if (p_.reuseMaps && key == l.rendered) {
+    ++stats_.reusedMaps;
+    return;
+  }
+  l.rendered = std::move(key);
   auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
   const CasterOptions options{true, p_.cullFront};
   const std::uint64_t side = std::uint64_t(l.map.size);
   if (l.type != Type::Cube) {
     gl::beginShadowPass(l.map);
     stats_.triangles += casters_.draw(c.scene, l.camera.viewProj(), l.camera.casters, options);
-    stats_.culledCasters += l.camera.culled;
     stats_.texels += side * side;
     return;
   }
   for (int face = 0; face < 6; ++face) {
     const shadow::LightCamera& f = l.faces[std::size_t(face)];
     gl::beginShadowPass(l.map, face);  // a skipped face is cleared: lit, never stale
-    if (f.skipped) {
-      ++stats_.skippedFaces;
-      continue;
-    }
+    if (f.skipped) continue;
     stats_.triangles += casters_.draw(c.scene, f.viewProj(), f.casters, options);
-    stats_.culledCasters += f.culled;
     stats_.texels += side * side;
   }
 }

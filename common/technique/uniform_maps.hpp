@@ -15,6 +15,7 @@
 #include "algorithms/light_cameras.hpp"
 #include "gl/shadow_map.hpp"
 #include "technique/casters.hpp"
+#include "technique/pass_key.hpp"
 #include "technique/technique.hpp"
 
 namespace shadowlab::tech {
@@ -43,6 +44,7 @@ struct UniformMapParams {
   bool skipFaces = true;                              // skip cube faces the view frustum misses
   float cubeNear = 0.2f, cubeFar = 60.0f;             // the cube faces' depth range
   float spotNear = 0.5f, spotFar = 150.0f;            // the spot frustum's depth range
+  bool reuseMaps = true;                              // skip a map's pass when nothing it depends on changed
 };
 
 class UniformShadowMaps : public ShadowTechnique {
@@ -79,7 +81,9 @@ class UniformShadowMaps : public ShadowTechnique {
     std::array<shadow::LightCamera, 6> faces;  // cube map
     glm::mat4 textureMatrix{1.0f};
     float texel = 0.0f;  // ortho: world texel; perspective: 2 tan(fov / 2) / size
+    PassKey rendered;    // what the map holds now (empty: nothing valid)
   };
+  PassKey passKey(const ShadowContext& c, const PerLight& l) const;
   void fitLight(const ShadowContext& c, int i, const shadow::ConvexVolume& view);
   void renderLight(const ShadowContext& c, int i);
   void pushShapes(const ShadowContext& c) const;

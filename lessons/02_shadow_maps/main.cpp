@@ -27,6 +27,7 @@
 #include "gl/shadow_map.hpp"
 #include "technique/casters.hpp"
 #include "technique/map_view.hpp"
+#include "technique/pass_key.hpp"
 #include "technique/scene_cache.hpp"
 
 using namespace shadowlab;
@@ -143,8 +144,14 @@ class ShadowMapLesson : public Lesson {
                {1.0f, 0.7f, 0.2f, 1.0f});
 
     // ==== 1. shadow map: depth from the light ======================================================
-    // The god view re-renders the frame from outside: the map the viewer's frame made is reused.
-    if (!f.godView) {
+    // The god view re-renders the frame from outside: the map the viewer's frame made is reused;
+    // so is a map nothing invalidated (the light, the casters and the depth pass unchanged).
+    tech::PassKey key;
+    key << scene_.revision() << light.viewProj() << map_.size << map_.format << p_.offsetFactor << p_.offsetUnits
+        << p_.alphaTest;
+    mapReused_ = key == rendered_;
+    if (!f.godView && !mapReused_) {
+      rendered_ = std::move(key);
       auto t = scope("shadow map");
       gl::beginShadowPass(map_);
       glEnable(GL_POLYGON_OFFSET_FILL);  // seeds 002: glPolygonOffset(4, 4) against self-shadowing
@@ -154,9 +161,10 @@ class ShadowMapLesson : public Lesson {
       glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer);
       glViewport(0, 0, f.width, f.height);
     }
-    counters = {{"shadow triangles", std::to_string(shadowTriangles_)},
-                {"shadow texels", std::to_string(std::uint64_t(map_.size) * std::uint64_t(map_.size))},
+    counters = {{"shadow triangles", std::to_string(mapReused_ ? 0 : shadowTriangles_)},
+                {"shadow texels", std::to_string(mapReused_ ? 0 : std::uint64_t(map_.size) * std::uint64_t(map_.size))},
                 {"culled casters", "0"},
+                {"maps reused", mapReused_ ? "1" : "0"},
                 {"shadow map", std::to_string(map_.size) + "^2 " + gl::depthFormatName(map_.format)},
                 {"comparison", p_.compare == Compare::Hardware ? "sampler2DShadow"
                                : p_.compare == Compare::Manual ? "in the shader"
@@ -273,6 +281,8 @@ class ShadowMapLesson : public Lesson {
   gl::GpuMesh gizmo_;
   std::vector<gl::Buffer> cpuVisibility_;  // per object, V per vertex (compare=cpu_vertex)
   std::size_t shadowTriangles_ = 0;
+  tech::PassKey rendered_;  // what the map holds
+  bool mapReused_ = false;
 };
 
 int main(int argc, char** argv) { return runLesson<ShadowMapLesson>(argc, argv); }
