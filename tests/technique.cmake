@@ -27,3 +27,12 @@ set_tests_properties(gpu.technique.generic PROPERTIES LABELS gpu TIMEOUT 600 ENV
 add_test(NAME gpu.technique.map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_03_shadow_quality>
          -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
 set_tests_properties(gpu.technique.map_reuse PROPERTIES LABELS gpu TIMEOUT 300)
+
+# The frame budget on a software renderer (a window under Xvfb), lesson 03.
+find_program(XVFB_RUN xvfb-run)
+if(XVFB_RUN)
+  add_test(NAME gpu.framework.frame_budget COMMAND ${CMAKE_COMMAND} -DXVFB_RUN=${XVFB_RUN}
+           -DLESSON=$<TARGET_FILE:lesson_03_shadow_quality> -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_frame_budget.cmake)
+  set_tests_properties(gpu.framework.frame_budget PROPERTIES LABELS gpu TIMEOUT 300)
+endif()

@@ -16,6 +16,7 @@
 
 #include "app/ab_split.hpp"
 #include "app/context.hpp"
+#include "app/frame_budget.hpp"
 #include "app/god_view.hpp"
 #include "app/input.hpp"
 #include "app/lesson.hpp"
@@ -90,6 +91,7 @@ class Runner {
       lesson_.declare(params_);                // may set the camera's starting pose...
       declareCamera(params_, lesson_.camera);  // ...which then is the camera's default
       godView_.declare(params_);
+      budget_.declare(params_);
       if (info_.measurable) measurement_.declare(params_);
       else if (!cl_.measure.empty())
         throw CliError("--measure: lesson " + info_.name + " computes no shadows to measure");
@@ -227,8 +229,16 @@ class Runner {
       return std::nullopt;
     }
     const bool lastFrame = cl_.frames > 0 && frame + 1 == cl_.frames;
+    // Screenshots and measured frames are drawn at the requested size, never at a budget's scale.
+    const bool fullSize =
+        input_.screenshot || measurement_.active() || (lastFrame && (!cl_.screenshot.empty() || !cl_.measure.empty()));
+    budget_.setAllowed(!cl_.headless, gl::caps().softwareRenderer, fullSize);
+    gl::resetDrawCalls();
     FrameInfo fi = beginFrame(frame, dt, lastFrame);
     if (Exit e = drawFrame(fi)) return e;
+    drawCalls_ = gl::drawCalls();
+    budget_.end(context_->framebuffer(), width_, height_);
+    fi.framebuffer = context_->framebuffer();
     lesson_.timers.collect();
     if (uiVisible_) drawUi(fi, dt);
     if (Exit e = writeOutputs(fi, lastFrame)) return e;
@@ -236,7 +246,8 @@ class Runner {
     // Frame time includes present: software rasterisers (llvmpipe) do much of their work there.
     const double frameMs = (nowSeconds() - start) * 1000.0;
     frameMsAvg_ = frameMsAvg_ == 0 ? frameMs : 0.9 * frameMsAvg_ + 0.1 * frameMs;
-    if (bench_.isOpen()) bench_.frame(frame, frameMs, lesson_.timers);
+    budget_.record(frameMs);
+    if (bench_.isOpen()) bench_.frame(frame, frameMs, drawCalls_, budget_.scale(), lesson_.timers);
     return std::nullopt;
   }
 
@@ -284,7 +295,10 @@ class Runner {
       lesson_.camera.lookFrom(key.cameraPosition, key.cameraTarget);
       lesson_.applyPathLight(key.lightPosition, key.lightDirection);
     }
-    FrameInfo fi{frame, time_, dt, width_, height_, context_->framebuffer()};
+    // The frame budget may hand the lesson a smaller target; the projection keeps the window's aspect.
+    int w = width_, h = height_;
+    const unsigned fbo = budget_.begin(context_->framebuffer(), width_, height_, w, h);
+    FrameInfo fi{frame, time_, dt, w, h, fbo};
     fi.view = lesson_.camera.view();
     fi.projection = lesson_.camera.projection(float(width_) / float(height_));
     fi.eye = lesson_.camera.position();
@@ -299,7 +313,7 @@ class Runner {
     const unsigned frameFbo = fi.framebuffer;
     const bool ready = initError_.empty() && programsReady();
     glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
-    glViewport(0, 0, width_, height_);
+    glViewport(0, 0, fi.width, fi.height);
     if (ready) {
       try {
         drawLessonAndViews(fi, frameFbo);
@@ -326,10 +340,10 @@ class Runner {
 
   void drawLessonAndViews(FrameInfo& fi, unsigned frameFbo) {
     lesson_.update(fi);
-    fi.framebuffer = measurement_.begin(frameFbo, width_, height_);
+    fi.framebuffer = measurement_.begin(frameFbo, fi.width, fi.height);
     fi.measureLight = measurement_.measuredLight();
     glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
-    glViewport(0, 0, width_, height_);
+    glViewport(0, 0, fi.width, fi.height);
     lesson_.render(fi);
     // Re-measure when anything the picture depends on moved: the camera or any parameter.
     const glm::mat4 view = lesson_.camera.view();
@@ -342,13 +356,13 @@ class Runner {
       ab_.draw(fi, params_, presets_, lesson_, info_.measurable ? &measurement_ : nullptr,
                [&](const FrameInfo& b) { lesson_.render(b); });
       lastRevision_ = params_.revision();  // switching to B and back is not a change
-      glViewport(0, 0, width_, height_);
+      glViewport(0, 0, fi.width, fi.height);
     }
     if (godView_.enabled()) {
       lesson_.timers.setEnabled(false);
       godView_.draw(fi, lesson_.camera, lesson_.debug, [&](const FrameInfo& g) { lesson_.render(g); });
       lesson_.timers.setEnabled(true);
-      glViewport(0, 0, width_, height_);
+      glViewport(0, 0, fi.width, fi.height);
     }
   }
 
@@ -357,10 +371,12 @@ class Runner {
     glViewport(0, 0, width_, height_);
     ui_.newFrame(dt, width_, height_);
     std::vector<Counter> shown = lesson_.counters;
+    shown.push_back({"draw calls", std::to_string(drawCalls_)});
     for (auto& [name, value] : measurement_.summary()) shown.push_back({name, value});
     std::vector<std::string> errors = shaderErrors();
     if (!initError_.empty()) errors.insert(errors.begin(), initError_);
-    ui_.header({&info_, gl::caps().summary(), frameMsAvg_, &lesson_.timers.passes(), &shown, errors, status_});
+    ui_.header({&info_, gl::caps().summary(), frameMsAvg_, &lesson_.timers.passes(), &shown, errors, status_,
+                gl::caps().softwareRenderer, budget_.label()});
     ui_.paramPanel(params_, presets_, status_);
     const Measurement* measured = info_.measurable ? &measurement_ : nullptr;
     if (ab_.enabled()) ui_.splitLabels(ab_.divider(), ab_.labelA(measured), ab_.labelB());
@@ -382,7 +398,9 @@ class Runner {
     try {
       if (lastFrame && !cl_.measure.empty()) {
         const SplitFigures b{ab_.enabled() ? ab_.presetB() : "", ab_.measurementB().result()};
-        writeMeasurementJson(cl_.measure, info_, measurement_.result(), lesson_.counters, lesson_.timers,
+        std::vector<Counter> counters = lesson_.counters;
+        counters.push_back({"draw calls", std::to_string(drawCalls_)});
+        writeMeasurementJson(cl_.measure, info_, measurement_.result(), counters, lesson_.timers,
                              ab_.enabled() ? &b : nullptr);
       }
       if (lastFrame && !cl_.screenshot.empty()) saveScreenshot(cl_.screenshot, fi.framebuffer, width_, height_);
@@ -448,6 +466,7 @@ class Runner {
   Measurement measurement_;
   GodView godView_;
   AbSplit ab_;
+  FrameBudget budget_;
   Ui ui_;
   Input input_;
   BenchLog bench_;
@@ -456,6 +475,7 @@ class Runner {
   bool uiVisible_ = false, helpOpen_ = false;
   std::string initError_, status_;
   int width_ = 0, height_ = 0;
+  int drawCalls_ = 0;
   glm::mat4 lastView_{0.0f};
   unsigned lastRevision_ = ~0u;
   double frameMsAvg_ = 0, time_ = 0, last_ = 0;

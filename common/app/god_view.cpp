@@ -70,6 +70,7 @@ void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const Debu
   lines_.use();
   lines_.set("uViewProj", g.projection * g.view);
   glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
+  gl::countDraws();
   glDepthFunc(GL_LESS);
 
   // Into the bottom-right corner of the frame, with a thin frame around it.

@@ -284,6 +284,7 @@ void Measurement::drawOverlay(unsigned frameFbo) {
   glBindTexture(GL_TEXTURE_2D, overlayTexture_.id());
   glBindVertexArray(emptyVao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::countDraws();
   glDisable(GL_BLEND);
 }
 

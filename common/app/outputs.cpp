@@ -33,20 +33,22 @@ void saveScreenshot(const std::string& path, unsigned fbo, int w, int h) {
 bool BenchLog::open(const std::string& path) {
   out_.open(path);
   if (!out_) return false;
-  out_ << "frame,pass,gpu_ms,cpu_ms,frame_ms\n";
+  out_ << "frame,pass,gpu_ms,cpu_ms,frame_ms,draw_calls,render_scale\n";
   return true;
 }
 
-void BenchLog::frame(int index, double frameMs, gl::GpuTimers& timers) {
-  frameMs_.resize(std::size_t(index) + 1);
-  frameMs_[std::size_t(index)] = frameMs;
+void BenchLog::frame(int index, double frameMs, int drawCalls, float renderScale, gl::GpuTimers& timers) {
+  frames_.resize(std::size_t(index) + 1);
+  frames_[std::size_t(index)] = {frameMs, drawCalls, renderScale};
   flush(timers);
 }
 
 void BenchLog::flush(gl::GpuTimers& timers) {
-  for (const auto& s : timers.takeSamples())
-    out_ << s.frame << ',' << s.pass << ',' << s.gpuMs << ',' << s.cpuMs << ','
-         << (s.frame < int(frameMs_.size()) ? frameMs_[std::size_t(s.frame)] : 0.0) << '\n';
+  for (const auto& s : timers.takeSamples()) {
+    const FrameRow f = s.frame < int(frames_.size()) ? frames_[std::size_t(s.frame)] : FrameRow{};
+    out_ << s.frame << ',' << s.pass << ',' << s.gpuMs << ',' << s.cpuMs << ',' << f.ms << ',' << f.drawCalls << ','
+         << f.scale << '\n';
+  }
 }
 
 // The figures of one measured frame: hard errors (or soft RMSE) and, where a map was sampled,

@@ -17,18 +17,24 @@ std::string screenshotName(const LessonInfo& info);
 void saveScreenshot(const std::string& path, unsigned fbo, int width, int height);
 
 // --bench FILE: one row per pass per frame (GPU ms arrive a few frames late; each row carries the
-// frame that issued it), plus the CPU time of each whole frame.
+// frame that issued it), plus the CPU time of each whole frame, its draw calls and render scale.
 class BenchLog {
  public:
   // False when the file cannot be written.
   bool open(const std::string& path);
   bool isOpen() const { return out_.is_open(); }
-  void frame(int index, double frameMs, gl::GpuTimers& timers);
+  // A frame's time, its draw calls and the frame budget's render scale (1: the requested size).
+  void frame(int index, double frameMs, int drawCalls, float renderScale, gl::GpuTimers& timers);
   void flush(gl::GpuTimers& timers);
 
  private:
+  struct FrameRow {
+    double ms = 0;
+    int drawCalls = 0;
+    float scale = 1;
+  };
   std::ofstream out_;
-  std::vector<double> frameMs_;
+  std::vector<FrameRow> frames_;
 };
 
 // B's half of an A/B split: its preset and its own whole-frame measurement.

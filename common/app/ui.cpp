@@ -68,22 +68,30 @@ void Ui::header(const HeaderData& d) {
   ImGui::Begin("shadowlab", nullptr, flags);
   if (d.info) ImGui::Text("%s  %s", d.info->number.c_str(), d.info->title.c_str());
   ImGui::TextDisabled("%s", d.gpu.c_str());
-  ImGui::Text("%.2f ms  (%.0f fps)", d.frameMs, d.frameMs > 0 ? 1000.0 / d.frameMs : 0.0);
-  if (d.passes && !d.passes->empty() && ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingFixedFit)) {
+  ImGui::Text("%.1f ms  (%.1f fps)", d.frameMs, d.frameMs > 0 ? 1000.0 / d.frameMs : 0.0);
+  if (!d.renderScale.empty()) ImGui::TextDisabled("%s", d.renderScale.c_str());
+  // A software renderer rasterises later, on its own threads: its timestamps bill next to nothing to
+  // the pass that caused the work, so there the passes are timed on the CPU, synchronously.
+  const int columns = d.softwareRenderer ? 2 : 3;
+  if (d.passes && !d.passes->empty() && ImGui::BeginTable("passes", columns, ImGuiTableFlags_SizingFixedFit)) {
     ImGui::TableSetupColumn("pass");
-    ImGui::TableSetupColumn("GPU ms");
+    if (!d.softwareRenderer) ImGui::TableSetupColumn("GPU ms");
     ImGui::TableSetupColumn("CPU ms");  // with synchronous timers: what the pass really cost
     ImGui::TableHeadersRow();
     for (const auto& p : *d.passes) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(p.name.c_str());
+      if (!d.softwareRenderer) {
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2f", p.gpuMs);
+      }
       ImGui::TableNextColumn();
-      ImGui::Text("%.3f", p.gpuMs);
-      ImGui::TableNextColumn();
-      ImGui::Text("%.3f", p.cpuMs);
+      ImGui::Text("%.2f", p.cpuMs);
     }
     ImGui::EndTable();
+    if (d.softwareRenderer)
+      ImGui::TextDisabled("software renderer: passes timed on the CPU (timestamps miss its work)");
   }
   if (d.counters)
     for (const auto& c : *d.counters) ImGui::Text("%s: %s", c.name.c_str(), c.value.c_str());

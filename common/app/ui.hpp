@@ -31,6 +31,8 @@ class Ui {
     const std::vector<Counter>* counters = nullptr;
     std::vector<std::string> errors;  // shader and file errors, file:line first
     std::string status;               // transient message ("saved screenshot to ...")
+    bool softwareRenderer = false;    // time passes on the CPU: its timestamps miss deferred work
+    std::string renderScale;          // the frame budget's "render scale 0.60 (software renderer)", or ""
   };
   void header(const HeaderData& data);
   void help(const LessonInfo& info, const ParamRegistry& params, bool* open);

@@ -1,5 +1,7 @@
 #include "gl/caps.hpp"
 
+#include <cstdlib>
+
 #include "gl/gl.hpp"
 
 namespace shadowlab::gl {
@@ -30,6 +32,9 @@ const Caps& caps() {
   c.computeShaders = c.atLeast(4, 3) || epoxy_has_gl_extension("GL_ARB_compute_shader");
   c.directStateAccess = c.atLeast(4, 5) || epoxy_has_gl_extension("GL_ARB_direct_state_access");
   c.timerQuery = c.atLeast(3, 3) || epoxy_has_gl_extension("GL_ARB_timer_query");
+  c.softwareRenderer =
+      c.renderer.find("llvmpipe") != std::string::npos || c.renderer.find("softpipe") != std::string::npos;
+  if (const char* s = std::getenv("SHADOWLAB_SOFTWARE_RENDERER")) c.softwareRenderer = std::string(s) == "1";
   g_caps = c;
   g_detected = true;
   return g_caps;

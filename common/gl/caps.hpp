@@ -15,6 +15,9 @@ struct Caps {
   bool computeShaders = false;  // 4.3 or GL_ARB_compute_shader
   bool directStateAccess = false;
   bool timerQuery = false;  // 3.3 core; still checked (some drivers lie)
+  // Mesa's llvmpipe / softpipe (or SHADOWLAB_SOFTWARE_RENDERER=1): the CPU rasterises, deferred, so
+  // timestamps miss the work, and an interactive window needs the frame budget.
+  bool softwareRenderer = false;
   bool atLeast(int ma, int mi) const { return major > ma || (major == ma && minor >= mi); }
   std::string summary() const;  // one line for the UI header and logs
 };

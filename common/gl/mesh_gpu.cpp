@@ -46,6 +46,7 @@ GpuMesh uploadMesh(const Mesh& mesh, const std::string& label) {
 void GpuMesh::draw() const {
   glBindVertexArray(vao.id());
   glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+  countDraws();
 }
 
 GpuScene uploadScene(const Scene& scene, const std::string& label) {

@@ -79,6 +79,13 @@ void requireComplete(GLenum target, const std::string& name) {
     }() + ")");
 }
 
+namespace {
+int g_drawCalls = 0;
+}
+void countDraws(int n) { g_drawCalls += n; }
+int drawCalls() { return g_drawCalls; }
+void resetDrawCalls() { g_drawCalls = 0; }
+
 RenderTarget makeRenderTarget(int width, int height, const std::string& name) {
   RenderTarget rt;
   rt.width = width;

@@ -86,6 +86,13 @@ Renderbuffer makeRenderbuffer(const std::string& label);
 Query makeQuery(const std::string& label);  // labelled on first use (queries exist once begun)
 Sampler makeSampler(const std::string& label);
 
+// Draw calls issued since the last reset (the framework resets it every frame and shows it in
+// the header and in --bench). Every draw in common/ counts itself; a lesson's own draws call
+// countDraws too.
+void countDraws(int n = 1);
+int drawCalls();
+void resetDrawCalls();
+
 // A colour + depth-stencil render target (the headless "window", A/B halves, G-buffers).
 struct RenderTarget {
   Framebuffer fbo;

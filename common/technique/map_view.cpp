@@ -26,6 +26,7 @@ void DepthMapView::draw(const gl::ShadowMap& map, int x, int y, int w, int h, st
   glBindSampler(GLuint(unit), raw_.id());
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::countDraws();
   glBindSampler(GLuint(unit), 0);
   glActiveTexture(GL_TEXTURE0);
   glEnable(GL_DEPTH_TEST);

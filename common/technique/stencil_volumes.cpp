@@ -297,6 +297,7 @@ void StencilVolumes::drawVolumes(const Frame& f, const VolumeCache& c, const glm
       volumeGs_.set("uModel", scene.objects[o].model);
       glBindVertexArray(g.vao.id());
       glDrawElements(GL_TRIANGLES_ADJACENCY, g.count, GL_UNSIGNED_INT, nullptr);
+      gl::countDraws();
       volumeTriangles_ += std::size_t(g.count) / 6;  // triangles in; the geometry shader emits the volume
     }
     return;
@@ -316,6 +317,7 @@ void StencilVolumes::drawVolumes(const Frame& f, const VolumeCache& c, const glm
   volume_.set("uColor", glm::vec4(1));
   glBindVertexArray(c.vao.id());
   glMultiDrawArrays(GL_TRIANGLES, first.data(), count.data(), GLsizei(first.size()));
+  gl::countDraws(int(first.size()));
 }
 
 // Fill cost: every fragment the volumes rasterise (depth test off, nothing written), counted by
@@ -354,6 +356,7 @@ void StencilVolumes::drawStencilHeatmap() {
       glStencilFunc(k == 0 ? GL_NOTEQUAL : GL_EQUAL, k, 0xff);
       heat_.set("uColor", glm::vec4(k == 0 ? glm::vec3(0.9f, 0.1f, 0.1f) : ramp[k - 1], 0.7f));
       glDrawArrays(GL_TRIANGLES, 0, 3);
+      gl::countDraws();
     }
   });
   glDisable(GL_BLEND);
@@ -373,6 +376,7 @@ void StencilVolumes::drawVolumesView(const VolumeCache& c, const glm::mat4& view
   volume_.set("uColor", glm::vec4(1.0f, 0.85f, 0.2f, wire ? 0.9f : 0.18f));
   glBindVertexArray(c.vao.id());
   withoutMeasurement([&] { glDrawArrays(GL_TRIANGLES, 0, GLsizei(c.triangles.size())); });
+  gl::countDraws();
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glEnable(GL_CULL_FACE);
   glDepthMask(GL_TRUE);
@@ -394,6 +398,7 @@ void StencilVolumes::drawSilhouettes(const VolumeCache& c, const glm::mat4& view
     volume_.set("uViewProj", viewProj);
     volume_.set("uColor", glm::vec4(1.0f, 0.2f, 0.9f, 1.0f));
     glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
+    gl::countDraws();
     glDepthFunc(GL_LESS);
   });
 }
