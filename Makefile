@@ -45,11 +45,14 @@ grade: build
 	@$(BUILD)/bin/grade_ex$(LESSON) --reporters=junit --out=out/grades/ex$(LESSON).xml --score-json=out/grades/ex$(LESSON).json >/dev/null; \
 	  status=$$?; cat out/grades/ex$(LESSON).json; echo "JUnit: out/grades/ex$(LESSON).xml"; exit $$status
 
-# Benchmarks, apart from the tests: the PSM light-camera set-up against receiver count, and lesson 01
-# over its presets against ground truth (report in out/bench/). Lessons add their own sweeps:
+# Benchmarks, apart from the tests: every lesson's frame time against its floor (out/bench/frames.{csv,html}),
+# the PSM light-camera set-up against receiver count, and lesson 01 over its presets against ground
+# truth (report in out/bench/). Lessons add their own sweeps:
 # tools/shadow_bench.sh, tools/volume_bench.sh, filter_sweep (see the README).
 bench: build
 	@mkdir -p out/bench
+	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then $(BUILD)/bin/frame_bench --bin $(BUILD)/bin --out out/bench --window; \
+	  else xvfb-run -a -s "-screen 0 1920x1080x24" $(BUILD)/bin/frame_bench --bin $(BUILD)/bin --out out/bench --window; fi
 	@$(BUILD)/bin/bench_psm_setup out/bench/psm_setup.csv
 	@$(BUILD)/bin/shadowlab_bench $(BUILD)/bin/lesson_01_lighting --out out/bench/01_lighting \
 	  --preset default --preset three_lights --preset spot_only --repeat 3 --frames 6

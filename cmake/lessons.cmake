@@ -32,3 +32,7 @@ endif()
 # The benchmark runner (tools/bench): lessons x parameter sets x path samples -> report.
 add_executable(shadowlab_bench ${CMAKE_SOURCE_DIR}/tools/bench/main.cpp)
 target_link_libraries(shadowlab_bench PRIVATE shadowlab_measure nlohmann_json::nlohmann_json)
+
+# Every lesson's frame time against its floor (tools/frame_bench; `make bench` runs it).
+add_executable(frame_bench ${CMAKE_SOURCE_DIR}/tools/frame_bench/main.cpp)
+target_link_libraries(frame_bench PRIVATE shadowlab_core)

@@ -36,3 +36,12 @@ if(XVFB_RUN)
            -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_frame_budget.cmake)
   set_tests_properties(gpu.framework.frame_budget PROPERTIES LABELS gpu TIMEOUT 300)
 endif()
+
+# The frames table of `make bench` (tools/frame_bench), on one lesson's default view: it runs, and
+# writes a row with a frame time and a floor.
+if(TARGET frame_bench AND TARGET lesson_01_lighting)
+  add_test(NAME bench.frames.smoke COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:frame_bench>
+           -DBIN=$<TARGET_FILE_DIR:lesson_01_lighting> -DOUT=${CMAKE_BINARY_DIR}/test-bench/frames
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_frame_bench.cmake)
+  set_tests_properties(bench.frames.smoke PROPERTIES LABELS gpu TIMEOUT 300)
+endif()

@@ -78,6 +78,22 @@ Program::~Program() {
   live.erase(std::remove(live.begin(), live.end(), this), live.end());
 }
 
+// The files to compile. SHADOWLAB_FLOOR_SHADER=1 (the benchmark's floor) swaps every fragment
+// stage for shaders/common/floor.frag: the same frame with a trivial fragment shader.
+std::vector<std::string> Program::stageFiles() const {
+  static const bool floor =
+      std::getenv("SHADOWLAB_FLOOR_SHADER") && std::string(std::getenv("SHADOWLAB_FLOOR_SHADER")) == "1";
+  if (!floor) return files_;
+  std::vector<std::string> files;
+  bool fragment = false;
+  for (const auto& f : files_) {
+    if (stageFromPath(f) != ShaderStage::Fragment) files.push_back(f);
+    else if (!fragment) files.push_back("common/floor.frag");
+    fragment = fragment || stageFromPath(f) == ShaderStage::Fragment;
+  }
+  return files;
+}
+
 // Compiles every stage and links, without waiting for the results: with
 // GL_KHR_parallel_shader_compile the driver does the work on its own threads.
 void Program::start() {
@@ -86,7 +102,7 @@ void Program::start() {
   pending_ = std::make_unique<Pending>();
   const std::string root = shaderRoot();
   try {
-    for (const auto& file : files_) {
+    for (const auto& file : stageFiles()) {
       pending_->sources.push_back(loadShaderSource(root + "/" + file, {root}));
       const std::string text = withDefines(pending_->sources.back().text, defines_);
       ShaderHandle shader(glCreateShader(glStage(stageFromPath(file))));
@@ -166,7 +182,7 @@ bool Program::reloadIfChanged() {
   if (t - lastPoll_ < 0.25) return false;
   lastPoll_ = t;
   const bool changed =
-      sources_.size() < files_.size() ||
+      sources_.size() < stageFiles().size() ||
       std::any_of(sources_.begin(), sources_.end(), [](const ShaderSource& s) { return dependenciesChanged(s); });
   if (!changed) return false;
   sources_.clear();

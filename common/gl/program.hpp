@@ -63,6 +63,7 @@ class Program {
   };
   void start();
   bool finish();
+  std::vector<std::string> stageFiles() const;
 
   std::string label_;
   std::vector<std::string> files_;

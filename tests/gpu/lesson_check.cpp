@@ -13,13 +13,10 @@
 //   with a channel more than 2 levels off, and an RMSE of at most 1 level. The worst difference
 //   is printed. SHADOWLAB_RECORD_GOLDEN=1 writes DIR/NAME.png instead (record before a refactor);
 //   SHADOWLAB_RECORD_GOLDEN=missing writes only the images of new presets and checks the others.
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
-#include <fcntl.h>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -30,8 +27,8 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "core/process.hpp"
 
-extern char** environ;
 namespace fs = std::filesystem;
 
 namespace {
@@ -43,37 +40,22 @@ struct Result {
 Result run(const std::vector<std::string>& args, const std::string& root) {
   const fs::path dir = fs::temp_directory_path() / ("lesson_check_" + std::to_string(getpid()));
   fs::create_directories(dir);
-  const std::string outPath = (dir / "out").string(), errPath = (dir / "err").string();
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<std::string> env;
-  for (char** e = environ; *e; ++e)
-    if (std::string(*e).rfind("SHADOWLAB_ROOT=", 0) != 0) env.push_back(*e);
-  if (!root.empty()) env.push_back("SHADOWLAB_ROOT=" + root);
-  env.push_back("SHADOWLAB_STRICT_GL=1");  // any GL error fails the run (exit 3)
-  std::vector<char*> envp, argv;
-  for (auto& e : env) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
+  shadowlab::ProcessOptions o;
+  o.stdoutPath = (dir / "out").string();
+  o.stderrPath = (dir / "err").string();
+  o.unsetEnv = {"SHADOWLAB_ROOT"};
+  if (!root.empty()) o.setEnv.push_back("SHADOWLAB_ROOT=" + root);
+  o.setEnv.push_back("SHADOWLAB_STRICT_GL=1");  // any GL error fails the run (exit 3)
   Result r;
-  pid_t pid;
-  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) == 0) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    r.exit = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  }
-  posix_spawn_file_actions_destroy(&actions);
+  r.exit = shadowlab::runProcess(args, o);
   auto slurp = [](const std::string& p) {
     std::ifstream in(p);
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
   };
-  r.out = slurp(outPath);
-  r.err = slurp(errPath);
+  r.out = slurp(o.stdoutPath);
+  r.err = slurp(o.stderrPath);
   fs::remove_all(dir);
   return r;
 }

@@ -10,11 +10,7 @@
 // Each configuration is a label and `--set` assignments ("label: name=value name=value"), or a
 // preset. GPU and CPU ms are the median over the repeats; the error figures come from the first
 // repeat (the render is deterministic). A progress bar shows on the terminal.
-#include <spawn.h>
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <fcntl.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -26,10 +22,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/process.hpp"
 #include "measure/paths.hpp"
 #include "measure/report.hpp"
 
-extern char** environ;
 namespace fs = std::filesystem;
 using namespace shadowlab;
 
@@ -108,20 +104,7 @@ Options parse(int argc, char** argv) {
 }
 
 // Runs a program with its output captured to `log`; returns the exit code.
-int run(const std::vector<std::string>& args, const std::string& log) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid;
-  int status = -1;
-  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0) waitpid(pid, &status, 0);
-  posix_spawn_file_actions_destroy(&actions);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
+int run(const std::vector<std::string>& args, const std::string& log) { return runProcess(args, {log}); }
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0;

@@ -1,0 +1,21 @@
+#pragma once
+// Running a program the way a student, a grader or a benchmark does: with its output captured to
+// files and a few environment variables changed. For the test and benchmark tools (lesson_check,
+// shadowlab_bench, frame_bench), which run the real lesson programs.
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+struct ProcessOptions {
+  std::string stdoutPath;             // "" : inherit
+  std::string stderrPath;             // "" : the same file as stdout (or inherit)
+  std::vector<std::string> setEnv;    // "NAME=value", added or replacing
+  std::vector<std::string> unsetEnv;  // names removed from the environment
+};
+
+// Runs args[0] (a path, not looked up in PATH) with args; returns its exit code, 128 + the signal
+// when it was killed, or -1 when it could not be started.
+int runProcess(const std::vector<std::string>& args, const ProcessOptions& options = {});
+
+}  // namespace shadowlab

@@ -1,0 +1,23 @@
+# frame_bench on lesson 01's default view at a small size: exit 0, frames.csv with one row whose
+# frame time and floor are positive, and frames.html (the times themselves are not asserted: noisy).
+execute_process(COMMAND ${TOOL} --bin ${BIN} --out ${OUT} --lessons 01_lighting --default-only --quick --size 320x180
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "frame_bench exited ${rc}: ${out}${err}")
+endif()
+file(STRINGS ${OUT}/frames.csv rows)
+list(LENGTH rows n)
+if(NOT n EQUAL 2)
+  message(FATAL_ERROR "expected a header and one row in frames.csv, got:\n${rows}")
+endif()
+list(GET rows 1 row)
+string(REPLACE "," ";" f "${row}")
+list(GET f 3 ms)
+list(GET f 4 floor)
+if(NOT ms GREATER 0 OR NOT floor GREATER 0)
+  message(FATAL_ERROR "frame and floor must be positive: ${row}")
+endif()
+if(NOT EXISTS ${OUT}/frames.html)
+  message(FATAL_ERROR "no frames.html")
+endif()
+message(STATUS "frames.csv: ${row}")
