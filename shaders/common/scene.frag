@@ -70,12 +70,14 @@ void main() {
     texelCoords[i] = vec2(0.0);
   }
   // Written out per light, so every index is a constant whether or not the compiler unrolls.
-#define VISIBILITY(i) \
-  if (i < LIGHTS && LIGHT_IS_ON(i)) vis[i] = shadowVisibility(i, vWorldPos, N, texelCoords[i]);
+  // (one line: GLSL ES-style validators reject a backslash line continuation)
+#define VISIBILITY(i) if (i < LIGHTS && LIGHT_IS_ON(i)) vis[i] = shadowVisibility(i, vWorldPos, N, texelCoords[i]);
   VISIBILITY(0) VISIBILITY(1) VISIBILITY(2) VISIBILITY(3)
 
   vec4 texel = uUseTexture ? texture(uTexture, vUv) : vec4(1.0);
+#ifndef DEPTH_PREPASS  // (after a depth pre-pass a hole's fragment fails the EQUAL test: no discard)
   if (uAlphaCutoff > 0.0 && texel.a < uAlphaCutoff) discard;  // the holes of leaf cards and fences
+#endif
 
   int m = clamp(uMeasureLight, 0, max(LIGHTS - 1, 0));
   writeMeasurement(vWorldPos, N, vis[m], texelCoords[m]);
