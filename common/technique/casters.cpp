@@ -2,11 +2,12 @@
 
 namespace shadowlab::tech {
 
-std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& lightViewProj, std::span<const char> keep,
+std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& viewProj, std::span<const char> keep,
                              const CasterOptions& o) {
   const Scene& scene = cache.scene();
+  if (!program_.valid()) return 0;
   program_.use();
-  program_.set("uLightViewProj", lightViewProj);
+  program_.set(viewProjUniform_.c_str(), viewProj);
   program_.set("uAlphaTest", o.alphaTest);
   program_.set("uTexture", 0);
   glEnable(GL_DEPTH_TEST);
@@ -15,7 +16,7 @@ std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& lightView
   std::size_t triangles = 0;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& object = scene.objects[i];
-    if (!object.castsShadow || (!keep.empty() && !keep[i])) continue;
+    if ((!object.castsShadow && !o.allObjects) || (!keep.empty() && !keep[i])) continue;
     const Material& m = scene.materials[object.material];
     const GLuint texture = cache.gpu().materialTextures[object.material].id();
     program_.set("uModel", object.model);

@@ -14,21 +14,27 @@
 namespace shadowlab::tech {
 
 struct CasterOptions {
-  bool alphaTest = true;   // discard alpha-tested texels (off: solid cards, the lesson-02 mistake)
-  bool cullFront = false;  // draw back faces only: a closed caster's own thickness is the bias
+  bool alphaTest = true;    // discard alpha-tested texels (off: solid cards, the lesson-02 mistake)
+  bool cullFront = false;   // draw back faces only: a closed caster's own thickness is the bias
+  bool allObjects = false;  // every object, casting or not (a depth pre-pass from the eye)
 };
 
 class CasterPass {
  public:
-  explicit CasterPass(std::string label = "depth pass")
-      : program_(std::move(label), {"common/depth.vert", "common/depth.frag"}) {}
+  // `vertexShader` and its view-projection uniform: the light's depth pass, or (common/scene.vert,
+  // uViewProj) for a pre-pass whose depth a lit pass with the same vertex shader tests EQUAL against.
+  explicit CasterPass(std::string label = "depth pass", std::string vertexShader = "common/depth.vert",
+                      std::string viewProjUniform = "uLightViewProj")
+      : program_(std::move(label), {std::move(vertexShader), "common/depth.frag"}),
+        viewProjUniform_(std::move(viewProjUniform)) {}
   void build() { program_.build(); }
   // Draws object i when keep[i] (an empty span: every object that casts). Returns the triangles drawn.
-  std::size_t draw(const SceneCache& scene, const glm::mat4& lightViewProj, std::span<const char> keep,
+  std::size_t draw(const SceneCache& scene, const glm::mat4& viewProj, std::span<const char> keep,
                    const CasterOptions& options);
 
  private:
   gl::Program program_;
+  std::string viewProjUniform_;
 };
 
 }  // namespace shadowlab::tech

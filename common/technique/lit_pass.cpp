@@ -18,6 +18,7 @@ std::vector<std::string> LitPass::lightDefines(std::span<const Light> lights, in
 
 gl::Program& LitPass::program(const ShadowContext& c, const ShadowTechnique& t, const LitSettings& s) {
   std::vector<std::string> defines = lightDefines(c.lights, s.view);
+  if (s.depthPrepass) defines.push_back("DEPTH_PREPASS 1");
   const std::vector<std::string> own = t.shaderDefines();
   defines.insert(defines.end(), own.begin(), own.end());
   return variants_.get(defines, {t.visibilityShader()});
@@ -28,6 +29,10 @@ std::size_t LitPass::draw(const ShadowContext& c, const ShadowTechnique& t, cons
   glEnable(GL_DEPTH_TEST);  // whatever the technique's passes left: the lit pass writes depth
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
+  if (s.depthPrepass) {
+    if (!prepassBuilt_) prepassBuilt_ = (prepass_.build(), true);
+    prepass_.begin(c.scene, c.frame.projection * c.frame.view);
+  }
   p.use();
   p.set("uViewProj", c.frame.projection * c.frame.view);
   p.set("uEye", c.frame.eye);
@@ -43,6 +48,7 @@ std::size_t LitPass::draw(const ShadowContext& c, const ShadowTechnique& t, cons
   const std::size_t triangles = gl::drawScene(p, c.scene.scene(), c.scene.gpu(), options);
   t.unbindVisibility(1);
   glActiveTexture(GL_TEXTURE0);
+  if (s.depthPrepass) prepass_.end();
   return triangles;
 }
 

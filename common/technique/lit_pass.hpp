@@ -6,6 +6,7 @@
 #include <string>
 
 #include "gl/program.hpp"
+#include "technique/depth_prepass.hpp"
 #include "technique/technique.hpp"
 
 namespace shadowlab::tech {
@@ -14,7 +15,7 @@ class LitPass {
  public:
   explicit LitPass(std::string label, std::string vertex = "common/scene.vert",
                    std::string fragment = "common/scene.frag")
-      : variants_(std::move(label), {std::move(vertex), std::move(fragment)}) {}
+      : variants_(label, {vertex, std::move(fragment)}), prepass_(label + ": depth pre-pass", vertex) {}
   // The program that serves `technique` and these lights as they are now set (built on first use,
   // specialised for the lights that are on, their kinds, the view and the technique's defines).
   gl::Program& program(const ShadowContext& c, const ShadowTechnique& technique, const LitSettings& settings);
@@ -26,6 +27,8 @@ class LitPass {
 
  private:
   gl::ProgramVariants variants_;
+  DepthPrepass prepass_;
+  bool prepassBuilt_ = false;
 };
 
 }  // namespace shadowlab::tech

@@ -50,6 +50,9 @@ struct LitSettings {
   int view = 0;                    // 0 lit, 1 the visibility of the measured light (white lit, black shadowed)
   std::optional<float> specular;   // override every material's ks (a lesson's slider)
   std::optional<float> shininess;  // override every material's exponent
+  // Lay down the depth first with a trivial shader, then shade each pixel once (depth EQUAL): the
+  // lit shader's cost is paid per pixel, not per overlapping fragment, and needs no alpha discard.
+  bool depthPrepass = true;
 };
 
 // The work a technique spent and skipped in its last frame, for the header and the benchmarks.

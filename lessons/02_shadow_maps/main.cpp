@@ -26,6 +26,7 @@
 #include "gl/scene_draw.hpp"
 #include "gl/shadow_map.hpp"
 #include "technique/casters.hpp"
+#include "technique/depth_prepass.hpp"
 #include "technique/map_view.hpp"
 #include "technique/pass_key.hpp"
 #include "technique/scene_cache.hpp"
@@ -112,6 +113,7 @@ class ShadowMapLesson : public Lesson {
 
   void init() override {
     casters_.build();
+    prepass_.build();
     mapView_.build();
     unlit_.build();
     compareNearest_ = gl::makeCompareSampler(false, "02 compare sampler");
@@ -179,12 +181,18 @@ class ShadowMapLesson : public Lesson {
     }
 
     // ==== 2. the scene from the eye, V from the map ================================================
+    // Depth first, with the scene's own vertex shader (the forest's cards overlap many times over:
+    // the lit shader then runs once per pixel, where the depth test passes EQUAL).
     {
       auto t = scope("scene");
       glEnable(GL_DEPTH_TEST);
       glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      if (p_.view != View::ShadowMap) drawScene(f, textureMatrix);
+      if (p_.view != View::ShadowMap) {
+        prepass_.begin(scene_, f.projection * f.view);
+        drawScene(f, textureMatrix);
+        prepass_.end();
+      }
     }
 
     // ==== 3. views: the shadow map (full screen or inset), the light ==============================
@@ -207,8 +215,8 @@ class ShadowMapLesson : public Lesson {
  private:
   void drawScene(const FrameInfo& f, const glm::mat4& textureMatrix) {
     // Compiled for the comparison and the view in use (both are constants in that variant).
-    const gl::Program& program =
-        sceneVariants_.get({"COMPARE " + std::to_string(int(p_.compare)), "VIEW " + std::to_string(int(p_.view))});
+    const gl::Program& program = sceneVariants_.get(
+        {"COMPARE " + std::to_string(int(p_.compare)), "VIEW " + std::to_string(int(p_.view)), "DEPTH_PREPASS 1"});
     program.use();
     program.set("uViewProj", f.projection * f.view);
     program.set("uEye", f.eye);
@@ -275,6 +283,7 @@ class ShadowMapLesson : public Lesson {
   gl::ShadowMap map_;
   gl::Sampler compareNearest_, rawDepth_;
   tech::CasterPass casters_{"02 depth"};
+  tech::DepthPrepass prepass_{"02 depth pre-pass", "02_shadow_maps/scene.vert"};
   gl::ProgramVariants sceneVariants_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"}};
   tech::DepthMapView mapView_;
   gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};

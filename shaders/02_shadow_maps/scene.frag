@@ -50,7 +50,9 @@ float shadowVisibility(vec4 s) {
 
 void main() {
   vec4 texel = uUseTexture ? texture(uTexture, vUv) : vec4(1.0);
+#ifndef DEPTH_PREPASS  // after the pre-pass a hole's fragment fails the depth test EQUAL: nothing to discard
   if (uAlphaCutoff > 0.0 && texel.a < uAlphaCutoff) discard;  // the holes of leaf cards and fences
+#endif
   vec3 N = normalize(vNormal);
   vec3 V = normalize(uEye - vWorldPos);
   if (uTwoSided && dot(N, V) < 0.0) N = -N;

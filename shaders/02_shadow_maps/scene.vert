@@ -17,6 +17,7 @@ out vec3 vNormal;
 out vec2 vUv;
 out vec4 vShadow;
 out float vCpuVisibility;
+invariant gl_Position;  // the depth pre-pass runs this shader too: depths must match bit for bit
 
 void main() {
   vec4 world = uModel * vec4(aPosition, 1.0);
