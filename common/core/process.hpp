@@ -12,6 +12,7 @@ struct ProcessOptions {
   std::string stderrPath;             // "" : the same file as stdout (or inherit)
   std::vector<std::string> setEnv;    // "NAME=value", added or replacing
   std::vector<std::string> unsetEnv;  // names removed from the environment
+  double* cpuSeconds = nullptr;       // if set: the user + system CPU time the process (all its threads) used
 };
 
 // Runs args[0] (a path, not looked up in PATH) with args; returns its exit code, 128 + the signal
