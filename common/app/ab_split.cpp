@@ -41,8 +41,10 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
   // Switch to B: the preset over the defaults, keeping A's view and the framework's settings.
   const auto a = params.snapshot();
   presets.apply(presetNames_[std::size_t(preset_)], params);
+  ParamValues shared;
   for (const auto& [name, value] : a)
-    if (sharedWithB(name)) params.set(name, value);
+    if (sharedWithB(name)) shared.emplace_back(name, value);
+  params.setAll(shared);
 
   FrameInfo b = frame;
   const std::vector<Counter> countersA = lesson.counters;  // the header shows A's work, not B's
@@ -60,7 +62,7 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
   figuresB_ = figures(measured ? &measurementB_ : nullptr);
 
   // Back to A exactly as it was.
-  for (const auto& [name, value] : a) params.set(name, value);
+  params.restore(a);
 
   const int x0 = int(divider_ * float(frame.width));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.fbo.id());

@@ -23,6 +23,7 @@
 #include "app/outputs.hpp"
 #include "app/ui.hpp"
 #include "core/cli.hpp"
+#include "core/param_checks.hpp"
 #include "core/paths.hpp"
 #include "gl/caps.hpp"
 #include "gl/debug.hpp"
@@ -97,10 +98,11 @@ class Runner {
         throw CliError("--measure: lesson " + info_.name + " computes no shadows to measure");
       presets_ = PresetFile::load(sourceRoot() + "/lessons/" + info_.name + "/presets.txt");
       ab_.declare(params_, presets_);
+      params_.validate();  // the defaults, then every preset, pass the registry's checks
       presets_.validate(params_);
       if (Exit e = answerQueries(argv[0])) return e;
       if (!cl_.preset.empty()) presets_.apply(cl_.preset, params_);
-      for (const auto& s : cl_.sets) params_.assign(s);
+      params_.assignAll(cl_.sets);       // one change: checked once, whatever the order
     } catch (const std::exception& e) {  // CliError, ParamError
       std::cerr << info_.name << ": " << e.what() << '\n';
       return 2;
@@ -135,6 +137,9 @@ class Runner {
         return 1;
       }
       context_ = cl_.headless ? createHeadlessContext(options) : createWindowContext(options);
+    } catch (const FramebufferSizeError& e) {
+      std::cerr << info_.name << ": " << e.what() << '\n';
+      return 2;
     } catch (const std::exception& e) {
       std::cerr << info_.name << ": " << e.what() << '\n';
       return 1;
@@ -269,7 +274,9 @@ class Runner {
     if (!ui_.wantsKeyboard()) {
       for (int key : input_.pressed) {
         if (!isReloadKey(key)) {
-          applyHotkey(params_, keyName(key));
+          try {
+            applyHotkey(params_, keyName(key));
+          } catch (const ParamError& e) { status_ = std::string("refused: ") + e.what(); }
           continue;
         }
         for (gl::Program* p : gl::livePrograms()) p->build();
@@ -491,6 +498,7 @@ void declareCamera(ParamRegistry& params, OrbitCamera& c) {
   params.add("camera.fov", &c.fovY, 0.1f, 3.0f, "vertical field of view (radians)").hidden = true;
   params.add("camera.near", &c.nearZ, 1e-4f, 100.0f, "near plane distance").hidden = true;
   params.add("camera.far", &c.farZ, 0.1f, 1e7f, "far plane distance").hidden = true;
+  addCameraChecks(params, c);
 }
 
 void declareImpl(ParamRegistry& r, Impl* impl, const std::string& why) {
@@ -511,6 +519,7 @@ void declareLight(ParamRegistry& r, int index, Light& l) {
   // (AreaShape::Rectangle needs a size and a tangent as well; no lesson exposes it yet.)
   r.addChoice(n + "area", &l.area, {"none", "sphere"}, "a spherical emitter: soft shadows, and the soft ground truth");
   r.add(n + "radius", &l.radius, 0.0f, 10.0f, "the spherical emitter's radius");
+  addLightChecks(r, n, l);
 }
 
 int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, char** argv) {

@@ -3,6 +3,7 @@
 // (Mesa's surfaceless platform, or the EGL device platform where a GPU driver offers it) rendering
 // into an offscreen framebuffer. Lessons draw into framebuffer() and never assume it is 0.
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 struct GLFWwindow;
@@ -33,7 +34,13 @@ struct ContextOptions {
   bool fullscreen = false;
 };
 
-// Throws std::runtime_error with what failed and what to try (e.g. no DISPLAY: use --headless).
+// A requested size past the GL limits (--size): bad input, not a broken machine.
+struct FramebufferSizeError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Throws std::runtime_error with what failed and what to try (e.g. no DISPLAY: use --headless);
+// the headless context throws FramebufferSizeError before allocating a frame past the GL limits.
 std::unique_ptr<Context> createWindowContext(const ContextOptions& options);
 std::unique_ptr<Context> createHeadlessContext(const ContextOptions& options);
 

@@ -59,6 +59,8 @@ class EglContext final : public Context {
     if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
       throw std::runtime_error("EGL: eglMakeCurrent without a surface failed (" + eglErrorText() + ")");
     gl::resetCaps();
+    if (const std::string problem = gl::framebufferSizeProblem(o.width, o.height); !problem.empty())
+      throw FramebufferSizeError("--size: " + problem);
     width_ = o.width;
     height_ = o.height;
     target_ = gl::makeRenderTarget(width_, height_, "headless framebuffer");

@@ -5,6 +5,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <charconv>
 #include <string>
 #include <cstdio>
 
@@ -144,6 +145,54 @@ void Ui::splitLabels(float divider, const std::string& a, const std::string& b) 
   label(x + 16.0f, b);
 }
 
+namespace {
+// Shortest text that reads back as exactly `v`.
+std::string exact(float v) {
+  char buf[32];
+  const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+  return std::string(buf, end);
+}
+
+std::string exact(const glm::vec3& v) { return exact(v.x) + " " + exact(v.y) + " " + exact(v.z); }
+
+// One parameter's widget over a copy of its value: the new value as text when edited, else "".
+std::string editWidget(const Param& p, const char* label) {
+  switch (p.kind) {
+    case ParamKind::Float: {
+      float v = *static_cast<const float*>(p.target);
+      return ImGui::SliderFloat(label, &v, p.min, p.max) ? exact(v) : "";
+    }
+    case ParamKind::Int: {
+      int v = *static_cast<const int*>(p.target);
+      return ImGui::SliderInt(label, &v, int(p.min), int(p.max)) ? std::to_string(v) : "";
+    }
+    case ParamKind::Bool: {
+      bool v = *static_cast<const bool*>(p.target);
+      return ImGui::Checkbox(label, &v) ? (v ? "true" : "false") : "";
+    }
+    case ParamKind::Choice: {
+      const int v = std::clamp(*static_cast<const int*>(p.target), 0, int(p.choices.size()) - 1);
+      std::string picked;
+      if (ImGui::BeginCombo(label, p.choices[std::size_t(v)].c_str())) {
+        for (int i = 0; i < int(p.choices.size()); ++i)
+          if (ImGui::Selectable(p.choices[std::size_t(i)].c_str(), i == v)) picked = p.choices[std::size_t(i)];
+        ImGui::EndCombo();
+      }
+      return picked;
+    }
+    case ParamKind::Vec3: {
+      glm::vec3 v = *static_cast<const glm::vec3*>(p.target);
+      return ImGui::SliderFloat3(label, &v.x, p.min, p.max) ? exact(v) : "";
+    }
+    case ParamKind::Color: {
+      glm::vec3 v = *static_cast<const glm::vec3*>(p.target);
+      return ImGui::ColorEdit3(label, &v.x) ? exact(v) : "";
+    }
+  }
+  return "";
+}
+}  // namespace
+
 bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status) {
   bool changed = false;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
@@ -179,8 +228,10 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   }
   ImGui::SameLine();
   if (ImGui::Button("defaults")) {
-    params.resetDefaults();
-    changed = true;
+    try {
+      params.resetDefaults();
+      changed = true;
+    } catch (const ParamError& e) { status = e.what(); }
   }
   ImGui::Separator();
 
@@ -197,31 +248,16 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
     if (!open) continue;
     const char* label = p.name.c_str() + (dot == std::string::npos ? 0 : dot + 1);
     ImGui::PushID(p.name.c_str());
-    bool edited = false;
-    switch (p.kind) {
-      case ParamKind::Float: edited = ImGui::SliderFloat(label, static_cast<float*>(p.target), p.min, p.max); break;
-      case ParamKind::Int: edited = ImGui::SliderInt(label, static_cast<int*>(p.target), int(p.min), int(p.max)); break;
-      case ParamKind::Bool: edited = ImGui::Checkbox(label, static_cast<bool*>(p.target)); break;
-      case ParamKind::Choice: {
-        int* v = static_cast<int*>(p.target);
-        if (ImGui::BeginCombo(label, p.choices[std::clamp(*v, 0, int(p.choices.size()) - 1)].c_str())) {
-          for (int i = 0; i < int(p.choices.size()); ++i)
-            if (ImGui::Selectable(p.choices[i].c_str(), i == *v)) {
-              *v = i;
-              edited = true;
-            }
-          ImGui::EndCombo();
-        }
-        break;
-      }
-      case ParamKind::Vec3: edited = ImGui::SliderFloat3(label, static_cast<float*>(p.target), p.min, p.max); break;
-      case ParamKind::Color: edited = ImGui::ColorEdit3(label, static_cast<float*>(p.target)); break;
-    }
+    // The widget edits a copy; the registry takes it (range and checks) or refuses it, keeping
+    // the last good value and saying why in the header.
+    const std::string edit = editWidget(p, label);
     if (ImGui::IsItemHovered() && !p.why.empty())
       ImGui::SetTooltip("%s%s%s", p.why.c_str(), p.hotkey.empty() ? "" : "\nhotkey: ", p.hotkey.c_str());
-    if (edited) {
-      params.touch();
-      changed = true;
+    if (!edit.empty()) {
+      try {
+        params.set(p.name, edit);
+        changed = true;
+      } catch (const ParamError& e) { status = std::string("refused: ") + e.what() + "; kept " + params.get(p.name); }
     }
     ImGui::PopID();
   }

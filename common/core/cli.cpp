@@ -14,7 +14,7 @@ struct Flag {
 
 constexpr Flag kFlags[] = {
     {"--headless", nullptr, "render offscreen through EGL, no window (tests, benchmarks, slides)"},
-    {"--size", "WxH", "framebuffer size, default 1280x720"},
+    {"--size", "WxH", "framebuffer size, default 1280x720; 16 to 8192 a side, and within the GL limits"},
     {"--frames", "N", "render N frames then exit (headless default 3)"},
     {"--screenshot", "FILE", "write the last frame as PNG"},
     {"--set", "NAME=VALUE", "set a parameter (repeatable; after --preset)"},
@@ -72,12 +72,14 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
     } else if (!def->arg && hasInlineValue) {
       throw CliError(flag + " takes no value");
     }
+    if (def->arg && value.empty())  // "--screenshot=" would otherwise switch the output off silently
+      throw CliError(flag + " needs a value, got an empty one: " + flag + " " + def->arg);
     if (flag == "--headless") cl.headless = true;
     else if (flag == "--size") {
       const auto x = value.find('x');
       if (x == std::string::npos) throw CliError("--size: '" + value + "' is not WxH, e.g. 1280x720");
-      cl.width = toInt("--size", value.substr(0, x), 16, 16384);
-      cl.height = toInt("--size", value.substr(x + 1), 16, 16384);
+      cl.width = toInt("--size", value.substr(0, x), 16, kMaxFramebufferSide);
+      cl.height = toInt("--size", value.substr(x + 1), 16, kMaxFramebufferSide);
     } else if (flag == "--frames") {
       cl.frames = toInt("--frames", value, 1, 100000000);
       framesGiven = true;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -73,6 +75,26 @@ std::string rangeText(const Param& p) {
   return "";
 }
 
+// A parameter's value as bytes: undoing a refused change restores it exactly (the text form keeps
+// only six digits).
+struct RawValue {
+  unsigned char bytes[sizeof(glm::vec3)] = {};
+  static std::size_t size(const Param& p) {
+    switch (p.kind) {
+      case ParamKind::Bool: return sizeof(bool);
+      case ParamKind::Vec3:
+      case ParamKind::Color: return sizeof(glm::vec3);
+      default: return sizeof(int);  // float, int and choices are all 4 bytes
+    }
+  }
+  static RawValue of(const Param& p) {
+    RawValue v;
+    std::memcpy(v.bytes, p.target, size(p));
+    return v;
+  }
+  void restore(const Param& p) const { std::memcpy(p.target, bytes, size(p)); }
+};
+
 bool validName(const std::string& n) {
   if (n.empty()) return false;
   return std::all_of(n.begin(), n.end(),
@@ -84,6 +106,7 @@ bool validName(const std::string& n) {
 Param& ParamRegistry::insert(Param p) {
   if (!validName(p.name)) throw ParamError("parameter name '" + p.name + "' must be [a-z0-9_.]+");
   if (find(p.name)) throw ParamError("parameter '" + p.name + "' is registered twice");
+  index_.emplace(p.name, params_.size());
   params_.push_back(std::move(p));
   params_.back().defaultValue = get(params_.back().name);
   return params_.back();
@@ -122,9 +145,14 @@ Param& ParamRegistry::addChoiceRaw(const std::string& name, int* v, std::vector<
 }
 
 const Param* ParamRegistry::find(const std::string& name) const {
-  for (const auto& p : params_)
-    if (p.name == name) return &p;
-  return nullptr;
+  const auto it = index_.find(name);
+  return it == index_.end() ? nullptr : &params_[it->second];
+}
+
+const Param& ParamRegistry::require(const std::string& name) const {
+  const Param* p = find(name);
+  if (!p) throw ParamError("unknown parameter '" + name + "'; valid: " + names());
+  return *p;
 }
 
 std::string ParamRegistry::names() const {
@@ -134,8 +162,7 @@ std::string ParamRegistry::names() const {
 }
 
 std::string ParamRegistry::get(const std::string& name) const {
-  const Param* p = find(name);
-  if (!p) throw ParamError("unknown parameter '" + name + "'; valid: " + names());
+  const Param* p = &require(name);
   switch (p->kind) {
     case ParamKind::Float: return formatFloat(*static_cast<float*>(p->target));
     case ParamKind::Int: return std::to_string(*static_cast<int*>(p->target));
@@ -153,9 +180,9 @@ std::string ParamRegistry::get(const std::string& name) const {
   return "";
 }
 
-void ParamRegistry::set(const std::string& name, const std::string& rawValue) {
-  const Param* p = find(name);
-  if (!p) throw ParamError("unknown parameter '" + name + "'; valid: " + names());
+void ParamRegistry::write(const Param& param, const std::string& rawValue) {
+  const Param* p = &param;
+  const std::string& name = param.name;
   const std::string value = trim(rawValue);
   auto bad = [&](const std::string& expected) {
     return ParamError("bad value '" + value + "' for " + name + " (" + kindName(*p) + "); valid: " + expected);
@@ -200,17 +227,85 @@ void ParamRegistry::set(const std::string& name, const std::string& rawValue) {
       break;
     }
   }
+}
+
+void ParamRegistry::set(const std::string& name, const std::string& value) {
+  const Param& p = require(name);
+  const RawValue before = RawValue::of(p);
+  write(p, value);
+  if (std::optional<ParamCheckError> failed = failingCheck(name)) {
+    before.restore(p);
+    throw *failed;
+  }
   ++revision_;
 }
 
-void ParamRegistry::assign(const std::string& assignment) {
+void ParamRegistry::setAll(const ParamValues& values, std::size_t* failedAt) {
+  std::vector<RawValue> before;
+  before.reserve(params_.size());
+  for (const Param& p : params_) before.push_back(RawValue::of(p));
+  auto undo = [&] {
+    for (std::size_t i = 0; i < params_.size(); ++i) before[i].restore(params_[i]);
+  };
+  std::size_t i = 0;
+  try {
+    for (; i < values.size(); ++i) write(require(values[i].first), values[i].second);
+  } catch (const ParamError&) {
+    undo();
+    if (failedAt) *failedAt = i;
+    throw;
+  }
+  if (std::optional<ParamCheckError> failed = failingCheck("")) {
+    undo();
+    throw *failed;
+  }
+  ++revision_;
+}
+
+void ParamRegistry::restore(const std::map<std::string, std::string>& saved) {
+  setAll(ParamValues(saved.begin(), saved.end()));
+}
+
+void ParamRegistry::addCheck(std::vector<std::string> reads, ParamCheck check) {
+  for (const std::string& name : reads) require(name);
+  checks_.push_back({std::move(reads), std::move(check)});
+}
+
+std::optional<ParamCheckError> ParamRegistry::failingCheck(const std::string& name) const {
+  for (const Check& c : checks_) {
+    if (!name.empty() && std::find(c.reads.begin(), c.reads.end(), name) == c.reads.end()) continue;
+    if (std::string why = c.check(*this); !why.empty()) return ParamCheckError(why, c.reads);
+  }
+  return std::nullopt;
+}
+
+void ParamRegistry::validate() const {
+  if (std::optional<ParamCheckError> failed = failingCheck("")) throw *failed;
+}
+
+namespace {
+std::pair<std::string, std::string> splitAssignment(const std::string& assignment, const std::string& names) {
   const auto eq = assignment.find('=');
-  if (eq == std::string::npos) throw ParamError("'" + assignment + "' is not name=value; parameters: " + names());
-  set(trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
+  if (eq == std::string::npos) throw ParamError("'" + assignment + "' is not name=value; parameters: " + names);
+  return {trim(assignment.substr(0, eq)), assignment.substr(eq + 1)};
+}
+}  // namespace
+
+void ParamRegistry::assign(const std::string& assignment) {
+  const auto [name, value] = splitAssignment(assignment, names());
+  set(name, value);
+}
+
+void ParamRegistry::assignAll(const std::vector<std::string>& assignments) {
+  ParamValues values;
+  for (const std::string& a : assignments) values.push_back(splitAssignment(a, names()));
+  setAll(values);
 }
 
 void ParamRegistry::resetDefaults() {
-  for (const auto& p : params_) set(p.name, p.defaultValue);
+  ParamValues defaults;
+  for (const auto& p : params_) defaults.emplace_back(p.name, p.defaultValue);
+  setAll(defaults);
 }
 
 std::map<std::string, std::string> ParamRegistry::snapshot() const {
@@ -235,6 +330,7 @@ PresetFile PresetFile::load(const std::string& path) {
   file.path = path;
   std::ifstream in(path);
   if (!in) return file;
+  std::unordered_map<std::string, int> headers;  // name -> line: duplicates found in O(1)
   std::string line;
   int lineNo = 0;
   while (std::getline(in, line)) {
@@ -249,40 +345,54 @@ PresetFile PresetFile::load(const std::string& path) {
             return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
           }))
         throw ParamError(where() + "preset name '" + name + "' must be [a-z0-9_]+");
-      if (file.find(name)) throw ParamError(where() + "preset '" + name + "' is defined twice");
+      if (const auto [it, fresh] = headers.emplace(name, lineNo); !fresh)
+        throw ParamError(where() + "preset '" + name + "' is defined twice (first on line " +
+                         std::to_string(it->second) + ")");
       file.presets.push_back({name, {}, lineNo});
       continue;
     }
     const auto eq = t.find('=');
     if (eq == std::string::npos) throw ParamError(where() + "expected 'name = value' or [preset], got '" + t + "'");
     if (file.presets.empty()) throw ParamError(where() + "'" + t + "' comes before any [preset] header");
-    file.presets.back().values.push_back({trim(t.substr(0, eq)), trim(t.substr(eq + 1))});
+    file.presets.back().values.push_back({trim(t.substr(0, eq)), trim(t.substr(eq + 1)), lineNo});
   }
   return file;
 }
 
+namespace {
+// "file:line: in preset 'name': why" for the value on `line` (0: the preset's header).
+ParamError presetError(const std::string& path, const Preset& preset, int line, const std::string& why) {
+  return ParamError(path + ":" + std::to_string(line > 0 ? line : preset.line) + ": in preset '" + preset.name +
+                    "': " + why);
+}
+
+// The line of the preset's last value that a failed check reads (0 when it sets none of them).
+int lineOfCheck(const Preset& preset, const ParamCheckError& e) {
+  int line = 0;
+  for (const PresetValue& v : preset.values)
+    if (std::find(e.names.begin(), e.names.end(), v.name) != e.names.end()) line = v.line;
+  return line;
+}
+
+ParamValues valuesOf(const Preset& preset) {
+  ParamValues out;
+  out.reserve(preset.values.size());
+  for (const PresetValue& v : preset.values) out.emplace_back(v.name, v.value);
+  return out;
+}
+}  // namespace
+
 void PresetFile::validate(const ParamRegistry& registry) const {
-  // Apply each preset to a scratch copy of the current values, then restore them.
+  // Each preset over the defaults on a scratch registry state, put back as it was at the end.
   auto& reg = const_cast<ParamRegistry&>(registry);
   const auto saved = registry.snapshot();
-  std::string error;
-  for (const auto& preset : presets) {
-    // Line numbers: the header plus the position among its values (comments may shift them; the
-    // header line always points at the right preset).
-    int offset = 0;
-    for (const auto& [name, value] : preset.values) {
-      ++offset;
-      try {
-        reg.set(name, value);
-      } catch (const ParamError& e) {
-        error = path + ":" + std::to_string(preset.line + offset) + ": in preset '" + preset.name + "': " + e.what();
-        break;
-      }
-    }
-    if (!error.empty()) break;
+  try {
+    for (const auto& preset : presets) applyPreset(preset, reg);
+  } catch (const ParamError&) {
+    reg.restore(saved);
+    throw;
   }
-  for (const auto& [name, value] : saved) reg.set(name, value);
-  if (!error.empty()) throw ParamError(error);
+  reg.restore(saved);
 }
 
 const Preset* PresetFile::find(const std::string& name) const {
@@ -303,11 +413,23 @@ void PresetFile::apply(const std::string& name, ParamRegistry& registry) const {
     throw ParamError("unknown preset '" + name + "'" + (path.empty() ? "" : " in " + path) +
                      "; valid: " + (presets.empty() ? std::string("(none)") : join(names())));
   }
-  registry.resetDefaults();
-  for (const auto& [param, value] : preset->values) {
-    try {
-      registry.set(param, value);
-    } catch (const ParamError& e) { throw ParamError(path + ": preset '" + name + "': " + e.what()); }
+  applyPreset(*preset, registry);
+}
+
+void PresetFile::applyPreset(const Preset& p, ParamRegistry& registry) const {
+  const Preset* preset = &p;
+  ParamValues values;
+  for (const Param& p : registry.params()) values.emplace_back(p.name, p.defaultValue);
+  const ParamValues own = valuesOf(*preset);
+  values.insert(values.end(), own.begin(), own.end());
+  std::size_t failed = 0;
+  try {
+    registry.setAll(values, &failed);  // the defaults, then the preset: one change, checked once
+  } catch (const ParamCheckError& e) {
+    throw ParamCheckError(presetError(path, *preset, lineOfCheck(*preset, e), e.what()).what(), e.names);
+  } catch (const ParamError& e) {
+    const std::size_t defaults = values.size() - own.size();
+    throw presetError(path, *preset, failed >= defaults ? preset->values[failed - defaults].line : 0, e.what());
   }
 }
 
@@ -315,7 +437,7 @@ void PresetFile::capture(const std::string& name, const ParamRegistry& registry)
   Preset p{name, {}, 0};
   for (const auto& param : registry.params()) {
     const std::string v = registry.get(param.name);
-    if (v != param.defaultValue) p.values.push_back({param.name, v});
+    if (v != param.defaultValue) p.values.push_back({param.name, v, 0});
   }
   for (auto& existing : presets) {
     if (existing.name == name) {
@@ -334,8 +456,10 @@ void PresetFile::save(const std::string& target) const {
          "# defaults. Saved from the lesson's UI; edit freely ([name], then name = value lines).\n";
   for (const auto& p : presets) {
     out << "\n[" << p.name << "]\n";
-    for (const auto& [k, v] : p.values) out << k << " = " << v << '\n';
+    for (const PresetValue& v : p.values) out << v.name << " = " << v.value << '\n';
   }
+  out.close();
+  if (!out) throw ParamError("cannot write presets to " + target + ": " + std::strerror(errno));
 }
 
 }  // namespace shadowlab

@@ -1,6 +1,7 @@
 #include "gl/caps.hpp"
 
 #include <cstdlib>
+#include <algorithm>
 
 #include "gl/gl.hpp"
 
@@ -35,6 +36,9 @@ const Caps& caps() {
   c.softwareRenderer =
       c.renderer.find("llvmpipe") != std::string::npos || c.renderer.find("softpipe") != std::string::npos;
   if (const char* s = std::getenv("SHADOWLAB_SOFTWARE_RENDERER")) c.softwareRenderer = std::string(s) == "1";
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &c.maxTextureSize);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &c.maxRenderbufferSize);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, c.maxViewport);
   g_caps = c;
   g_detected = true;
   return g_caps;
@@ -44,6 +48,25 @@ void resetCaps() { g_detected = false; }
 
 std::string Caps::summary() const {
   return renderer + " | GL " + std::to_string(major) + "." + std::to_string(minor) + " (" + version + ")";
+}
+
+std::string framebufferSizeProblem(int width, int height) {
+  const Caps& c = caps();
+  const int maxWidth = std::min({c.maxTextureSize, c.maxRenderbufferSize, c.maxViewport[0]});
+  const int maxHeight = std::min({c.maxTextureSize, c.maxRenderbufferSize, c.maxViewport[1]});
+  if (width <= maxWidth && height <= maxHeight) return "";
+  return "a " + std::to_string(width) + "x" + std::to_string(height) + " framebuffer exceeds this OpenGL's limits (" +
+         c.renderer + "): at most " + std::to_string(maxWidth) + "x" + std::to_string(maxHeight) +
+         " (GL_MAX_TEXTURE_SIZE " + std::to_string(c.maxTextureSize) + ", GL_MAX_RENDERBUFFER_SIZE " +
+         std::to_string(c.maxRenderbufferSize) + ", GL_MAX_VIEWPORT_DIMS " + std::to_string(c.maxViewport[0]) + "x" +
+         std::to_string(c.maxViewport[1]) + ")";
+}
+
+std::string textureSizeProblem(int width, int height) {
+  const int limit = caps().maxTextureSize;
+  if (width <= limit && height <= limit) return "";
+  return std::to_string(width) + "x" + std::to_string(height) + " is larger than this OpenGL's GL_MAX_TEXTURE_SIZE " +
+         std::to_string(limit) + " (" + caps().renderer + ")";
 }
 
 }  // namespace shadowlab::gl

@@ -18,6 +18,9 @@ struct Caps {
   // Mesa's llvmpipe / softpipe (or SHADOWLAB_SOFTWARE_RENDERER=1): the CPU rasterises, deferred, so
   // timestamps miss the work, and an interactive window needs the frame budget.
   bool softwareRenderer = false;
+  int maxTextureSize = 0;   // GL_MAX_TEXTURE_SIZE: render targets and textures, a side
+  int maxRenderbufferSize = 0;
+  int maxViewport[2] = {0, 0};  // GL_MAX_VIEWPORT_DIMS
   bool atLeast(int ma, int mi) const { return major > ma || (major == ma && minor >= mi); }
   std::string summary() const;  // one line for the UI header and logs
 };
@@ -25,5 +28,11 @@ struct Caps {
 // Detected once per context (call after the context is current); later calls return the cache.
 const Caps& caps();
 void resetCaps();  // a new context was created
+
+// "" when a width x height frame fits this context's limits (texture, renderbuffer, viewport),
+// else one line naming the size, the limit it passes and the largest size that fits.
+std::string framebufferSizeProblem(int width, int height);
+// "" when a texture of width x height fits GL_MAX_TEXTURE_SIZE, else one line saying so.
+std::string textureSizeProblem(int width, int height);
 
 }  // namespace shadowlab::gl

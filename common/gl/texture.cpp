@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 #include "core/paths.hpp"
 #include "gl/caps.hpp"
@@ -11,6 +12,11 @@ namespace shadowlab::gl {
 Texture uploadTexture(const Image8& image, const std::string& label, bool mipmaps) {
   static constexpr GLenum kFormats[] = {0, GL_RED, GL_RG, GL_RGB, GL_RGBA};
   static constexpr GLenum kInternal[] = {0, GL_R8, GL_RG8, GL_SRGB8, GL_SRGB8_ALPHA8};
+  // Past the limit glTexImage2D fails with GL_INVALID_VALUE and the texture samples black.
+  if (const std::string problem = textureSizeProblem(image.width, image.height); !problem.empty())
+    throw std::runtime_error("texture '" + label + "': " + problem);
+  if (image.channels < 1 || image.channels > 4)
+    throw std::runtime_error("texture '" + label + "': " + std::to_string(image.channels) + " channels (1 to 4)");
   Texture tex = makeTexture(GL_TEXTURE_2D, label);
   glBindTexture(GL_TEXTURE_2D, tex.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

@@ -35,6 +35,8 @@ std::vector<std::uint8_t> rgba8(const ImageF& img) { return sampling::toImage8(i
 
 Texture uploadMipChain(const std::vector<ImageF>& chain, const std::string& label) {
   if (chain.empty()) throw std::invalid_argument("uploadMipChain: empty chain for " + label);
+  if (const std::string problem = textureSizeProblem(chain[0].width, chain[0].height); !problem.empty())
+    throw std::runtime_error("texture '" + label + "': " + problem);
   Texture tex = makeTexture(GL_TEXTURE_2D, label);
   glBindTexture(GL_TEXTURE_2D, tex.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

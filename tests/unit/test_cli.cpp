@@ -40,13 +40,25 @@ TEST_CASE("cli: bad input is one line naming it and the valid choices") {
   CHECK(unknown.rfind("unknown flag '--headles'; valid: --headless, --size", 0) == 0);
   CHECK(unknown.find('\n') == std::string::npos);
   CHECK(errorOf({"--size", "640"}) == "--size: '640' is not WxH, e.g. 1280x720");
-  CHECK(errorOf({"--size", "0x10"}) == "--size: '0' is not a whole number in [16, 16384]");
+  CHECK(errorOf({"--size", "0x10"}) == "--size: '0' is not a whole number in [16, 8192]");
+  CHECK(errorOf({"--size", "16384x16384"}) == "--size: '16384' is not a whole number in [16, 8192]");
   CHECK(errorOf({"--frames", "-2"}) == "--frames: '-2' is not a whole number in [1, 100000000]");
   CHECK(errorOf({"--frames"}) == "--frames needs a value: --frames N");
   CHECK(errorOf({"--set", "ambient"}) == "--set: 'ambient' is not NAME=VALUE");
   CHECK(errorOf({"--ui-scale", "9"}) == "--ui-scale: '9' is not a number in [0.5, 4]");
   CHECK(errorOf({"--headless=1"}) == "--headless takes no value");
   CHECK(errorOf({"--record", "a", "--replay", "b"}) == "--record and --replay exclude each other");
+}
+
+TEST_CASE("cli: an empty value is an error, never a silently dropped output") {
+  CHECK(errorOf({"--screenshot="}) == "--screenshot needs a value, got an empty one: --screenshot FILE");
+  CHECK(errorOf({"--measure="}) == "--measure needs a value, got an empty one: --measure FILE");
+  CHECK(errorOf({"--replay="}) == "--replay needs a value, got an empty one: --replay FILE[@T]");
+  CHECK(errorOf({"--preset="}) == "--preset needs a value, got an empty one: --preset NAME");
+  CHECK(errorOf({"--bench", ""}) == "--bench needs a value, got an empty one: --bench FILE");
+  CHECK(errorOf({"--record="}) == "--record needs a value, got an empty one: --record FILE");
+  CHECK(errorOf({"--set="}) == "--set needs a value, got an empty one: --set NAME=VALUE");
+  CHECK(errorOf({"--size="}) == "--size needs a value, got an empty one: --size WxH");
 }
 
 TEST_CASE("cli: help lists every flag") {

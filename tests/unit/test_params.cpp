@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 
 #include "core/params.hpp"
@@ -133,10 +134,132 @@ TEST_CASE("presets: malformed files name the file and the line") {
   CHECK(errorOf("[a]\nambient 0.5\n", false) == path + ":2: expected 'name = value' or [preset], got 'ambient 0.5'");
   CHECK(errorOf("ambient = 1\n", false).rfind(path + ":1: ", 0) == 0);
   CHECK(errorOf("[a\n", false).rfind(path + ":1: ", 0) == 0);
-  CHECK(errorOf("[a]\n[a]\n", false) == path + ":2: preset 'a' is defined twice");
+  CHECK(errorOf("[a]\n[a]\n", false) == path + ":2: preset 'a' is defined twice (first on line 1)");
   CHECK(
       errorOf("[a]\nambient = 0.5\nwhat = 1\n", true).rfind(path + ":3: in preset 'a': unknown parameter 'what'", 0) ==
       0);
   CHECK(f.p.ambient == doctest::Approx(0.1f));  // validation leaves values alone
   std::remove(path.c_str());
+}
+
+TEST_CASE("presets: errors name the value's own line, whatever comments and blank lines lie between") {
+  Fixture f;
+  const std::string path = tempPath("lines.txt");
+  { std::ofstream(path) << "[a]\n# a comment\n\nambient = 0.5\n   \n# another\nsamples = 999\n[b]\nmode = lit\n"; }
+  const PresetFile file = PresetFile::load(path);
+  REQUIRE(file.presets.size() == 2);
+  CHECK(file.presets[0].values[0].line == 4);
+  CHECK(file.presets[0].values[1].line == 7);
+  CHECK(file.presets[1].values[0].line == 9);
+  try {
+    file.validate(f.reg);
+    FAIL("an out-of-range preset value was accepted");
+  } catch (const ParamError& e) {
+    CHECK(std::string(e.what()) == path + ":7: in preset 'a': bad value '999' for samples (int); valid: [1, 64]");
+  }
+  try {
+    file.apply("a", f.reg);
+    FAIL("an out-of-range preset value was applied");
+  } catch (const ParamError& e) { CHECK(std::string(e.what()).rfind(path + ":7: in preset 'a': ", 0) == 0); }
+  CHECK(f.p.ambient == doctest::Approx(0.1f));  // a refused preset changes nothing
+  std::remove(path.c_str());
+}
+
+TEST_CASE("presets: 100,000 presets load and validate (duplicates are found without a quadratic scan)") {
+  Fixture f;
+  const std::string path = tempPath("many.txt");
+  {
+    std::ofstream out(path);
+    for (int i = 0; i < 100000; ++i) out << "[p" << i << "]\nsamples = " << 1 + i % 64 << "\n";
+    out << "[p77]\n";
+  }
+  try {
+    PresetFile::load(path);
+    FAIL("a duplicate preset was accepted");
+  } catch (const ParamError& e) {
+    CHECK(std::string(e.what()) == path + ":200001: preset 'p77' is defined twice (first on line 155)");
+  }
+  {
+    std::ofstream out(path);
+    for (int i = 0; i < 100000; ++i) out << "[p" << i << "]\nsamples = " << 1 + i % 64 << "\n";
+  }
+  const PresetFile file = PresetFile::load(path);
+  CHECK(file.presets.size() == 100000);
+  file.validate(f.reg);
+  file.apply("p99999", f.reg);
+  CHECK(f.p.samples == 1 + 99999 % 64);
+  std::remove(path.c_str());
+}
+
+namespace {
+// Two values that are each in range but together degenerate: lo must stay below hi.
+struct Pair {
+  float lo = 1, hi = 2;
+  ParamRegistry reg;
+  Pair() {
+    reg.add("lo", &lo, 0, 10, "lower");
+    reg.add("hi", &hi, 0, 10, "upper");
+    reg.addCheck({"lo", "hi"}, [this](const ParamRegistry& r) {
+      return lo < hi ? std::string() : "lo = " + r.get("lo") + " is not below hi = " + r.get("hi");
+    });
+  }
+  std::string error(const std::function<void()>& change) {
+    try {
+      change();
+    } catch (const ParamError& e) { return e.what(); }
+    return "no error";
+  }
+};
+}  // namespace
+
+TEST_CASE("params: a check refuses a change, names the values, and keeps the last good value exactly") {
+  Pair p;
+  p.reg.set("lo", "0.1");
+  p.reg.set("hi", "0.30000001");
+  const float good = p.hi;
+  const unsigned revision = p.reg.revision();
+  CHECK(p.error([&] { p.reg.set("lo", "5"); }) == "lo = 5 is not below hi = 0.3");
+  CHECK(p.lo == 0.1f);
+  CHECK(p.error([&] { p.reg.set("hi", "0.05"); }) == "lo = 0.1 is not below hi = 0.05");
+  CHECK(p.hi == good);                  // restored bit for bit, not through the six-digit text form
+  CHECK(p.reg.revision() == revision);  // a refused change is no change
+  CHECK_NOTHROW(p.reg.validate());
+  p.reg.set("lo", "0.2");
+  CHECK(p.reg.revision() == revision + 1);
+  CHECK_THROWS_AS(p.reg.addCheck({"nope"}, [](const ParamRegistry&) { return std::string(); }), ParamError);
+}
+
+TEST_CASE("params: setAll and assignAll check once at the end, so order does not matter; errors undo all") {
+  Pair p;
+  // Moving both above the old hi: one at a time, "lo = 5" would fail first.
+  p.reg.assignAll({"lo=5", "hi=6"});
+  CHECK(p.lo == 5.0f);
+  CHECK(p.hi == 6.0f);
+  CHECK(p.error([&] { p.reg.assignAll({"hi=1", "lo=0.5", "lo=3"}); }) == "lo = 3 is not below hi = 1");
+  CHECK(p.lo == 5.0f);
+  CHECK(p.hi == 6.0f);
+  std::size_t failed = 99;
+  CHECK(p.error([&] { p.reg.setAll({{"lo", "1"}, {"hi", "11"}}, &failed); }).find("bad value '11' for hi") == 0);
+  CHECK(failed == 1);
+  CHECK(p.lo == 5.0f);
+  p.reg.resetDefaults();
+  CHECK(p.lo == 1.0f);
+  CHECK(p.hi == 2.0f);
+  const auto saved = p.reg.snapshot();
+  p.reg.assignAll({"hi=9", "lo=8"});
+  p.reg.restore(saved);
+  CHECK(p.lo == 1.0f);
+}
+
+TEST_CASE("presets: a check that fails names the preset's line that set the value, at validate and apply") {
+  Pair p;
+  const std::string path = tempPath("checked.txt");
+  { std::ofstream(path) << "[ok]\nlo = 3\nhi = 4\n\n[bad]\n# lo alone is fine\nhi = 0.5\n\nlo = 0.7\n[none]\n"; }
+  const PresetFile file = PresetFile::load(path);
+  const std::string expected = path + ":9: in preset 'bad': lo = 0.7 is not below hi = 0.5";
+  CHECK(p.error([&] { file.validate(p.reg); }) == expected);
+  CHECK(p.error([&] { file.apply("bad", p.reg); }) == expected);
+  CHECK(p.lo == 1.0f);
+  file.apply("ok", p.reg);
+  CHECK(p.hi == 4.0f);
 }
