@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libglfw3-dev libglm-dev libimgui-dev libstb-dev doctest-dev libepoxy-dev
+  libglfw3-dev libglm-dev libimgui-dev libstb-dev libspng-dev doctest-dev libepoxy-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libgles-dev
   libembree-dev libtinyobjloader-dev nlohmann-json3-dev
   glslang-tools xvfb xauth

@@ -276,7 +276,7 @@ class Runner {
         if (!isReloadKey(key)) {
           try {
             applyHotkey(params_, keyName(key));
-          } catch (const ParamError& e) { status_ = std::string("refused: ") + e.what(); }
+          } catch (const ParamError& e) { status_ = e.what(); }
           continue;
         }
         for (gl::Program* p : gl::livePrograms()) p->build();
@@ -449,7 +449,13 @@ class Runner {
     // Let outstanding timer queries resolve so the benchmark has every frame.
     glFinish();
     lesson_.timers.collect();
-    if (bench_.isOpen()) bench_.flush(lesson_.timers);
+    int status = 0;
+    try {
+      if (bench_.isOpen()) bench_.flush(lesson_.timers), bench_.close();
+    } catch (const std::exception& e) {  // a full disk: the CSV is incomplete
+      std::cerr << info_.name << ": " << e.what() << '\n';
+      status = 1;
+    }
     gl::checkErrors("exit");
     const int glErrors = gl::errorCount();
     if (uiVisible_) ui_.shutdown();
@@ -458,7 +464,7 @@ class Runner {
       std::cerr << info_.name << ": " << glErrors << " OpenGL error(s); first: " << gl::errorMessages().front() << '\n';
       if (cl_.strictGl) return 3;
     }
-    return 0;
+    return status;
   }
 
   // Declaration order matters: members are destroyed bottom-up, so everything holding GL objects

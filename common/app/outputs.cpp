@@ -1,5 +1,7 @@
 #include "app/outputs.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 
@@ -14,6 +16,12 @@ namespace {
 void createParent(const std::string& path) {
   const std::filesystem::path p(path);
   if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+}
+
+// Buffered streams report a full disk only when flushed: close and look, naming the file.
+void closeChecked(std::ofstream& out, const std::string& flag, const std::string& path) {
+  out.close();
+  if (!out) throw std::runtime_error(flag + ": cannot write " + path + ": " + std::strerror(errno));
 }
 
 }  // namespace
@@ -31,11 +39,14 @@ void saveScreenshot(const std::string& path, unsigned fbo, int w, int h) {
 }
 
 bool BenchLog::open(const std::string& path) {
+  path_ = path;
   out_.open(path);
   if (!out_) return false;
   out_ << "frame,pass,gpu_ms,cpu_ms,frame_ms,draw_calls,render_scale\n";
   return true;
 }
+
+void BenchLog::close() { closeChecked(out_, "--bench", path_); }
 
 void BenchLog::frame(int index, double frameMs, int drawCalls, float renderScale, gl::GpuTimers& timers) {
   frames_.resize(std::size_t(index) + 1);
@@ -103,7 +114,7 @@ void writeMeasurementJson(const std::string& path, const LessonInfo& info, const
   createParent(path);
   std::ofstream out(path);
   out << j.dump(2) << '\n';
-  if (!out) throw std::runtime_error("--measure: cannot write " + path);
+  closeChecked(out, "--measure", path);  // before the heatmaps: nothing lands beside a file that failed
   const std::string stem =
       path.size() > 5 && path.substr(path.size() - 5) == ".json" ? path.substr(0, path.size() - 5) : path;
   savePng(stem + "_error.png", r.errorHeatmap);

@@ -26,6 +26,8 @@ class BenchLog {
   // A frame's time, its draw calls and the frame budget's render scale (1: the requested size).
   void frame(int index, double frameMs, int drawCalls, float renderScale, gl::GpuTimers& timers);
   void flush(gl::GpuTimers& timers);
+  // Writes what is left; throws std::runtime_error naming the file when any write failed.
+  void close();
 
  private:
   struct FrameRow {
@@ -34,6 +36,7 @@ class BenchLog {
     float scale = 1;
   };
   std::ofstream out_;
+  std::string path_;
   std::vector<FrameRow> frames_;
 };
 

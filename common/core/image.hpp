@@ -1,6 +1,7 @@
 #pragma once
 // Images on the CPU: 8-bit for files and screenshots, float for measurements. Row 0 is the TOP row
 // (as in PNG files); GL read-backs are flipped on the way in (common/gl).
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,9 +22,22 @@ struct ImageF {
   float at(int x, int y, int c = 0) const { return data[(std::size_t(y) * width + x) * channels + c]; }
 };
 
-// PNG/JPEG/... through stb_image. Throws std::runtime_error naming the path and the reason.
+// Images the course reads are PNG (textures, screenshots, golden images) and nothing else: the
+// signature is checked before anything is decoded, so a JPEG, TGA or PIC named .png is refused
+// instead of being decoded by a format guess. Bounds checked before decoding (from the header):
+inline constexpr int kMaxImageSide = 16384;                           // pixels, a side
+inline constexpr std::size_t kMaxImagePixels = std::size_t(1) << 26;  // 64 Mpixels: 256 MiB as RGBA
+
+// PNG through libspng (a decoder written for untrusted input): every chunk's CRC and the zlib
+// Adler-32 are verified, a 0-sized or truncated image is an error. `desiredChannels` 1 to 4
+// converts (1: luma, 2: luma + alpha, 3: RGB, 4: RGBA, opaque where the file has no alpha); 0
+// keeps the file's own (a palette or tRNS counts as alpha). Throws std::runtime_error
+// "cannot load image 'PATH': reason".
 Image8 loadImage(const std::string& path, int desiredChannels = 4);
-// PNG through stb_image_write. Throws std::runtime_error naming the path on failure.
+// The same on bytes in memory; `name` is what the message calls them.
+Image8 decodePng(const std::uint8_t* bytes, std::size_t size, int desiredChannels, const std::string& name);
+// PNG through stb_image_write. Throws std::runtime_error naming the path and the reason on any
+// failure, including a full disk (--screenshot /dev/full).
 void savePng(const std::string& path, const Image8& image);
 
 struct ImageDiff {
