@@ -182,23 +182,20 @@ class Runner {
   // Recorded camera and light paths (--replay FILE[@T]) and the --bench CSV.
   Exit openOutputs() {
     if (!cl_.replay.empty()) {
-      std::string file = cl_.replay;
-      if (const auto at = file.rfind('@'); at != std::string::npos) {
-        char* end = nullptr;
-        replayAt_ = std::strtod(file.c_str() + at + 1, &end);
-        if (end == file.c_str() + at + 1 || *end != '\0' || !(replayAt_ >= 0)) {
-          std::cerr << info_.name << ": --replay " << cl_.replay << ": '" << file.substr(at + 1)
-                    << "' is not a time >= 0\n";
-          return 2;
-        }
-        file = file.substr(0, at);
-      }
+      measure::ReplaySpec spec;
       try {
-        replay_ = measure::CameraLightPath::load(file);
-        if (replay_.empty()) throw std::runtime_error(file + ": the path has no keys");
+        spec = measure::parseReplaySpec(cl_.replay);
+      } catch (const std::invalid_argument& e) {
+        std::cerr << info_.name << ": --replay " << cl_.replay << ": " << e.what() << '\n';
+        return 2;
+      }
+      replayAt_ = spec.holdAt;
+      try {  // a missing or malformed path file: exit 1, naming file:line
+        replay_ = measure::CameraLightPath::load(spec.file);
+        if (replay_.empty()) throw std::runtime_error(spec.file + ": the path has no keys");
       } catch (const std::exception& e) {
         std::cerr << info_.name << ": --replay: " << e.what() << '\n';
-        return 2;
+        return 1;
       }
     }
     if (!cl_.bench.empty()) {

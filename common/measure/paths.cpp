@@ -1,8 +1,12 @@
 #include "measure/paths.hpp"
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -27,25 +31,52 @@ glm::vec3 slerp(glm::vec3 a, glm::vec3 b, float t) {
   return glm::normalize((std::sin((1 - t) * angle) / s) * a + (std::sin(t * angle) / s) * b);
 }
 
-std::string vecText(const glm::vec3& v) {
+std::string vecText(const glm::dvec3& v) {
   std::ostringstream o;
   o << "(" << v.x << ", " << v.y << ", " << v.z << ")";
   return o.str();
 }
 
+// Unit length for any finite non-zero vector: scaled by its largest component first, so neither
+// 1e20 (whose square overflows a float) nor 1e-30 (whose square underflows) loses it.
+glm::vec3 robustNormalize(const glm::dvec3& v) {
+  const double scale = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  const glm::dvec3 s = v / scale;
+  return glm::vec3(s / glm::length(s));
+}
+
+bool withinRange(const glm::dvec3& v) {
+  return glm::all(glm::lessThanEqual(glm::abs(v), glm::dvec3(kMaxPathCoordinate)));
+}
+
+// One key's checks (CameraLightPath::add for floats, read() for the file's doubles).
+void validateKey(double time, const glm::dvec3& camera, const glm::dvec3& target, const glm::dvec3& light,
+                 const glm::dvec3& direction) {
+  if (!std::isfinite(time))
+    throw std::invalid_argument("CameraLightPath: key time " + std::to_string(time) + " is not finite");
+  const std::pair<const char*, const glm::dvec3*> positions[] = {
+      {"camera position", &camera}, {"camera target", &target}, {"light position", &light}};
+  for (const auto& [what, v] : positions)
+    if (!withinRange(*v))
+      throw std::invalid_argument(std::string(what) + " " + vecText(*v) + " is outside +-" +
+                                  std::to_string(int(kMaxPathCoordinate)));
+  if (!(glm::length(target - camera) > 1e-6))
+    throw std::invalid_argument("the camera at " + vecText(camera) + " is at its target " + vecText(target) +
+                                ": a view needs a direction");
+  const double scale = std::max({std::abs(direction.x), std::abs(direction.y), std::abs(direction.z)});
+  if (!(scale > 0.0) || !std::isfinite(scale))
+    throw std::invalid_argument("light direction " + vecText(direction) + " is not a direction");
+}
+
 }  // namespace
 
 void CameraLightPath::add(const PathKey& key) {
-  if (!std::isfinite(key.time))
-    throw std::invalid_argument("CameraLightPath: key time " + std::to_string(key.time) + " is not finite");
+  validateKey(key.time, key.cameraPosition, key.cameraTarget, key.lightPosition, key.lightDirection);
   if (!keys_.empty() && !(key.time > keys_.back().time))
     throw std::invalid_argument("CameraLightPath: key time " + std::to_string(key.time) +
                                 " is not after the previous key's " + std::to_string(keys_.back().time));
-  if (!(glm::length(key.lightDirection) > 0.0f))
-    throw std::invalid_argument("CameraLightPath: light direction " + vecText(key.lightDirection) +
-                                " is not a direction");
   PathKey k = key;
-  k.lightDirection = glm::normalize(key.lightDirection);
+  k.lightDirection = robustNormalize(key.lightDirection);
   keys_.push_back(k);
 }
 
@@ -107,6 +138,29 @@ void CameraLightPath::save(const std::string& path) const {
   if (!file) throw std::runtime_error(path + ": write failed");
 }
 
+namespace {
+// A finite decimal number and nothing else ("1x", "nan", "inf", "0x10" and "" are not).
+bool parseFinite(const std::string& token, double& out) {
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, out);
+  return ec == std::errc() && ptr == end && std::isfinite(out);
+}
+
+// The key's 13 numbers, each finite: time, camera, target, light position, light direction.
+std::array<double, 13> keyNumbers(std::istringstream& words, const std::function<void(const std::string&)>& fail) {
+  std::array<double, 13> values{};
+  for (int i = 0; i < 13; ++i) {
+    std::string token;
+    if (!(words >> token)) fail("key has " + std::to_string(i) + " numbers, expected 13 (time and four xyz triples)");
+    if (!parseFinite(token, values[std::size_t(i)]))
+      fail("'" + token + "' is not a finite number (field " + std::to_string(i + 1) + ")");
+  }
+  std::string extra;
+  if (words >> extra) fail("unexpected '" + extra + "' after 13 numbers");
+  return values;
+}
+}  // namespace
+
 CameraLightPath CameraLightPath::read(std::istream& in, const std::string& name) {
   CameraLightPath path;
   std::string line;
@@ -122,33 +176,25 @@ CameraLightPath CameraLightPath::read(std::istream& in, const std::string& name)
     std::string word;
     if (!(words >> word)) continue;
     if (!header) {
-      int version = 0;
-      if (word != "shadowlab-path" || !(words >> version)) fail("expected 'shadowlab-path 1', got '" + line + "'");
-      if (version != 1) fail("unsupported path version " + std::to_string(version));
+      std::string version, extra;
+      words >> version;
+      if (word != "shadowlab-path" || version.empty() || (words >> extra))
+        fail("expected 'shadowlab-path 1', got '" + line + "'");
+      if (version != "1") fail("unsupported path version '" + version + "' (this reads version 1)");
       header = true;
       continue;
     }
     if (word != "key") fail("unknown record '" + word + "' (expected 'key')");
-    // Parse numbers ourselves so "nan", "1x" and friends are rejected with the line.
-    double values[13];
-    for (int i = 0; i < 13; ++i) {
-      std::string token;
-      if (!(words >> token)) fail("key has " + std::to_string(i) + " numbers, expected 13 (time and four xyz triples)");
-      char* end = nullptr;
-      values[i] = std::strtod(token.c_str(), &end);
-      if (end == token.c_str() || *end != '\0' || !std::isfinite(values[i]))
-        fail("'" + token + "' is not a finite number (field " + std::to_string(i + 1) + ")");
-    }
-    std::string extra;
-    if (words >> extra) fail("unexpected '" + extra + "' after 13 numbers");
+    const std::array<double, 13> v = keyNumbers(words, fail);
+    auto vec = [&](std::size_t at) { return glm::dvec3(v[at], v[at + 1], v[at + 2]); };
     PathKey k;
-    k.time = values[0];
-    auto vec = [&](int at) { return glm::vec3(float(values[at]), float(values[at + 1]), float(values[at + 2])); };
-    k.cameraPosition = vec(1);
-    k.cameraTarget = vec(4);
-    k.lightPosition = vec(7);
-    k.lightDirection = vec(10);
+    k.time = v[0];
     try {
+      validateKey(v[0], vec(1), vec(4), vec(7), vec(10));  // in double: 1e300 never becomes inf
+      k.cameraPosition = vec(1);
+      k.cameraTarget = vec(4);
+      k.lightPosition = vec(7);
+      k.lightDirection = robustNormalize(vec(10));
       path.add(k);
     } catch (const std::invalid_argument& e) { fail(e.what()); }
   }
@@ -163,6 +209,17 @@ CameraLightPath CameraLightPath::load(const std::string& path) {
   std::ifstream file(path);
   if (!file) throw std::runtime_error(path + ": cannot open for reading");
   return read(file, path);
+}
+
+ReplaySpec parseReplaySpec(const std::string& value) {
+  std::error_code ec;
+  const auto at = value.rfind('@');
+  if (at == std::string::npos || std::filesystem::exists(value, ec)) return {value, -1.0};
+  const std::string time = value.substr(at + 1);
+  double t = 0.0;
+  if (!parseFinite(time, t) || t < 0.0)
+    throw std::invalid_argument("'" + time + "' after '@' is not a time >= 0 in seconds (FILE@T holds the path at T)");
+  return {value.substr(0, at), t};
 }
 
 }  // namespace shadowlab::measure

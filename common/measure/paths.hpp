@@ -6,7 +6,9 @@
 //   shadowlab-path 1
 //   key <time> <camera position xyz> <camera target xyz> <light position xyz> <light direction xyz>
 // Times in seconds, strictly increasing. The light direction is the direction light travels
-// (Light::direction) and must not be zero; it is normalised on load.
+// (Light::direction) and must not be zero; it is normalised on load (in double, so 1e300 and
+// 1e-30 work). Positions and targets lie within +-kMaxPathCoordinate, and the camera is not at its
+// target. The header is exactly 'shadowlab-path 1'.
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -14,6 +16,9 @@
 #include <glm/glm.hpp>
 
 namespace shadowlab::measure {
+
+// Past this a float position has lost the precision a camera needs (and 1e300 is inf).
+inline constexpr double kMaxPathCoordinate = 1e6;
 
 struct PathKey {
   double time = 0.0;
@@ -26,7 +31,8 @@ struct PathKey {
 
 class CameraLightPath {
  public:
-  // Appends a key; throws std::invalid_argument unless its time is after the last key's and the
+  // Appends a key; throws std::invalid_argument unless its time is finite and after the last
+  // key's, its positions are within kMaxPathCoordinate, the camera is not at its target and the
   // light direction is non-zero (naming the values).
   void add(const PathKey& key);
   const std::vector<PathKey>& keys() const { return keys_; }
@@ -49,5 +55,14 @@ class CameraLightPath {
  private:
   std::vector<PathKey> keys_;
 };
+
+// --replay FILE[@T]: the file, and the time to hold (-1: play the whole path). A value naming an
+// existing file is that file, '@' and all; else "@T" after the last '@' is the time, a finite
+// number >= 0. Throws std::invalid_argument "'T' after '@' is not a time >= 0 in seconds".
+struct ReplaySpec {
+  std::string file;
+  double holdAt = -1.0;
+};
+ReplaySpec parseReplaySpec(const std::string& value);
 
 }  // namespace shadowlab::measure

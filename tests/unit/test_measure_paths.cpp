@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -104,7 +105,79 @@ TEST_CASE("measure.paths: bad lines are reported with file name and line number"
   CHECK(errorOf(head + good + "key 1  0 2 8  0 0 0  0 8 0  0 0 0\n").rfind("walk.path:5: ", 0) == 0);   // no dir
   CHECK(errorOf(head + "camera 1 2 3\n").rfind("walk.path:4: unknown record 'camera'", 0) == 0);
   CHECK(errorOf("key 0 0 0 0 0 0 0 0 0 0 0 -1 0\n").rfind("walk.path:1: expected 'shadowlab-path 1'", 0) == 0);
-  CHECK(errorOf("shadowlab-path 2\n").rfind("walk.path:1: unsupported path version 2", 0) == 0);
+  CHECK(errorOf("shadowlab-path 2\n").rfind("walk.path:1: unsupported path version '2'", 0) == 0);
   CHECK(errorOf("").rfind("walk.path:1: empty file", 0) == 0);
   CHECK(errorOf(head + "key 1 nan 2 8 0 0 0 0 8 0 0 -1 0\n").rfind("walk.path:4: 'nan'", 0) == 0);
+}
+
+TEST_CASE("measure.paths: the fuzzing finds are refused naming file:line (they crashed or rendered nothing)") {
+  auto errorOf = [](const std::string& text) {
+    std::istringstream in(text);
+    try {
+      CameraLightPath::read(in, "e.path");
+    } catch (const std::runtime_error& e) { return std::string(e.what()); }
+    return std::string("no error");
+  };
+  const std::string head = "shadowlab-path 1\n";
+  // The eye at its target: OrbitCamera::lookFrom threw out of every lesson (exit 134).
+  CHECK(errorOf(head + "key 0 0 0 0 0 0 0 0 8 0 0 -1 0\n") ==
+        "e.path:2: the camera at (0, 0, 0) is at its target (0, 0, 0): a view needs a direction");
+  // 1e300 became inf in a float: a blank frame and exit 0.
+  CHECK(errorOf(head + "key 0 1e300 2 8 0 0 0 0 8 0 0 -1 0\n") ==
+        "e.path:2: camera position (1e+300, 2, 8) is outside +-1000000");
+  CHECK(errorOf(head + "key 0 0 2 8 0 0 0 0 8 1e7 0 -1 0\n") ==
+        "e.path:2: light position (0, 8, 1e+07) is outside +-1000000");
+  // Headers: only exactly "shadowlab-path 1".
+  CHECK(errorOf("shadowlab-path 1.5\n") == "e.path:1: unsupported path version '1.5' (this reads version 1)");
+  CHECK(errorOf("shadowlab-path 1 junk\n") == "e.path:1: expected 'shadowlab-path 1', got 'shadowlab-path 1 junk'");
+  CHECK(errorOf("shadowlab-path\n") == "e.path:1: expected 'shadowlab-path 1', got 'shadowlab-path'");
+  // Numbers: decimal and finite, nothing else.
+  for (const char* bad : {"inf", "-inf", "nan", "1e999", "0x10", "+1", "1,5", "--1"}) {
+    INFO(bad);
+    CHECK(errorOf(head + "key " + bad + " 0 2 8 0 0 0 0 8 0 0 -1 0\n") ==
+          "e.path:2: '" + std::string(bad) + "' is not a finite number (field 1)");
+  }
+  CHECK(errorOf(head + "key 0 0 2 8 0 0 0 0 8 0 0 0 0\n") == "e.path:2: light direction (0, 0, 0) is not a direction");
+}
+
+TEST_CASE("measure.paths: huge and tiny light directions normalise (in float, 1e20 gave 0 and 1e-30 NaN)") {
+  for (const char* direction : {"1e20 0 0", "1e300 0 0", "1e-30 0 0", "1e-300 0 0", "3e38 3e38 0"}) {
+    INFO(direction);
+    std::istringstream in("shadowlab-path 1\nkey 0 0 2 8 0 0 0 0 8 0 " + std::string(direction) + "\n");
+    const CameraLightPath path = CameraLightPath::read(in, "d.path");
+    const glm::vec3 d = path.keys()[0].lightDirection;
+    CHECK(glm::length(d) == doctest::Approx(1.0));
+    CHECK(d.x > 0.7f);
+  }
+  PathKey k;
+  k.lightDirection = {1e-30f, 0, 0};  // add() on floats as well: what a recording passes
+  CameraLightPath path;
+  path.add(k);
+  CHECK(path.keys()[0].lightDirection == glm::vec3(1, 0, 0));
+  k.time = 1;
+  k.cameraTarget = k.cameraPosition;
+  CHECK_THROWS_WITH_AS(path.add(k), doctest::Contains("is at its target"), std::invalid_argument);
+}
+
+TEST_CASE("measure.paths: --replay FILE@T: the time after the last '@', a file with '@' in its name stays whole") {
+  CHECK(parseReplaySpec("walk.path").file == "walk.path");
+  CHECK(parseReplaySpec("walk.path").holdAt == -1.0);
+  const ReplaySpec held = parseReplaySpec("runs@2/walk.path@1.5");
+  CHECK(held.file == "runs@2/walk.path");
+  CHECK(held.holdAt == 1.5);
+  CHECK(parseReplaySpec("walk.path@0").holdAt == 0.0);
+  for (const char* bad : {"walk.path@inf", "walk.path@nan", "walk.path@-1", "walk.path@", "walk.path@1s", "a@b"}) {
+    INFO(bad);
+    CHECK_THROWS_WITH_AS(parseReplaySpec(bad), doctest::Contains("after '@' is not a time >= 0"),
+                         std::invalid_argument);
+  }
+  // An existing file whose name has an '@' (and what follows is no time) is that file.
+  const auto dir = std::filesystem::temp_directory_path() / "shadowlab_replay@take2";
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "walk.path@final").string();
+  { std::ofstream(file) << "shadowlab-path 1\n"; }
+  CHECK(parseReplaySpec(file).file == file);
+  CHECK(parseReplaySpec(file).holdAt == -1.0);
+  CHECK(parseReplaySpec(file + "@2").file == file);
+  std::filesystem::remove_all(dir);
 }
