@@ -42,7 +42,9 @@ struct ShaderSource {
 // first, as GLSL requires.
 //
 // Limits, because this is not a full preprocessor: includes inside /* */ comments are ignored,
-// but those inside #if blocks are expanded regardless of the condition.
+// but those inside #if blocks are expanded regardless of the condition. Includes nest at most
+// kMaxIncludeDepth files deep (an error naming the file and line past it).
+inline constexpr std::size_t kMaxIncludeDepth = 64;
 ShaderSource loadShaderSource(const std::string& path, const std::vector<std::string>& includeDirs);
 
 // True when any dependency was modified or removed since `source` was loaded.
@@ -51,7 +53,8 @@ bool dependenciesChanged(const ShaderSource& source);
 // Rewrites the locations in a driver's compile log from "source-string:line" to "path:line: message"
 // using the `files` table of a ShaderSource. Understands Mesa ("0:12(5): error: ..."), NVIDIA
 // ("0(12) : error C0000: ...") and AMD / Apple / glslang ("ERROR: 0:12: ..."); any other line,
-// or one naming a source string outside `files`, is kept unchanged.
+// or one naming a source string outside `files`, is kept unchanged. Linear in the log's length,
+// with no recursion: any line length is fine.
 std::string mapCompileLog(const std::string& log, const std::vector<std::string>& files);
 
 enum class ShaderStage { Vertex, Fragment, Geometry, TessControl, TessEvaluation, Compute };
