@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libspng-dev doctest-dev libepoxy-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libgles-dev
-  libembree-dev libtinyobjloader-dev nlohmann-json3-dev
+  libembree-dev nlohmann-json3-dev
   glslang-tools xvfb xauth
   clang-format  # the tree's one C++ style, checked by the test format.check
   chromium nodejs npm  # slides and HTML reports, tested in headless Chromium

@@ -146,3 +146,78 @@ TEST_CASE("obj: garbage never crashes, it loads or throws runtime_error") {
   }
   CHECK(rejected > 0);
 }
+
+TEST_CASE("obj: the fuzzing finds: numbers are what they say or an error naming the line") {
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  auto errorOf = [](const std::string& text) {
+    try {
+      parseObj(text);
+    } catch (const std::runtime_error& e) { return std::string(e.what()); }
+    return std::string("no error");
+  };
+  // 0e999999 is zero (tinyobjloader read NaN); 1e39 is past a float (it read inf).
+  const Mesh zero = parseObj("v 0e999999 0 0\nv 1 0 0\nv 0 1 0\nvt 0e999 0\nf 1/1 2/1 3/1\n");
+  CHECK(zero.positions[0] == glm::vec3(0.0f));
+  CHECK(zero.uvs[0] == glm::vec2(0.0f, 1.0f));
+  CHECK(errorOf("v 1e39 0 0\n" + tri) == "line 1: '1e39' is outside a float's range in vertex");
+  CHECK(errorOf("v 0 -1e39 0\n" + tri) == "line 1: '-1e39' is outside a float's range in vertex");
+  CHECK(errorOf(tri + "vt 1e-50 0\n") == "line 4: '1e-50' is outside a float's range in texture coordinate");
+  // "+-5" was read as 0.
+  for (const char* bad : {"+-5", "-+5", "++5", "--5", "0x10", "inf", "-nan", "1e", ".", "5,0"}) {
+    INFO(bad);
+    CHECK(errorOf(tri + "v " + bad + " 0 0\n") ==
+          "line 4: '" + std::string(bad) + "' is not a finite number in vertex");
+  }
+  CHECK(parseObj("v +1.5 -2 .5\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").positions[0] == glm::vec3(1.5f, -2.0f, 0.5f));
+  // A comment after a statement is valid OBJ (it was refused), with or without a space before it.
+  const Mesh commented = parseObj("v 0 0 0 # origin\nv 1 0 0\t# x\nv 0 1 0#y\nusemtl red#2\nf 1 2 3 # face\n");
+  CHECK(commented.triangleCount() == 1);
+  CHECK(errorOf(tri + "f 1 2# 3\n") == "line 4: a face needs at least 3 corners, got 2");
+}
+
+TEST_CASE("obj: polygons: convex ones fan, a concave quad splits at its reflex corner, others are refused by line") {
+  // tinyobjloader 2.0.0rc10 clipped ears against the triangle (origin, v0, v1): away from the
+  // origin this concave pentagon came out as 1 triangle.
+  const std::string pentagon = "v 10 10 0\nv 12 10 0\nv 12 12 0\nv 11 11 0\nv 10 12 0\n";
+  try {
+    parseObj(pentagon + "f 1 2 3 4 5\n");
+    FAIL("a concave pentagon loaded");
+  } catch (const std::runtime_error& e) {
+    CHECK(std::string(e.what()) ==
+          "line 6: a face with 5 corners is concave (corner 4 turns inward); this loader splits convex polygons and "
+          "concave quads only: triangulate it when exporting (Blender: Triangulate Faces)");
+  }
+  // The same outline as a dart quad and as triangles: both load, covering the area exactly.
+  auto area = [](const Mesh& m) {
+    double sum = 0;
+    for (std::size_t t = 0; t < m.indices.size(); t += 3)
+      sum += 0.5 * glm::length(glm::cross(m.positions[m.indices[t + 1]] - m.positions[m.indices[t]],
+                                          m.positions[m.indices[t + 2]] - m.positions[m.indices[t]]));
+    return sum;
+  };
+  for (const char* face : {"f 1 2 3 4\n", "f 2 3 4 1\n", "f 3 4 1 2\n", "f 4 1 2 3\n", "f 4 3 2 1\n"}) {
+    INFO(face);
+    const Mesh dart = parseObj("v 10 10 5\nv 14 12 5\nv 10 14 5\nv 11 12 5\n" + std::string(face));
+    CHECK(dart.triangleCount() == 2);
+    CHECK(area(dart) == doctest::Approx(6.0));  // 8 (the hull) - 2 (the notch)
+  }
+  // Convex polygons anywhere, in any plane: n - 2 triangles covering the polygon.
+  const Mesh hexagon =
+      parseObj("v 101 0 50\nv 102 0 50\nv 103 0 51\nv 102 0 52\nv 101 0 52\nv 100 0 51\nf 1 2 3 4 5 6\n");
+  CHECK(hexagon.triangleCount() == 4);
+  CHECK(area(hexagon) == doctest::Approx(4.0));
+  // A pentagram winds twice: refused, never fanned into overlapping triangles.
+  std::string star;
+  for (int i = 0; i < 5; ++i) {
+    const double a = 2 * 3.14159265358979 * (2 * i) / 5;
+    star += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+  }
+  try {
+    parseObj(star + "f 1 2 3 4 5\n");
+    FAIL("a pentagram loaded");
+  } catch (const std::runtime_error& e) {
+    CHECK(std::string(e.what()) == "line 6: a face with 5 corners crosses itself; triangulate it when exporting");
+  }
+  // Collinear and repeated corners turn nowhere: still convex.
+  CHECK(parseObj("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nf 1 2 3 4 5 5\n").triangleCount() == 4);
+}
