@@ -1,13 +1,13 @@
 # shadowlab: two commands do everything (each installs what is missing first).
 #   make run    the course: a launcher window, or without a display every lesson rendered into out/tour/
 #   make test   every test through ctest, headless
-# Also: make build, make slides, make grade LESSON=01, make bench, make soak, make stub-hashes, make format, make clean.
+# Also: make build, make slides, make grade LESSON=01, make bench, make soak, make fuzz, make stub-hashes, make format, make clean.
 PRESET ?= default
 BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: run test build deps configure web slides grade bench soak stub-hashes clean tour format
+.PHONY: run test build deps configure web slides grade bench soak fuzz fuzz-build stub-hashes clean tour format
 
 deps:
 	@bash tools/install-deps.sh
@@ -35,6 +35,16 @@ test: web build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE '^ex[0-9]+$$' $(CTEST_ARGS)
 	@cmake --preset sanitize >/dev/null && cmake --build --preset sanitize -j $(JOBS)
 	@cd build/sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -L unit
+	@$(MAKE) --no-print-directory fuzz-build && cd build/fuzz && ctest --output-on-failure -j $(JOBS) -L fuzz
+
+# libFuzzer targets of the GL-free parsers (tests/fuzz), built with clang under ASan + UBSan.
+# make fuzz runs each for FUZZ_RUNS executions and prints the figures (tools/fuzz.sh).
+FUZZ_RUNS ?= 1000000
+fuzz-build: deps
+	@cmake --preset fuzz >/dev/null && cmake --build --preset fuzz -j $(JOBS)
+
+fuzz: fuzz-build
+	@bash tools/fuzz.sh build/fuzz $(FUZZ_RUNS)
 
 slides: web build
 	@node tools/slides/build.mjs --bin $(BUILD)/bin --out out/slides

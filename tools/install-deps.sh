@@ -10,6 +10,7 @@ packages=(
   libembree-dev nlohmann-json3-dev
   glslang-tools xvfb xauth
   clang-format  # the tree's one C++ style, checked by the test format.check
+  clang libclang-rt-dev  # libFuzzer targets (tests/fuzz): make fuzz, and a short run in make test
   chromium nodejs npm  # slides and HTML reports, tested in headless Chromium
 )
 

@@ -239,7 +239,8 @@ void triangulate(const ObjData& d, const ObjData::Face& f, std::vector<ObjData::
     for (std::size_t k : {a, b, c}) out.push_back(d.corners[f.first + k % f.count]);
   };
   std::vector<glm::dvec2> p;
-  const Turns t = f.count > 3 && project(d, f, p) ? turns(p) : Turns{};
+  const bool flat = f.count > 3 && project(d, f, p);  // false: a triangle, or no area to judge
+  const Turns t = flat ? turns(p) : Turns{};
   const auto where = "line " + std::to_string(f.line) + ": a face with " + std::to_string(f.count) + " corners ";
   if (!t.reflex.empty() && f.count == 4 && t.reflex.size() == 1) {  // a dart: split at its reflex corner
     const std::size_t r = t.reflex[0];
@@ -252,7 +253,7 @@ void triangulate(const ObjData& d, const ObjData::Face& f, std::vector<ObjData::
                    " turns inward); this loader splits convex polygons and concave quads only: triangulate it "
                    "when exporting (Blender: Triangulate Faces)");
   if (!t.windsOnce) throw ObjError(where + "crosses itself; triangulate it when exporting");
-  if (f.count == 4 && glm::distance(p[0], p[2]) > glm::distance(p[1], p[3])) {
+  if (flat && f.count == 4 && glm::distance(p[0], p[2]) > glm::distance(p[1], p[3])) {
     emit(0, 1, 3);  // the shorter diagonal: better-shaped triangles
     emit(1, 2, 3);
     return;

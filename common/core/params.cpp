@@ -326,10 +326,18 @@ std::string ParamRegistry::describe() const {
 // ---- presets ------------------------------------------------------------------------------------
 
 PresetFile PresetFile::load(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) {
+    PresetFile none;
+    none.path = path;
+    return none;
+  }
+  return read(in, path);
+}
+
+PresetFile PresetFile::read(std::istream& in, const std::string& path) {
   PresetFile file;
   file.path = path;
-  std::ifstream in(path);
-  if (!in) return file;
   std::unordered_map<std::string, int> headers;  // name -> line: duplicates found in O(1)
   std::string line;
   int lineNo = 0;

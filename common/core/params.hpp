@@ -3,6 +3,7 @@
 // range and a one-line why; the registry then drives the UI (common/app/ui), the command line
 // (--set name=value, --list-params), presets (named snapshots in a text file) and tests.
 #include <functional>
+#include <iosfwd>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -144,6 +145,8 @@ class PresetFile {
   // Missing file: no presets. Syntax errors throw ParamError "file:line: ...". Linear in the
   // file's size (100,000 presets load in well under a second).
   static PresetFile load(const std::string& path);
+  // The same from a stream; `path` names it in messages.
+  static PresetFile read(std::istream& in, const std::string& path);
   // Every value must name a registered parameter and parse, and every preset over the defaults
   // must pass the registry's checks: throws ParamError "file:line: ..." (a failed check names the
   // line of the preset's last value that the check reads, else the header).

@@ -75,6 +75,17 @@ void CameraLightPath::add(const PathKey& key) {
   if (!keys_.empty() && !(key.time > keys_.back().time))
     throw std::invalid_argument("CameraLightPath: key time " + std::to_string(key.time) +
                                 " is not after the previous key's " + std::to_string(keys_.back().time));
+  if (!keys_.empty()) {
+    // Linear between the keys: the eye-to-target vector must not pass through zero on the way
+    // (a replay would ask lookFrom for a view with no direction at that frame).
+    const glm::dvec3 from = glm::dvec3(keys_.back().cameraTarget) - glm::dvec3(keys_.back().cameraPosition);
+    const glm::dvec3 change = glm::dvec3(key.cameraTarget) - glm::dvec3(key.cameraPosition) - from;
+    const double t =
+        glm::dot(change, change) > 0.0 ? std::clamp(-glm::dot(from, change) / glm::dot(change, change), 0.0, 1.0) : 0.0;
+    if (!(glm::length(from + t * change) > 1e-6))
+      throw std::invalid_argument("between the previous key and this one the camera passes through its target (at " +
+                                  std::to_string(int(t * 100.0 + 0.5)) + " % of the way)");
+  }
   PathKey k = key;
   k.lightDirection = robustNormalize(key.lightDirection);
   keys_.push_back(k);

@@ -138,6 +138,9 @@ TEST_CASE("measure.paths: the fuzzing finds are refused naming file:line (they c
           "e.path:2: '" + std::string(bad) + "' is not a finite number (field 1)");
   }
   CHECK(errorOf(head + "key 0 0 2 8 0 0 0 0 8 0 0 0 0\n") == "e.path:2: light direction (0, 0, 0) is not a direction");
+  // Two valid keys whose interpolation puts the eye on the target halfway: refused at load too.
+  CHECK(errorOf(head + "key 0 0 0 0 1 0 0 0 8 0 0 -1 0\nkey 1 1 0 0 0 0 0 0 8 0 0 -1 0\n") ==
+        "e.path:3: between the previous key and this one the camera passes through its target (at 50 % of the way)");
 }
 
 TEST_CASE("measure.paths: huge and tiny light directions normalise (in float, 1e20 gave 0 and 1e-30 NaN)") {

@@ -221,3 +221,9 @@ TEST_CASE("obj: polygons: convex ones fan, a concave quad splits at its reflex c
   // Collinear and repeated corners turn nowhere: still convex.
   CHECK(parseObj("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nf 1 2 3 4 5 5\n").triangleCount() == 4);
 }
+
+TEST_CASE("obj: a quad with no area (repeated corners) fans without reading past its projection (libFuzzer find)") {
+  const Mesh m = loadObj(SHADOWLAB_SOURCE_ROOT "/tests/fuzz/obj/regressions/quad_without_area.obj");
+  CHECK(m.triangleCount() == 4);
+  for (const glm::vec3& n : m.normals) CHECK(glm::length(n) == doctest::Approx(1.0f));
+}
