@@ -20,8 +20,9 @@ void record(const std::string& message) {
 void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length, const GLchar* message,
                           const void*) {
   // A shader that fails to compile is reported by its Program (file:line, last good program kept),
-  // not as a GL error: Mesa also sends the compiler's log through this callback.
-  if (type == GL_DEBUG_TYPE_ERROR && source != GL_DEBUG_SOURCE_SHADER_COMPILER) {
+  // not as a GL error nor printed again unmapped: Mesa also sends the compiler's log through here.
+  if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
+  if (type == GL_DEBUG_TYPE_ERROR) {
     record(std::string(message, length > 0 ? size_t(length) : std::char_traits<char>::length(message)));
   } else if (severity == GL_DEBUG_SEVERITY_HIGH || severity == GL_DEBUG_SEVERITY_MEDIUM) {
     std::fprintf(stderr, "GL: %.*s\n", int(length), message);

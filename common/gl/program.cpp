@@ -55,6 +55,12 @@ std::string infoLog(GLuint object, bool isProgram) {
   return log;
 }
 
+// Driver logs end in a newline: one error is then one line where it is printed.
+std::string trimEnd(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
+  return s;
+}
+
 }  // namespace
 
 const std::vector<Program*>& livePrograms() { return registry(); }
@@ -129,7 +135,7 @@ bool Program::finish() {
   // (A file that could not be read at all leaves the list short, and the next poll tries again.)
   sources_ = std::move(p.sources);
   if (!p.error.empty()) {
-    error_ = p.error;
+    error_ = trimEnd(p.error);
     return false;
   }
   for (std::size_t i = 0; i < p.shaders.size(); ++i) {
@@ -143,7 +149,7 @@ bool Program::finish() {
   GLint ok = 0;
   glGetProgramiv(p.program.id(), GL_LINK_STATUS, &ok);
   if (!ok) {
-    error_ = label_ + ": link failed: " + infoLog(p.program.id(), true);
+    error_ = trimEnd(label_ + ": link failed: " + infoLog(p.program.id(), true));
     return false;
   }
   gl::label(GL_PROGRAM, p.program.id(), label_);

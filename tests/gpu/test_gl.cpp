@@ -150,3 +150,32 @@ TEST_CASE("gl: timer queries resolve without stalling, per named pass") {
   CHECK(timers.find("clear")->gpuMs >= 0.0);
   CHECK_THROWS_AS(timers.end(), std::logic_error);
 }
+
+TEST_CASE("gl: sizes past the GL limits are errors naming the limit, never a black texture or a huge frame") {
+  context();
+  const gl::Caps& caps = gl::caps();
+  MESSAGE("GL_MAX_TEXTURE_SIZE " << caps.maxTextureSize << ", GL_MAX_RENDERBUFFER_SIZE " << caps.maxRenderbufferSize
+                                 << ", GL_MAX_VIEWPORT_DIMS " << caps.maxViewport[0] << "x" << caps.maxViewport[1]);
+  REQUIRE(caps.maxTextureSize >= 1024);  // the GL 4.1 minimum is 16384; llvmpipe reports its own
+  CHECK(gl::textureSizeProblem(caps.maxTextureSize, 1).empty());
+  CHECK(gl::textureSizeProblem(1, caps.maxTextureSize + 1).find("GL_MAX_TEXTURE_SIZE") != std::string::npos);
+  CHECK(gl::framebufferSizeProblem(640, 360).empty());
+  CHECK(gl::framebufferSizeProblem(caps.maxViewport[0] + 1, 16).find("exceeds this OpenGL's limits") !=
+        std::string::npos);
+
+  Image8 wide;  // one row past the limit: glTexImage2D would fail and the texture sample black
+  wide.width = caps.maxTextureSize + 1;
+  wide.height = 1;
+  wide.channels = 4;
+  wide.data.assign(std::size_t(wide.width) * 4, 255);
+  const int errors = gl::errorCount();
+  try {
+    gl::uploadTexture(wide, "too wide");
+    FAIL("a texture past GL_MAX_TEXTURE_SIZE uploaded");
+  } catch (const std::runtime_error& e) {
+    CHECK(std::string(e.what()) == "texture 'too wide': " + std::to_string(wide.width) +
+                                       "x1 is larger than this OpenGL's GL_MAX_TEXTURE_SIZE " +
+                                       std::to_string(caps.maxTextureSize) + " (" + caps.renderer + ")");
+  }
+  CHECK(gl::errorCount() == errors);  // refused before GL saw it
+}

@@ -1,0 +1,98 @@
+# Bad input, end to end (issue 18): every reproducer that reaches a lesson program exits with the
+# right code (2 bad input, 1 a bad or missing file) and one line naming the file:line or the
+# parameter. The GL-free parsers' own cases run in the unit suite (and under ASan/UBSan there);
+# their fuzz targets are tests/fuzz. Label gpu: these start lesson programs.
+if(SHADOWLAB_UNIT_ONLY OR NOT TARGET lesson_01_lighting)
+  return()
+endif()
+
+set(regressions ${CMAKE_CURRENT_SOURCE_DIR}/fuzz)
+set(l01 $<TARGET_FILE:lesson_01_lighting>)
+set(bad_input_tests)
+# bad_input(NAME LESSON EXIT STDERR ARGS...): lesson_check LESSON --expect-exit EXIT --expect-stderr STDERR -- ARGS
+function(bad_input name lesson code stderr)
+  add_test(NAME bad_input.${name} COMMAND lesson_check ${lesson} --expect-exit ${code} --expect-stderr "${stderr}" ${ARGN})
+  set_tests_properties(bad_input.${name} PROPERTIES LABELS gpu)
+endfunction()
+
+# A replayed key with the camera at its target aborted every lesson (exit 134): now exit 1, file:line.
+foreach(lesson IN LISTS SHADOWLAB_LESSONS)
+  string(REGEX REPLACE "^lesson_" "" name ${lesson})
+  bad_input(${name}.replay_eye_at_target $<TARGET_FILE:${lesson}> 1
+            "eye_at_target.path:2: the camera at (0, 0, 0) is at its target (0, 0, 0)"
+            -- --headless --frames 1 --size 160x90 --replay ${regressions}/paths/regressions/eye_at_target.path)
+  # Each plane in range, together degenerate (declareCamera's check): refused at start, naming both.
+  bad_input(${name}.near_far_ratio $<TARGET_FILE:${lesson}> 2
+            "camera.near = 0.0001, camera.far = 1e+07: far / near is 1e+11, at most 1e+06"
+            -- --headless --frames 1 --size 160x90 --set camera.near=1e-4 --set camera.far=1e7)
+endforeach()
+
+# Path files: out of range, bad headers, times after '@'.
+bad_input(01_lighting.replay_1e300 ${l01} 1 "coordinate_1e300.path:2: camera position (1e+300, 2, 8) is outside +-1000000"
+          -- --headless --frames 1 --size 160x90 --replay ${regressions}/paths/regressions/coordinate_1e300.path)
+bad_input(01_lighting.replay_header_1_5 ${l01} 1 "header_1_5.path:1: unsupported path version '1.5'"
+          -- --headless --frames 1 --size 160x90 --replay ${regressions}/paths/regressions/header_1_5.path)
+bad_input(01_lighting.replay_header_junk ${l01} 1 "header_junk.path:1: expected 'shadowlab-path 1', got 'shadowlab-path 1 junk'"
+          -- --headless --frames 1 --size 160x90 --replay ${regressions}/paths/regressions/header_junk.path)
+bad_input(01_lighting.replay_at_inf ${l01} 2 "'inf' after '@' is not a time >= 0 in seconds"
+          -- --headless --frames 1 --size 160x90 --replay ${CMAKE_SOURCE_DIR}/bench/paths/walk.path@inf)
+bad_input(01_lighting.replay_missing ${l01} 1 "--replay: /nonexistent/walk.path: cannot open for reading"
+          -- --headless --frames 1 --size 160x90 --replay /nonexistent/walk.path)
+
+# The light rig's checks (declareLight): lessons 01 and 04 (02 and 03 join with the shared rig).
+foreach(lesson IN ITEMS lesson_01_lighting lesson_04_shadow_volumes)
+  if(NOT TARGET ${lesson})
+    continue()
+  endif()
+  string(REGEX REPLACE "^lesson_" "" name ${lesson})
+  bad_input(${name}.light_direction_zero $<TARGET_FILE:${lesson}> 2
+            "light0.direction = 0 0 0 is not a direction: it needs a length of at least 1e-06"
+            -- --headless --frames 1 --size 160x90 "--set=light0.direction=0 0 0")
+  bad_input(${name}.light_direction_denormal $<TARGET_FILE:${lesson}> 2
+            "light0.direction = 1.4013e-45 0 0 is not a direction"
+            -- --headless --frames 1 --size 160x90 "--set=light0.direction=1e-45 0 0")
+  bad_input(${name}.attenuation_zero $<TARGET_FILE:${lesson}> 2
+            "light0.attenuation = 0 0 0 divides by zero"
+            -- --headless --frames 1 --size 160x90 "--set=light0.attenuation=0 0 0")
+  bad_input(${name}.near_beyond_far $<TARGET_FILE:${lesson}> 2
+            "camera.near = 5, camera.far = 2: the near plane must lie before the far plane"
+            -- --headless --frames 1 --size 160x90 --set camera.far=2 --set camera.near=5)
+endforeach()
+# ...in presets too, naming the line that set the value, after comments and blank lines.
+bad_input(01_lighting.preset_degenerate ${l01} 2
+          "presets.txt:5: in preset 'dark': light0.direction = 0 0 0 is not a direction"
+          --write lessons/01_lighting/presets.txt "[ok]\nambient = 0.5\n[dark]\n# nowhere\nlight0.direction = 0 0 0\n"
+          -- --headless --frames 1 --size 160x90)
+bad_input(01_lighting.preset_line_after_comments ${l01} 2
+          "presets.txt:6: in preset 'loud': bad value '7' for ambient (float); valid: [0, 1]"
+          --write lessons/01_lighting/presets.txt "[loud]\n# a comment\n\n# another\n\nambient = 7\n"
+          -- --headless --frames 1 --size 160x90)
+
+# Empty values and sizes.
+bad_input(01_lighting.screenshot_empty ${l01} 2 "--screenshot needs a value, got an empty one: --screenshot FILE"
+          -- --headless --frames 1 --screenshot=)
+bad_input(01_lighting.preset_empty ${l01} 2 "--preset needs a value, got an empty one: --preset NAME"
+          -- --headless --frames 1 --preset=)
+bad_input(01_lighting.size_16384 ${l01} 2 "--size: '16384' is not a whole number in [16, 8192]"
+          -- --headless --frames 1 --size 16384x16384)
+
+# Write errors: a full disk is an error naming the file, and nothing lands beside it.
+bad_input(01_lighting.screenshot_full_disk ${l01} 1 "cannot write PNG '/dev/full': No space left on device"
+          -- --headless --frames 1 --size 160x90 --screenshot /dev/full)
+bad_input(01_lighting.measure_full_disk ${l01} 1 "--measure: cannot write /dev/full: No space left on device"
+          -- --headless --frames 1 --size 160x90 --measure /dev/full)
+bad_input(01_lighting.bench_full_disk ${l01} 1 "--bench: cannot write /dev/full: No space left on device"
+          -- --headless --frames 1 --size 160x90 --bench /dev/full)
+
+# A texture that is no PNG (a 0x0 PNM named .png loaded as an empty image): exit 1, named.
+bad_input(01_lighting.texture_not_png ${l01} 1 "textures/checker.png': a PNM file (11 bytes); the course reads PNG only"
+          --write textures/checker.png "P6\n0 0\n255\n" -- --headless --frames 1 --size 160x90)
+
+# A compile error on a 30,000-character line segfaulted the log mapping (std::regex): exit 1, file:line.
+file(READ ${CMAKE_SOURCE_DIR}/shaders/01_lighting/scene.frag scene_frag)
+string(REPEAT "x" 30000 long_identifier)
+string(REPLACE "void main() {" "void main() {\n  float broken = ${long_identifier};" long_line_frag "${scene_frag}")
+add_test(NAME bad_input.01_lighting.shader_error_long_line COMMAND lesson_check ${l01} --expect-exit 1
+         --expect-stderr "shaders/01_lighting/scene.frag:28: error:" --write shaders/01_lighting/scene.frag
+         "${long_line_frag}" -- --headless --frames 1 --size 160x90)  # the text holds ';': no function
+set_tests_properties(bad_input.01_lighting.shader_error_long_line PROPERTIES LABELS gpu)
