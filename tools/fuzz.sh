@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every libFuzzer target of build/fuzz for a fixed number of executions (make fuzz) and prints,
-# per target: executions, seconds, the corpus it ended with (files/bytes), and whether it found
-# anything. New inputs land in build/fuzz/fuzz-corpus/NAME; a crash, leak, timeout or broken
+# per target: executions, seconds, executions a second, the corpus it ended with (units/size, as
+# libFuzzer counts it), and whether it found anything. New inputs land in build/fuzz/fuzz-corpus/NAME; a crash, leak, timeout or broken
 # invariant is kept as build/fuzz/findings/NAME/crash-* (add it to tests/fuzz/NAME/regressions
 # once fixed). Exit 1 on any finding.
 #   tools/fuzz.sh BUILD_DIR RUNS [TARGET...]
@@ -15,7 +15,7 @@ if [[ ${#targets[@]} -eq 0 ]]; then
   for t in "$build"/bin/fuzz_*; do targets+=("$(basename "$t" | sed 's/^fuzz_//')"); done
 fi
 failed=0
-printf '%-14s %12s %9s %16s  %s\n' target executions seconds "corpus files/KB" result
+printf '%-14s %12s %9s %8s %14s  %s\n' target executions seconds exec/s "corpus (units)" result
 for name in "${targets[@]}"; do
   work="$build/fuzz-corpus/$name"
   findings="$build/findings/$name"
@@ -29,13 +29,13 @@ for name in "${targets[@]}"; do
   status=$?
   seconds=$(echo "$(date +%s.%N) - $start" | bc)
   executions=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')
-  files=$(find "$work" -type f | wc -l)
-  kb=$(du -sk "$work" | cut -f1)
+  corpus_size=$(grep -o 'DONE .*corp: [0-9]*/[0-9]*[a-zA-Z]*' "$log" | tail -1 | grep -o '[0-9]*/[0-9]*[a-zA-Z]*$')
   result=ok
   if [[ $status -ne 0 ]] || grep -qE 'ERROR: libFuzzer|SUMMARY: .*Sanitizer|FUZZ_CHECK failed' "$log"; then
     result="FINDING (see $log)"
     failed=1
   fi
-  printf '%-14s %12s %9.1f %16s  %s\n' "$name" "${executions:-?}" "$seconds" "$files/$kb" "$result"
+  rate=$(echo "${executions:-0} / $seconds" | bc)
+  printf '%-14s %12s %9.1f %8s %14s  %s\n' "$name" "${executions:-?}" "$seconds" "$rate" "${corpus_size:-?}" "$result"
 done
 exit $failed

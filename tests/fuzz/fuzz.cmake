@@ -18,6 +18,7 @@ foreach(name IN LISTS SHADOWLAB_FUZZ_TARGETS)
   endif()
   add_executable(fuzz_${name} ${sources})
   target_link_libraries(fuzz_${name} PRIVATE shadowlab_core)
+  target_include_directories(fuzz_${name} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/support)
   target_link_options(fuzz_${name} PRIVATE -fsanitize=fuzzer)
   add_dependencies(fuzz_targets fuzz_${name})
 

@@ -7,23 +7,14 @@
 
 #include "algorithms/shadow_math.hpp"
 #include "core/param_checks.hpp"
+#include "sample_params.hpp"
 
 using namespace shadowlab;
 
 namespace {
-// The parameters the checks read, with declareLight's and declareCamera's ranges.
-struct Rig {
-  Light light;
-  OrbitCamera camera;
+struct Rig : test::SampleRig {
   ParamRegistry reg;
-  Rig() {
-    reg.add("light0.direction", &light.direction, -1, 1, "spot axis or sun travel");
-    reg.add("light0.attenuation", &light.attenuation, 0, 10, "c0 c1 c2");
-    addLightChecks(reg, "light0.", light);
-    reg.add("camera.near", &camera.nearZ, 1e-4f, 100.0f, "near plane");
-    reg.add("camera.far", &camera.farZ, 0.1f, 1e7f, "far plane");
-    addCameraChecks(reg, camera);
-  }
+  Rig() { declare(reg); }
   std::string error(const std::string& assignment) {
     try {
       reg.assign(assignment);

@@ -7,28 +7,16 @@
 #include <string>
 
 #include "core/params.hpp"
+#include "sample_params.hpp"
 
 using namespace shadowlab;
+using test::Mode;
 
 namespace {
-enum class Mode { Lit, Normals, Depth };
-struct Params {
-  float ambient = 0.1f;
-  int samples = 4;
-  bool shadows = true;
-  Mode mode = Mode::Lit;
-  glm::vec3 color{1, 0.5f, 0};
-};
 struct Fixture {
-  Params p;
+  test::SampleParams p;
   ParamRegistry reg;
-  Fixture() {
-    reg.add("ambient", &p.ambient, 0, 1, "k_a");
-    reg.add("samples", &p.samples, 1, 64, "PCF taps");
-    reg.add("shadows", &p.shadows, "V_i on/off");
-    reg.addChoice("mode", &p.mode, {"lit", "normals", "depth"}, "what to show");
-    reg.addColor("color", &p.color, "light colour");
-  }
+  Fixture() { p.declare(reg); }
 };
 std::string tempPath(const char* name) {
   return (std::filesystem::temp_directory_path() / (std::string("shadowlab_test_") + name)).string();
