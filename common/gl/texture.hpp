@@ -1,5 +1,5 @@
 #pragma once
-// Textures from files under textures/ (stb_image through core/image) or from CPU images, and
+// Textures from files under textures/ (PNG through core/image) or from CPU images, and
 // framebuffer read-backs into CPU images.
 #include <string>
 
