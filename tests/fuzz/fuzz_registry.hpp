@@ -17,16 +17,14 @@ struct Registry {
   }
   // Every value, exactly (cheaper than snapshot(), which formats text).
   auto values() const {
-    return std::make_tuple(p.ambient, p.samples, p.shadows, p.mode, p.color, rig.light.direction,
-                           rig.light.attenuation, rig.camera.nearZ, rig.camera.farZ);
+    return std::make_tuple(p.ambient, p.samples, p.shadows, p.mode, p.color, rig.light.direction, rig.light.attenuation,
+                           rig.camera.nearZ, rig.camera.farZ);
   }
   // After anything the registry accepted or refused, its values pass every check.
   void checkConsistent() const {
     try {
       reg.validate();
-    } catch (const ParamError&) {
-      FUZZ_CHECK(!"the registry holds values its checks refuse");
-    }
+    } catch (const ParamError&) { FUZZ_CHECK(!"the registry holds values its checks refuse"); }
   }
 };
 
