@@ -39,8 +39,9 @@ bad_input(01_lighting.replay_at_inf ${l01} 2 "'inf' after '@' is not a time >= 0
 bad_input(01_lighting.replay_missing ${l01} 1 "--replay: /nonexistent/walk.path: cannot open for reading"
           -- --headless --frames 1 --size 160x90 --replay /nonexistent/walk.path)
 
-# The light rig's checks (declareLight): lessons 01 and 04 (02 and 03 join with the shared rig).
-foreach(lesson IN ITEMS lesson_01_lighting lesson_04_shadow_volumes)
+# The light rig's checks (declareLight), on every lesson with the rig (light0 is lesson 03's sun:
+# its "sun.direction 1e-45 0 0" of the issue is light0.direction now).
+foreach(lesson IN ITEMS lesson_01_lighting lesson_02_shadow_maps lesson_03_shadow_quality lesson_04_shadow_volumes)
   if(NOT TARGET ${lesson})
     continue()
   endif()

@@ -142,7 +142,7 @@ bool Program::finish() {
     GLint ok = 0;
     glGetShaderiv(p.shaders[i].id(), GL_COMPILE_STATUS, &ok);
     if (!ok) {
-      error_ = label_ + ": " + mapCompileLog(infoLog(p.shaders[i].id(), false), sources_[i].files);
+      error_ = trimEnd(label_ + ": " + mapCompileLog(infoLog(p.shaders[i].id(), false), sources_[i].files));
       return false;
     }
   }
