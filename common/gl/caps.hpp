@@ -18,7 +18,7 @@ struct Caps {
   // Mesa's llvmpipe / softpipe (or SHADOWLAB_SOFTWARE_RENDERER=1): the CPU rasterises, deferred, so
   // timestamps miss the work, and an interactive window needs the frame budget.
   bool softwareRenderer = false;
-  int maxTextureSize = 0;   // GL_MAX_TEXTURE_SIZE: render targets and textures, a side
+  int maxTextureSize = 0;  // GL_MAX_TEXTURE_SIZE: render targets and textures, a side
   int maxRenderbufferSize = 0;
   int maxViewport[2] = {0, 0};  // GL_MAX_VIEWPORT_DIMS
   bool atLeast(int ma, int mi) const { return major > ma || (major == ma && minor >= mi); }
