@@ -93,7 +93,14 @@ bad_input(01_lighting.texture_not_png ${l01} 1 "textures/checker.png': a PNM fil
 file(READ ${CMAKE_SOURCE_DIR}/shaders/01_lighting/scene.frag scene_frag)
 string(REPEAT "x" 30000 long_identifier)
 string(REPLACE "void main() {" "void main() {\n  float broken = ${long_identifier};" long_line_frag "${scene_frag}")
+# The broken line's number in the edited file (the line after `void main() {`), so the test keeps
+# checking the mapped line as the shader grows.
+string(FIND "${scene_frag}" "void main() {" main_at)
+string(SUBSTRING "${scene_frag}" 0 ${main_at} before_main)
+string(REGEX MATCHALL "\n" newlines "${before_main}")
+list(LENGTH newlines broken_line)
+math(EXPR broken_line "${broken_line} + 2")
 add_test(NAME bad_input.01_lighting.shader_error_long_line COMMAND lesson_check ${l01} --expect-exit 1
-         --expect-stderr "shaders/01_lighting/scene.frag:" --write shaders/01_lighting/scene.frag
+         --expect-stderr "shaders/01_lighting/scene.frag:${broken_line}: error:" --write shaders/01_lighting/scene.frag
          "${long_line_frag}" -- --headless --frames 1 --size 160x90)  # the text holds ';': no function
 set_tests_properties(bad_input.01_lighting.shader_error_long_line PROPERTIES LABELS gpu)
