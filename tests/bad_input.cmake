@@ -104,3 +104,28 @@ add_test(NAME bad_input.01_lighting.shader_error_long_line COMMAND lesson_check 
          --expect-stderr "shaders/01_lighting/scene.frag:${broken_line}: error:" --write shaders/01_lighting/scene.frag
          "${long_line_frag}" -- --headless --frames 1 --size 160x90)  # the text holds ';': no function
 set_tests_properties(bad_input.01_lighting.shader_error_long_line PROPERTIES LABELS gpu)
+
+# Hotkeys (issue 19): every lesson's bindings pass the checks (no key twice, none of the framework's,
+# none on a kind a key cannot drive) and --list-hotkeys prints the table with the framework's keys.
+foreach(lesson IN LISTS SHADOWLAB_LESSONS)
+  string(REGEX REPLACE "^lesson_" "" name ${lesson})
+  add_test(NAME hotkeys.${name} COMMAND $<TARGET_FILE:${lesson}> --list-hotkeys)
+  set_tests_properties(hotkeys.${name} PROPERTIES LABELS unit
+                       PASS_REGULAR_EXPRESSION "R  \\(framework\\)  reload shaders.*H  \\(framework\\)  hide all UI"
+                       FAIL_REGULAR_EXPRESSION "hotkeys: ")
+endforeach()
+
+# The launcher's --help names every flag it accepts; a bad --frames is refused with the valid range.
+if(TARGET shadowlab)
+  add_test(NAME launcher.help COMMAND $<TARGET_FILE:shadowlab> --help)
+  set_tests_properties(launcher.help PROPERTIES LABELS unit
+                       PASS_REGULAR_EXPRESSION "--tour DIR.*--frames N.*--screenshot FILE.*--help")
+  bad_input(launcher.frames_not_a_number $<TARGET_FILE:shadowlab> 2
+            "--frames: 'ten' is not a whole number in [1, 100000000]" -- --frames ten)
+endif()
+
+# The UI's rectangles (--ui-layout): --show-help draws the help; at --ui-scale 2 header and panel do
+# not overlap; neither covers the A/B split's labels.
+add_test(NAME gpu.framework.ui_layout COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_03_shadow_quality>
+         -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_ui_layout.cmake)
+set_tests_properties(gpu.framework.ui_layout PROPERTIES LABELS gpu)

@@ -100,9 +100,11 @@ class Runner {
       ab_.declare(params_, presets_);
       params_.validate();  // the defaults, then every preset, pass the registry's checks
       presets_.validate(params_);
+      checkHotkeys();
       if (Exit e = answerQueries(argv[0])) return e;
       if (!cl_.preset.empty()) presets_.apply(cl_.preset, params_);
       params_.assignAll(cl_.sets);       // one change: checked once, whatever the order
+      homeCamera_ = lesson_.camera;      // Home comes back here
     } catch (const std::exception& e) {  // CliError, ParamError
       std::cerr << info_.name << ": " << e.what() << '\n';
       return 2;
@@ -110,7 +112,17 @@ class Runner {
     return std::nullopt;
   }
 
-  // --help, --info, --list-params, --list-presets: print and exit 0.
+  // A key bound twice (framework keys included) or on a kind it cannot drive: the lesson is wrong,
+  // and a lecturer would find out in front of the class. Every lesson's tests run this.
+  void checkHotkeys() const {
+    const std::vector<std::string> problems = hotkeyProblems(params_);
+    if (problems.empty()) return;
+    std::string all;
+    for (const std::string& p : problems) all += (all.empty() ? "" : "; ") + p;
+    throw ParamError("hotkeys: " + all);
+  }
+
+  // --help, --info, --list-params, --list-presets, --list-hotkeys: print and exit 0.
   Exit answerQueries(const char* program) {
     if (cl_.help) {
       std::cout << info_.number << " " << info_.title << ": " << info_.summary << "\n\n" << commandLineHelp(program);
@@ -122,6 +134,8 @@ class Runner {
       std::cout << params_.describe();
     } else if (cl_.listPresets) {
       for (const auto& n : presets_.names()) std::cout << n << '\n';
+    } else if (cl_.listHotkeys) {
+      std::cout << describeHotkeys(params_);
     } else {
       return std::nullopt;
     }
@@ -157,6 +171,7 @@ class Runner {
 
     installInputCallbacks(context_->window(), &input_);
     uiVisible_ = !cl_.headless || cl_.showUi;
+    input_.help = helpOpen_ = cl_.showHelp;
     if (uiVisible_) ui_.init(*context_, cl_.uiScale > 0 ? cl_.uiScale : context_->contentScale());
     installInputCallbacks(context_->window(), &input_);  // chain ImGui's callbacks after ours
     return std::nullopt;
@@ -219,7 +234,7 @@ class Runner {
     const double dt = cl_.headless ? 1.0 / 60.0 : std::min(start - last_, 0.1);
     last_ = start;
     time_ += dt;
-    if (context_->window()) handleInput();
+    if (context_->window()) handleInput(float(dt));
     for (gl::Program* p : gl::livePrograms()) p->reloadIfChanged();
     if (context_->width() != width_ || context_->height() != height_) {
       width_ = context_->width();
@@ -242,7 +257,7 @@ class Runner {
     budget_.end(context_->framebuffer(), width_, height_);
     fi.framebuffer = context_->framebuffer();
     lesson_.timers.collect();
-    if (uiVisible_) drawUi(fi, dt);
+    if (uiVisible_ && !input_.uiHidden) drawUi(fi, dt);
     if (Exit e = writeOutputs(fi, lastFrame)) return e;
     context_->present();
     // Frame time includes present: software rasterisers (llvmpipe) do much of their work there.
@@ -254,10 +269,16 @@ class Runner {
   }
 
   // Mouse onto the camera (or the A/B divider), keys onto the framework and the hotkeys.
-  void handleInput() {
+  void handleInput(float dt) {
     GLFWwindow* w = context_->window();
     float divider = ab_.divider();
     applyMouse(w, input_, ui_.wantsMouse(), lesson_.camera, ab_.enabled() ? &divider : nullptr);
+    if (!ui_.wantsKeyboard()) applyFlyKeys(w, input_, lesson_.camera, dt);
+    if (input_.resetCamera) {
+      lesson_.camera = homeCamera_;
+      input_.resetCamera = false;
+      status_ = "camera reset";
+    }
     if (divider != ab_.divider()) ab_.setDivider(divider);
     if (input_.uiScaleSteps != 0) {
       ui_.setScale(ui_.scale() * std::pow(1.15f, float(input_.uiScaleSteps)));
@@ -408,6 +429,7 @@ class Runner {
                              ab_.enabled() ? &b : nullptr);
       }
       if (lastFrame && !cl_.screenshot.empty()) saveScreenshot(cl_.screenshot, fi.framebuffer, width_, height_);
+      if (lastFrame && !cl_.uiLayout.empty()) writeUiLayout(cl_.uiLayout, width_, height_, ui_.layout());
     } catch (const std::exception& e) {
       std::cerr << info_.name << ": " << e.what() << '\n';
       return 1;
@@ -483,6 +505,7 @@ class Runner {
   measure::CameraLightPath recording_, replay_;
   double replayAt_ = -1;
   bool uiVisible_ = false, helpOpen_ = false;
+  OrbitCamera homeCamera_;  // the pose after the preset and --set: Home returns to it
   std::string initError_, status_;
   int width_ = 0, height_ = 0;
   int drawCalls_ = 0;

@@ -25,6 +25,9 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   else if (ctrl && (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD)) ++g_input->uiScaleSteps;
   else if (ctrl && (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT)) --g_input->uiScaleSteps;
   else if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
+  else if (key == GLFW_KEY_TAB) g_input->fly = !g_input->fly;
+  else if (key == GLFW_KEY_HOME) g_input->resetCamera = true;
+  else if (key == GLFW_KEY_H && !ctrl) g_input->uiHidden = !g_input->uiHidden;
   else if (!ctrl) g_input->pressed.push_back(key);
 }
 
@@ -56,17 +59,30 @@ void applyMouse(GLFWwindow* w, Input& input, bool uiHasMouse, OrbitCamera& camer
     if (left && divider && (input.draggingDivider || std::abs(x - *divider * width) < 8)) {
       input.draggingDivider = true;  // the A/B divider follows the mouse
       *divider = float(x / width);
+    } else if (left && input.fly) {
+      camera.lookAround(-dx * 0.003f, -dy * 0.003f);  // drag right: turn right; drag up: look up
     } else if (left) {
       camera.orbit(-dx * 0.005f, dy * 0.005f);
     }
     if (!left) input.draggingDivider = false;
     if (glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS) camera.pan({-dx, dy});
-    if (input.scroll != 0) camera.zoom(std::pow(0.9f, input.scroll));
+    if (input.scroll != 0 && input.fly)
+      input.flySpeed = std::clamp(input.flySpeed * std::pow(1.25f, input.scroll), 0.01f, 100.0f);
+    else if (input.scroll != 0) camera.zoom(std::pow(0.9f, input.scroll));
   }
   input.scroll = 0;
   input.lastX = x;
   input.lastY = y;
   input.haveLast = true;
+}
+
+void applyFlyKeys(GLFWwindow* w, const Input& input, OrbitCamera& camera, float seconds) {
+  if (!input.fly) return;
+  const auto held = [w](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0f : 0.0f; };
+  const glm::vec3 local(held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_E) - held(GLFW_KEY_Q),
+                        held(GLFW_KEY_W) - held(GLFW_KEY_S));
+  // Speed scales with how far the camera looks: a city block and a tabletop feel alike.
+  if (local != glm::vec3(0.0f)) camera.fly(local * (input.flySpeed * 0.5f * camera.distance * seconds));
 }
 
 std::string keyName(int key) {
@@ -76,19 +92,5 @@ std::string keyName(int key) {
 }
 
 bool isReloadKey(int key) { return key == GLFW_KEY_R; }
-
-bool applyHotkey(ParamRegistry& params, const std::string& key) {
-  for (const auto& p : params.params()) {
-    if (p.hotkey != key) continue;
-    if (p.kind == ParamKind::Bool) {
-      params.set(p.name, params.get(p.name) == "true" ? "false" : "true");
-    } else if (p.kind == ParamKind::Choice) {
-      const int i = *static_cast<int*>(p.target);
-      params.set(p.name, p.choices[(i + 1) % p.choices.size()]);
-    }
-    return true;
-  }
-  return false;
-}
 
 }  // namespace shadowlab

@@ -1,6 +1,10 @@
 #include "app/ui.hpp"
 
+#include "core/hotkeys.hpp"
+#include "core/slider_style.hpp"
+
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
@@ -8,8 +12,13 @@
 #include <charconv>
 #include <string>
 #include <cstdio>
+#include <fstream>
+#include <stdexcept>
 
 namespace shadowlab {
+
+// The header's share of the width from the left; the parameter panel gets the rest, at the right.
+constexpr float kHeaderShare = 0.6f;
 namespace {
 ImGuiStyle g_baseStyle;
 }
@@ -51,6 +60,23 @@ void Ui::newFrame(double dt, int width, int height) {
   else io.DisplaySize = ImVec2(float(width), float(height));
   io.DeltaTime = float(std::max(dt, 1e-4));
   ImGui::NewFrame();
+  layout_.clear();
+}
+
+void Ui::recordWindow(const char* name) {
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  layout_.push_back({name, pos.x, pos.y, size.x, size.y});
+}
+
+void writeUiLayout(const std::string& path, int width, int height, const std::vector<Ui::Rect>& rects) {
+  nlohmann::ordered_json j;
+  j["viewport"] = {width, height};
+  j["windows"] = nlohmann::ordered_json::array();
+  for (const Ui::Rect& r : rects)
+    j["windows"].push_back({{"name", r.name}, {"x", r.x}, {"y", r.y}, {"w", r.w}, {"h", r.h}});
+  std::ofstream out(path);
+  out << j.dump(1) << '\n';
+  if (!out.flush()) throw std::runtime_error("--ui-layout: cannot write " + path);
 }
 
 void Ui::render() {
@@ -62,7 +88,10 @@ bool Ui::wantsMouse() const { return initialised_ && ImGui::GetIO().WantCaptureM
 bool Ui::wantsKeyboard() const { return initialised_ && ImGui::GetIO().WantCaptureKeyboard; }
 
 void Ui::header(const HeaderData& d) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(8 * scale_, 8 * scale_), ImGuiCond_Always);
+  // At most the left 60 % and 60 % of the height: the panel takes the right, the picture the rest.
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(vp->Size.x * kHeaderShare - 16 * scale_, vp->Size.y * 0.6f));
   ImGui::SetNextWindowBgAlpha(0.8f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
@@ -104,7 +133,8 @@ void Ui::header(const HeaderData& d) {
     ImGui::PopStyleColor();
   }
   if (!d.status.empty()) ImGui::TextDisabled("%s", d.status.c_str());
-  ImGui::TextDisabled("F1 help");
+  ImGui::TextDisabled("F1 help   H hide UI");
+  recordWindow("shadowlab");
   ImGui::End();
 }
 
@@ -120,15 +150,18 @@ void Ui::help(const LessonInfo& info, const ParamRegistry& params, bool* open) {
   ImGui::TextUnformatted(info.help.c_str());
   ImGui::Separator();
   ImGui::TextUnformatted(
-      "Mouse: left drag orbit, right drag pan, wheel zoom\n"
-      "F1 help   F11 fullscreen   F12 screenshot   Ctrl +/- UI scale   R reload shaders   Esc quit");
+      "Mouse: left drag orbit (fly: look), right drag pan, wheel zoom (fly: speed)\n"
+      "F1 help   F11 fullscreen   F12 screenshot   Ctrl +/- UI scale   Tab orbit <-> fly   Home camera reset   "
+      "Esc quit");
+  for (const FrameworkKey& k : frameworkKeys()) ImGui::Text("%-3s %s", k.key, k.action);
   bool any = false;
   for (const auto& p : params.params()) {
     if (p.hotkey.empty()) continue;
     if (!any) ImGui::Separator();
     any = true;
-    ImGui::Text("%-3s %s", p.hotkey.c_str(), p.name.c_str());
+    ImGui::Text("%-3s %s  (%s)", p.hotkey.c_str(), p.name.c_str(), hotkeyAction(p).c_str());
   }
+  recordWindow("Help (F1)");
   ImGui::End();
 }
 
@@ -140,6 +173,7 @@ void Ui::splitLabels(float divider, const std::string& a, const std::string& b) 
     const ImVec2 t = ImGui::CalcTextSize(text.c_str());
     draw->AddRectFilled(ImVec2(left - 4, y - 4), ImVec2(left + t.x + 4, y + t.y + 4), IM_COL32(0, 0, 0, 180), 4.0f);
     draw->AddText(ImVec2(left, y), IM_COL32(255, 255, 255, 255), text.c_str());
+    layout_.push_back({&text == &a ? "A label" : "B label", left - 4, y - 4, t.x + 8, t.y + 8});
   };
   label(std::max(8.0f, x - ImGui::CalcTextSize(a.c_str()).x - 16.0f), a);
   label(x + 16.0f, b);
@@ -160,7 +194,9 @@ std::string editWidget(const Param& p, const char* label) {
   switch (p.kind) {
     case ParamKind::Float: {
       float v = *static_cast<const float*>(p.target);
-      return ImGui::SliderFloat(label, &v, p.min, p.max) ? exact(v) : "";
+      const SliderStyle style = sliderStyle(p.min, p.max);
+      const ImGuiSliderFlags flags = style.logarithmic ? ImGuiSliderFlags_Logarithmic : 0;
+      return ImGui::SliderFloat(label, &v, p.min, p.max, style.format, flags) ? exact(v) : "";
     }
     case ParamKind::Int: {
       int v = *static_cast<const int*>(p.target);
@@ -182,7 +218,7 @@ std::string editWidget(const Param& p, const char* label) {
     }
     case ParamKind::Vec3: {
       glm::vec3 v = *static_cast<const glm::vec3*>(p.target);
-      return ImGui::SliderFloat3(label, &v.x, p.min, p.max) ? exact(v) : "";
+      return ImGui::SliderFloat3(label, &v.x, p.min, p.max, sliderStyle(p.min, p.max).format) ? exact(v) : "";
     }
     case ParamKind::Color: {
       glm::vec3 v = *static_cast<const glm::vec3*>(p.target);
@@ -197,7 +233,12 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   bool changed = false;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(vp->Size.x - 8 * scale_, 8 * scale_), ImGuiCond_Appearing, ImVec2(1, 0));
-  ImGui::SetNextWindowSize(ImVec2(360 * scale_, 0), ImGuiCond_Appearing);
+  // The right third at most, and never taller than the window: it scrolls (and collapses by its title).
+  const float width = std::min(360 * scale_, vp->Size.x * (1.0f - kHeaderShare) - 8 * scale_);
+  ImGui::SetNextWindowSize(ImVec2(width, 0), ImGuiCond_Appearing);
+  // Its bottom stays above the A/B split's labels (2.6 lines from the bottom).
+  const float labels = ImGui::GetTextLineHeightWithSpacing() * 3.2f;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(vp->Size.x, vp->Size.y - 16 * scale_ - labels));
   ImGui::SetNextWindowBgAlpha(0.85f);
   ImGui::Begin("Parameters", nullptr, ImGuiWindowFlags_NoSavedSettings);
 
@@ -261,6 +302,7 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
     }
     ImGui::PopID();
   }
+  recordWindow("Parameters");
   ImGui::End();
   return changed;
 }

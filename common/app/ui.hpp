@@ -41,12 +41,25 @@ class Ui {
   // Returns true when a parameter changed.
   bool paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status);
 
+  // Where this frame's UI sits, in framebuffer pixels (windows by title; the A/B labels as
+  // "A label" / "B label"): --ui-layout writes it, tests check nothing overlaps.
+  struct Rect {
+    std::string name;
+    float x = 0, y = 0, w = 0, h = 0;
+  };
+  const std::vector<Rect>& layout() const { return layout_; }
+
  private:
+  void recordWindow(const char* name);
   bool initialised_ = false;
   bool headless_ = false;
   float scale_ = 1.0f;
   char presetName_[64] = "my_preset";
   int presetIndex_ = -1;
+  std::vector<Rect> layout_;
 };
+
+// --ui-layout FILE: the viewport and the UI's rectangles as JSON. Throws std::runtime_error.
+void writeUiLayout(const std::string& path, int width, int height, const std::vector<Ui::Rect>& rects);
 
 }  // namespace shadowlab

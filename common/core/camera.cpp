@@ -52,6 +52,18 @@ void OrbitCamera::orbit(float dYaw, float dPitch) {
   pitch = clampPitch(pitch + dPitch);
 }
 
+void OrbitCamera::lookAround(float dYaw, float dPitch) {
+  const glm::vec3 eye = position();
+  orbit(dYaw, dPitch);
+  target = eye + std::clamp(distance, minDistance, maxDistance) * forward();
+}
+
+void OrbitCamera::fly(const glm::vec3& local) {
+  const glm::vec3 f = forward();  // pitch is clamped short of +-pi/2: never parallel to world up
+  const glm::vec3 right = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0)));
+  target += right * local.x + glm::vec3(0, local.y, 0) + f * local.z;
+}
+
 void OrbitCamera::aim(const glm::vec3& t, float d, float p) {
   target = t;
   distance = d;

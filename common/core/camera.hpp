@@ -26,6 +26,11 @@ struct OrbitCamera {
   // Sets target, distance, yaw and pitch so the eye is at `eye` looking at `target` (replaying a
   // recorded path). Throws std::invalid_argument when the two points coincide.
   void lookFrom(const glm::vec3& eye, const glm::vec3& target);
+  // The fly camera's moves, on the same state (so recorded paths and presets serve both modes):
+  // turn the view about the eye (the eye stays where it is; the target swings round it), and move
+  // eye and target together by `local` (x right, y world up, z forward along the view), as FlyCamera::move does.
+  void lookAround(float dYaw, float dPitch);
+  void fly(const glm::vec3& local);
 };
 
 struct FlyCamera {

@@ -25,10 +25,13 @@ constexpr Flag kFlags[] = {
     {"--replay", "FILE[@T]", "replay a recorded camera and light path over the frames (@T: hold at time T)"},
     {"--ui-scale", "S", "UI scale for projectors, 0.5 to 4 (Ctrl +/- at run time)"},
     {"--show-ui", nullptr, "headless: draw the UI into the screenshot"},
+    {"--ui-layout", "FILE", "write the last frame's UI rectangles (header, panel, help, A/B labels) as JSON"},
+    {"--show-help", nullptr, "draw the F1 help (and the UI) from the first frame, e.g. into a screenshot"},
     {"--fullscreen", nullptr, "start fullscreen (F11 toggles)"},
     {"--strict-gl", nullptr, "fail (exit 3) on any OpenGL error (tests set it)"},
     {"--list-params", nullptr, "list every parameter with its range, default and purpose"},
     {"--list-presets", nullptr, "list the presets, one per line"},
+    {"--list-hotkeys", nullptr, "list every key: the framework's and the lesson's, with what each does"},
     {"--info", nullptr, "print the lesson's number, title, summary and difficulty as JSON"},
     {"--help", nullptr, "this text"},
 };
@@ -100,10 +103,13 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
         throw CliError("--ui-scale: '" + value + "' is not a number in [0.5, 4]");
       cl.uiScale = s;
     } else if (flag == "--show-ui") cl.showUi = true;
+    else if (flag == "--show-help") cl.showUi = cl.showHelp = true;
+    else if (flag == "--ui-layout") cl.uiLayout = value;
     else if (flag == "--fullscreen") cl.fullscreen = true;
     else if (flag == "--strict-gl") cl.strictGl = true;
     else if (flag == "--list-params") cl.listParams = true;
     else if (flag == "--list-presets") cl.listPresets = true;
+    else if (flag == "--list-hotkeys") cl.listHotkeys = true;
     else if (flag == "--info") cl.info = true;
     else if (flag == "--help") cl.help = true;
   }
@@ -123,7 +129,9 @@ std::string commandLineHelp(const std::string& program) {
     if (left.size() < 26) left.resize(26, ' ');
     s += left + " " + f.help + "\n";
   }
-  s += "Keys (windowed): F1 help, F11 fullscreen, F12 screenshot, Ctrl +/- UI scale, R reload shaders.\n";
+  s += "Keys (windowed): F1 help, F11 fullscreen, F12 screenshot, Ctrl +/- UI scale, R reload shaders,\n"
+       "H hide the UI, Tab orbit <-> fly camera (WASD, Q/E, mouse look), Home camera reset; --list-hotkeys\n"
+       "lists the lesson's own keys.\n";
   return s;
 }
 

@@ -24,14 +24,16 @@ struct CommandLine {
   std::string screenshot;         // write the last frame here (PNG)
   std::vector<std::string> sets;  // "name=value", applied after the preset, in order
   std::string preset;
-  std::string bench;    // per-pass GPU and CPU ms over the frames, CSV
-  std::string measure;  // ground-truth error figures of the last frame, JSON
-  std::string record;   // record the camera/light path to this file (windowed)
-  std::string replay;   // replay a recorded path over the frames
-  float uiScale = 0;    // 0: automatic (from the monitor's content scale)
-  bool showUi = false;  // headless: draw the UI into the screenshot too
+  std::string bench;      // per-pass GPU and CPU ms over the frames, CSV
+  std::string measure;    // ground-truth error figures of the last frame, JSON
+  std::string record;     // record the camera/light path to this file (windowed)
+  std::string replay;     // replay a recorded path over the frames
+  float uiScale = 0;      // 0: automatic (from the monitor's content scale)
+  bool showUi = false;    // headless: draw the UI into the screenshot too
+  bool showHelp = false;  // the F1 help open from the first frame (implies showUi)
+  std::string uiLayout;   // the last frame's UI rectangles, JSON (tests: nothing overlaps)
   bool fullscreen = false;
-  bool listParams = false, listPresets = false, help = false, info = false;
+  bool listParams = false, listPresets = false, listHotkeys = false, help = false, info = false;
   bool strictGl = false;  // any GL error fails the run (tests); also SHADOWLAB_STRICT_GL=1
 };
 

@@ -77,7 +77,7 @@ class LightingLesson : public Lesson {
     r.add("blinn", &p_.blinn, "Blinn's (N.H)^pow instead of the lecture's (R.V)^pow").hotkey = "B";
     r.add("textures", &p_.textures, "modulate: texture colour times material colour").hotkey = "T";
     r.add("gizmos", &p_.gizmos, "draw the lights").hotkey = "G";
-    r.add("animate", &p_.animate, "orbit the point light around the scene").hotkey = "A";
+    r.add("animate", &p_.animate, "orbit the point light around the scene").hotkey = "L";
 
     // The course's rig: the sun and a warm point light on, a blue spot off.
     const std::vector<Light> rig = lighting::courseLights();

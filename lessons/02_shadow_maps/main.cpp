@@ -97,7 +97,7 @@ class ShadowMapLesson : public Lesson {
           "the light frustum's near plane: depth precision depends on far/near");
     r.add("shadow.far", &p_.lightFar, 1, 500, "the light frustum's far plane");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: what remains in the shadow");
-    r.add("animate", &p_.animate, "swing the spot light around the scene").hotkey = "A";
+    r.add("animate", &p_.animate, "swing the spot light around the scene").hotkey = "L";
     Light& l = p_.light;
     l = {LightKind::Spot, {14.0f, 26.0f, 10.0f}};
     l.direction = glm::normalize(glm::vec3(-14.0f, -26.0f, -10.0f));

@@ -49,10 +49,11 @@ struct Params {
 const char* const kSummary =
     "Bias family, resolution, PCF family, a directional light fitted to the view with caster culling and "
     "texel snapping, cube maps, several lights.";
-const char* const kHelp = R"(Bias: bias.* sliders, B front-face culling, N normal offset, R receiver plane.
+const char* const kHelp =
+    R"(Bias: bias.* sliders, B front-face culling, N normal offset (0 <-> default), Y receiver plane.
 Filtering: P cycles nearest, hardware 2x2, N x N, Poisson. map_size 256..8192.
-Fit: fit=scene vs view; K caster culling (culled casters in the header); S snapping
-with D (camera drift): shimmer without it. 1 2 3: sun, point (cube map), spot.
+Fit: fit=scene vs view; K caster culling (culled casters in the header); U snapping
+with G (camera drift): shimmer without it. 1 2 3: sun, point (cube map), spot.
 T: stencil volumes on the same scene. M: error and aliasing heatmaps; O: god view.)";
 
 }  // namespace
@@ -70,15 +71,15 @@ class ShadowQualityLesson : public Lesson {
     r.addChoice("view", &p_.view, {"lit", "visibility", "sun_map"}, "lit, V of the measured light, or light 0's map")
         .hotkey = "V";
     declareImpl(r, &p_.impl, "whose caster-culling test and orthographic fit drive the directional light's pass");
-    r.add("drift", &p_.drift, "move the camera slowly along x (watch edges shimmer without snapping)").hotkey = "D";
+    r.add("drift", &p_.drift, "move the camera slowly along x (watch edges shimmer without snapping)").hotkey = "G";
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     maps_.declare(r, "");  // this lesson's subject: its parameters keep their bare names
     for (const auto& [name, key] : {std::pair{"filter", "P"},
                                     {"bias.normal_offset", "N"},
-                                    {"bias.receiver_plane", "R"},
+                                    {"bias.receiver_plane", "Y"},
                                     {"cull_front", "B"},
                                     {"fit", "F"},
-                                    {"snap", "S"},
+                                    {"snap", "U"},
                                     {"cull_casters", "K"}})
       r.setHotkey(name, key);
     volumes_.declare(r, "volumes.");

@@ -50,7 +50,7 @@ const char* const kSummary =
     "many lights.";
 const char* const kHelp = R"(V cycles the view: volumes, wireframe, the stencil count as a heatmap, silhouettes.
 Z: auto / z-pass / z-fail. Preset camera_in_volume: z-pass inverts the shadow, z-fail holds.
-S: silhouettes on the CPU or in a geometry shader. T: two-sided stencil or two passes.
+K: silhouettes on the CPU or in a geometry shader. T: two-sided stencil or two passes.
 The header counts objects drawn z-pass and z-fail, open meshes, and the fill per light.
 Press M: against ground truth the only errors are on shadow boundaries.)";
 
@@ -62,7 +62,7 @@ class ShadowVolumeLesson : public Lesson {
  public:
   void declare(ParamRegistry& r) override {
     volumes_.declare(r, "");  // this lesson's subject, first: its parameters keep their bare names
-    for (const auto& [name, key] : {std::pair{"view", "V"}, {"method", "Z"}, {"silhouettes", "S"}, {"two_sided", "T"}})
+    for (const auto& [name, key] : {std::pair{"view", "V"}, {"method", "Z"}, {"silhouettes", "K"}, {"two_sided", "T"}})
       r.setHotkey(name, key);
     tech::SceneCache::declare(r, &p_.scene, "procedural scene (deterministic from its seed)",
                               "scene size: silhouette edges and volume fill grow with it");
@@ -71,7 +71,7 @@ class ShadowVolumeLesson : public Lesson {
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: the light shadows never take away");
     r.add("specular", &p_.specular, 0, 1, "ks");
     r.add("shininess", &p_.shininess, 1, 256, "the specular exponent");
-    r.add("animate", &p_.animate, "orbit the point light: its volumes are rebuilt every frame").hotkey = "A";
+    r.add("animate", &p_.animate, "orbit the point light: its volumes are rebuilt every frame").hotkey = "L";
 
     // The course's rig: a sun, a warm point light (both on), a spot and a green point light (off; see many_lights).
     const std::vector<Light> rig = lighting::courseLights();

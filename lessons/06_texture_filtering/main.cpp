@@ -104,7 +104,7 @@ class TextureFilteringLesson : public Lesson {
     camera.aim({0, 1, 0}, 4.0f, 0.12f);  // low over the ground plane: every LOD to the horizon
     camera.farZ = 500.0f;
     r.addChoice("scene", &p_.scene, {"ground", "tunnel", "sphere"}, "a plane to the horizon, a tunnel, a sphere")
-        .hotkey = "S";
+        .hotkey = "G";
     r.addChoice("texture", &p_.texture, {"checker_fine", "checker", "text", "bricks", "zone_plate", "volume"},
                 "what is sampled: fine detail aliases; volume is a slice of a 3D texture")
         .hotkey = "T";
@@ -126,7 +126,7 @@ class TextureFilteringLesson : public Lesson {
     r.addColor("wrap.border", &p_.border, "the clamp-to-border colour");
     r.addChoice("sampling", &p_.sampling, {"hardware", "rip_map"},
                 "the GPU's mipmaps, or RIP maps filtered in the shader")
-        .hotkey = "R";
+        .hotkey = "I";
     r.addChoice("view", &p_.view, {"shaded", "mip_level", "anisotropy", "cpu_reference", "difference"},
                 "colour: the result, the mip level per pixel, the probe count, the CPU sampler, |GPU - CPU|")
         .hotkey = "V";

@@ -165,3 +165,31 @@ TEST_CASE("camera: lookFrom puts the orbit camera's eye where a recorded path ha
   CHECK(c.pitch == doctest::Approx(0.0f));
   CHECK_THROWS_AS(c.lookFrom(target, target), std::invalid_argument);
 }
+
+TEST_CASE("camera: the orbit camera's fly mode turns about the eye and moves eye and target together") {
+  OrbitCamera cam;
+  cam.aim({1.0f, 0.0f, -2.0f}, 10.0f, 0.3f);
+  cam.yaw = 0.4f;
+  const glm::vec3 eye = cam.position();
+  cam.lookAround(0.7f, -0.2f);
+  checkVec(cam.position(), eye);  // the eye stays
+  CHECK(cam.yaw == doctest::Approx(1.1f));
+  CHECK(cam.pitch == doctest::Approx(0.1f));
+  CHECK(glm::length(cam.target - eye) == doctest::Approx(10.0f));
+  cam.lookAround(0.0f, 5.0f);  // pitch clamped: never looking straight up
+  CHECK(cam.pitch < 0.5f * kPi);
+  checkVec(cam.position(), eye);
+
+  cam.yaw = 0.0f;
+  cam.pitch = 0.0f;  // looking along -z, level
+  cam.target = cam.position() + glm::vec3(0, 0, -10.0f);
+  const glm::vec3 start = cam.position();
+  cam.fly({1.0f, 0.0f, 0.0f});
+  checkVec(cam.position(), start + glm::vec3(1, 0, 0));
+  cam.fly({0.0f, 2.0f, 3.0f});
+  checkVec(cam.position(), start + glm::vec3(1, 2, -3));
+  cam.pitch = kPi / 6.0f;  // the eye above the target, looking 30 degrees down: forward follows the view
+  cam.target = glm::vec3(0.0f);
+  cam.fly({0.0f, 0.0f, 1.0f});
+  checkVec(cam.target, {0.0f, -0.5f, -std::sqrt(3.0f) / 2.0f});
+}

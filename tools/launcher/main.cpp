@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -214,11 +215,24 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--tour" && i + 1 < argc) tourDir = argv[++i];
-    else if (a == "--frames" && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--screenshot" && i + 1 < argc) screenshot = argv[++i];
+    else if (a == "--frames" && i + 1 < argc) {
+      const std::string n = argv[++i];
+      char* end = nullptr;
+      const long v = std::strtol(n.c_str(), &end, 10);
+      if (end == n.c_str() || *end != '\0' || v < 1 || v > 100000000) {
+        std::cerr << "shadowlab: --frames: '" << n << "' is not a whole number in [1, 100000000]\n";
+        return 2;
+      }
+      frames = int(v);
+    } else if (a == "--screenshot" && i + 1 < argc) screenshot = argv[++i];
     else if (a == "--help") {
-      std::cout << "usage: shadowlab [--tour DIR]\n  with a display: the lesson launcher\n"
-                   "  without one, or with --tour: render every lesson and preset into DIR (default out/tour)\n";
+      std::cout << "usage: shadowlab [--tour DIR] [--frames N] [--screenshot FILE]\n"
+                   "  with a display: the lesson launcher\n"
+                   "  without one, or with --tour: render every lesson and preset into DIR (default out/tour)\n"
+                   "  --tour DIR         render the tour into DIR\n"
+                   "  --frames N         the launcher window closes after N frames (tests)\n"
+                   "  --screenshot FILE  with --frames: the launcher's last frame as PNG\n"
+                   "  --help             this text\n";
       return 0;
     } else {
       std::cerr << "shadowlab: unknown argument '" << a
