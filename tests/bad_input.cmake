@@ -125,7 +125,13 @@ if(TARGET shadowlab)
 endif()
 
 # The UI's rectangles (--ui-layout): --show-help draws the help; at --ui-scale 2 header and panel do
-# not overlap; neither covers the A/B split's labels.
+# not overlap; neither covers the A/B split's labels, the god view or lesson 02's map inset.
 add_test(NAME gpu.framework.ui_layout COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_03_shadow_quality>
+         -DLESSON02=$<TARGET_FILE:lesson_02_shadow_maps>
          -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_ui_layout.cmake)
 set_tests_properties(gpu.framework.ui_layout PROPERTIES LABELS gpu)
+
+# An even PCF kernel was silently drawn as the next odd one (issue 19): refused, with the valid sizes.
+bad_input(03_shadow_quality.pcf_size_even $<TARGET_FILE:lesson_03_shadow_quality> 2
+          "pcf.size = 4: the N x N kernel needs an odd N; valid: 1, 3, 5, 7, 9"
+          -- --headless --frames 1 --size 160x90 --set pcf.size=4)

@@ -329,6 +329,7 @@ class Runner {
     fi.eye = lesson_.camera.position();
     lesson_.timers.setFrame(frame);
     lesson_.debug.clear();
+    lesson_.insets.clear();
     return fi;
   }
 
@@ -386,6 +387,7 @@ class Runner {
     if (godView_.enabled()) {
       lesson_.timers.setEnabled(false);
       godView_.draw(fi, lesson_.camera, lesson_.debug, [&](const FrameInfo& g) { lesson_.render(g); });
+      lesson_.insets.push_back(godView_.inset(fi.width, fi.height));
       lesson_.timers.setEnabled(true);
       glViewport(0, 0, fi.width, fi.height);
     }
@@ -402,6 +404,7 @@ class Runner {
     if (!initError_.empty()) errors.insert(errors.begin(), initError_);
     ui_.header({&info_, gl::caps().summary(), frameMsAvg_, &lesson_.timers.passes(), &shown, errors, status_,
                 gl::caps().softwareRenderer, budget_.label()});
+    ui_.reserve(lesson_.insets, height_);  // the panel stops above the insets
     ui_.paramPanel(params_, presets_, status_);
     const Measurement* measured = info_.measurable ? &measurement_ : nullptr;
     if (ab_.enabled()) ui_.splitLabels(ab_.divider(), ab_.labelA(measured), ab_.labelB());

@@ -10,22 +10,36 @@ void GodView::declare(ParamRegistry& r) {
   r.add("view.god", &enabled_, "a second camera outside the scene: the view frustum, light frusta and cones, bounds")
       .hotkey = "O";
   r.add("view.god_size", &size_, 0.2f, 1.0f, "the god view inset's width, as a fraction of the frame");
-  r.add("view.god_distance", &distance_, 1.0f, 10.0f, "how far out the god camera stands, in viewer distances");
+  r.add(
+      "view.god_distance", &distance_, 0.3f, 10.0f,
+      "how far out the god camera stands: 1 fits the bounding sphere of the scene, the lights' shapes and the viewer");
   r.add("view.god_yaw", &yaw_, -3.2f, 3.2f, "the god camera's angle around the scene, relative to the viewer");
+}
+
+Inset GodView::inset(int frameWidth, int frameHeight) const {
+  const int w = std::max(16, int(float(frameWidth) * size_));
+  const int h = std::max(16, int(float(w) * float(frameHeight) / float(frameWidth)));
+  return {"god view inset", frameWidth - w - 8, 8, w, h};
 }
 
 void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const DebugDraw& shapes,
                    const std::function<void(const FrameInfo&)>& renderLesson) {
-  const int w = std::max(16, int(float(frame.width) * size_));
-  const int h = std::max(16, int(float(w) * float(frame.height) / float(frame.width)));
+  const Inset corner = inset(frame.width, frame.height);
+  const int w = corner.width, h = corner.height;
   if (target_.width != w || target_.height != h) target_ = gl::makeRenderTarget(w, h, "god view");
   if (!lines_.valid()) lines_.build();
 
-  OrbitCamera god = viewer;
-  god.distance = viewer.distance * distance_;
-  god.yaw = viewer.yaw + yaw_;
-  god.pitch = std::max(viewer.pitch, 0.6f);
-  god.farZ = viewer.farZ * distance_ * 2.0f;
+  // Frame what the lesson's shapes span (scene bounds, light frusta and cones) and the viewer's eye;
+  // the viewer's own frustum reaches its far plane and would shrink everything else to a dot.
+  glm::vec3 lo = viewer.position(), hi = lo;
+  for (const auto& l : shapes.lines()) {
+    lo = glm::min(lo, glm::min(l.a, l.b));
+    hi = glm::max(hi, glm::max(l.a, l.b));
+  }
+  OrbitCamera from = viewer;
+  from.yaw = viewer.yaw + yaw_;
+  from.pitch = std::max(viewer.pitch, 0.6f);
+  const OrbitCamera god = frameBox(from, lo, hi, float(w) / float(h), distance_);
   FrameInfo g = frame;
   g.framebuffer = target_.fbo.id();
   g.width = w;
@@ -74,7 +88,7 @@ void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const Debu
   glDepthFunc(GL_LESS);
 
   // Into the bottom-right corner of the frame, with a thin frame around it.
-  const int x0 = frame.width - w - 8, y0 = 8;
+  const int x0 = corner.x, y0 = corner.y;
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, frame.framebuffer);
   glEnable(GL_SCISSOR_TEST);
   glScissor(x0 - 2, y0 - 2, w + 4, h + 4);

@@ -19,11 +19,13 @@ class GodView {
   // Renders the inset into `frame`'s framebuffer. `renderLesson` draws the lesson for a FrameInfo.
   void draw(const FrameInfo& frame, const OrbitCamera& viewer, const DebugDraw& shapes,
             const std::function<void(const FrameInfo&)>& renderLesson);
+  // Where draw() puts the inset in a frame of this size (bottom right).
+  Inset inset(int frameWidth, int frameHeight) const;
 
  private:
   bool enabled_ = false;
   float size_ = 0.4f;      // fraction of the frame's width
-  float distance_ = 2.5f;  // times the viewer's distance
+  float distance_ = 1.0f;  // times the distance at which their bounding sphere just fits: all of it in view
   float yaw_ = 0.9f;       // radians around the viewer's yaw
   gl::RenderTarget target_;
   gl::VertexArray vao_;

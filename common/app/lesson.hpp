@@ -45,6 +45,13 @@ struct FrameInfo {
   bool godView = false;
 };
 
+// A corner of the frame a lesson (or the framework's god view) draws a view into, in GL pixels
+// (origin bottom-left): the UI keeps clear of it.
+struct Inset {
+  std::string name;
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
 // Counters of skipped or spent work that the header shows next to the timings
 // ("culled casters 12 / 40", "shadow triangles 120k").
 struct Counter {
@@ -72,6 +79,7 @@ class Lesson {
   gl::GpuTimers timers;
   std::vector<Counter> counters;  // refilled by the lesson each frame
   DebugDraw debug;                // shapes for the god view; cleared by the framework every frame
+  std::vector<Inset> insets;      // views drawn into corners this frame; cleared by the framework
 
   gl::TimerScope scope(const std::string& pass) { return gl::TimerScope(timers, pass); }
 };

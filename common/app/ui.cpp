@@ -61,11 +61,20 @@ void Ui::newFrame(double dt, int width, int height) {
   io.DeltaTime = float(std::max(dt, 1e-4));
   ImGui::NewFrame();
   layout_.clear();
+  reserved_.clear();
 }
 
 void Ui::recordWindow(const char* name) {
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
   layout_.push_back({name, pos.x, pos.y, size.x, size.y});
+}
+
+void Ui::reserve(const std::vector<Inset>& insets, int framebufferHeight) {
+  for (const Inset& i : insets) {
+    const Rect r{i.name, float(i.x), float(framebufferHeight - i.y - i.height), float(i.width), float(i.height)};
+    reserved_.push_back(r);
+    layout_.push_back(r);
+  }
 }
 
 void writeUiLayout(const std::string& path, int width, int height, const std::vector<Ui::Rect>& rects) {
@@ -92,7 +101,7 @@ void Ui::header(const HeaderData& d) {
   ImGui::SetNextWindowPos(ImVec2(8 * scale_, 8 * scale_), ImGuiCond_Always);
   // At most the left 60 % and 60 % of the height: the panel takes the right, the picture the rest.
   ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(vp->Size.x * kHeaderShare - 16 * scale_, vp->Size.y * 0.6f));
-  ImGui::SetNextWindowBgAlpha(0.8f);
+  ImGui::SetNextWindowBgAlpha(1.0f);  // opaque: a see-through panel darkens the picture like a shadow
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
   ImGui::Begin("shadowlab", nullptr, flags);
@@ -238,8 +247,13 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   ImGui::SetNextWindowSize(ImVec2(width, 0), ImGuiCond_Appearing);
   // Its bottom stays above the A/B split's labels (2.6 lines from the bottom).
   const float labels = ImGui::GetTextLineHeightWithSpacing() * 3.2f;
-  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(vp->Size.x, vp->Size.y - 16 * scale_ - labels));
-  ImGui::SetNextWindowBgAlpha(0.85f);
+  float maxHeight = vp->Size.y - 16 * scale_ - labels;
+  const float left = vp->Size.x - 8 * scale_ - width;
+  for (const Rect& r : reserved_)  // an inset under the panel's column: stop above it
+    if (r.x < vp->Size.x && r.x + r.w > left) maxHeight = std::min(maxHeight, r.y - 16 * scale_);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
+                                      ImVec2(vp->Size.x, std::max(maxHeight, 3 * ImGui::GetFrameHeight())));
+  ImGui::SetNextWindowBgAlpha(1.0f);  // opaque, as the header
   ImGui::Begin("Parameters", nullptr, ImGuiWindowFlags_NoSavedSettings);
 
   // Presets: load one, or save the current state under a name.

@@ -38,6 +38,9 @@ class Ui {
   void help(const LessonInfo& info, const ParamRegistry& params, bool* open);
   // A/B split: a label at the top of each half.
   void splitLabels(float divider, const std::string& a, const std::string& b);
+  // Corners the frame shows views in (after newFrame, before paramPanel): the panel stays above
+  // those in its column; they are in layout() too.
+  void reserve(const std::vector<Inset>& insets, int framebufferHeight);
   // Returns true when a parameter changed.
   bool paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status);
 
@@ -57,6 +60,7 @@ class Ui {
   char presetName_[64] = "my_preset";
   int presetIndex_ = -1;
   std::vector<Rect> layout_;
+  std::vector<Rect> reserved_;  // this frame's insets, top-left origin
 };
 
 // --ui-layout FILE: the viewport and the UI's rectangles as JSON. Throws std::runtime_error.

@@ -64,6 +64,20 @@ void OrbitCamera::fly(const glm::vec3& local) {
   target += right * local.x + glm::vec3(0, local.y, 0) + f * local.z;
 }
 
+OrbitCamera frameBox(const OrbitCamera& base, const glm::vec3& lo, const glm::vec3& hi, float aspect,
+                     float distanceFactor) {
+  OrbitCamera c = base;
+  const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
+  const float halfFov = 0.5f * std::min(c.fovY, 2.0f * std::atan(std::tan(0.5f * c.fovY) * aspect));
+  c.target = 0.5f * (lo + hi);
+  c.distance = distanceFactor * radius / std::sin(halfFov);
+  c.maxDistance = std::max(c.maxDistance, c.distance);
+  c.minDistance = std::min(c.minDistance, c.distance);
+  c.nearZ = std::max(c.distance - 2.0f * radius, c.distance * 1e-3f);
+  c.farZ = std::max(c.farZ, c.distance + 2.0f * radius);
+  return c;
+}
+
 void OrbitCamera::aim(const glm::vec3& t, float d, float p) {
   target = t;
   distance = d;

@@ -33,6 +33,12 @@ struct OrbitCamera {
   void fly(const glm::vec3& local);
 };
 
+// `base` (its yaw, pitch, field of view) moved to look at the box [lo, hi] from `distanceFactor`
+// times the distance at which the box's bounding sphere just fits the narrower field of view of an
+// `aspect` image; near and far planes around the sphere. The god view frames the scene with it.
+OrbitCamera frameBox(const OrbitCamera& base, const glm::vec3& lo, const glm::vec3& hi, float aspect,
+                     float distanceFactor);
+
 struct FlyCamera {
   glm::vec3 position{0.0f, 2.0f, 8.0f};
   float yaw = 0.0f;    // radians around +y, 0 looks along -z

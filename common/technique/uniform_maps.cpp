@@ -30,6 +30,10 @@ void UniformShadowMaps::declare(ParamRegistry& r, const std::string& n) {
   r.addChoice(n + "filter", &p_.filter, {"nearest", "hardware_2x2", "pcf_nxn", "poisson"},
               "one comparison, GL_LINEAR compare (2x2), N x N taps, or 16 rotated Poisson taps");
   r.add(n + "pcf.size", &p_.pcfSize, 1, 9, "N of the N x N kernel (odd)");
+  r.addCheck({n + "pcf.size"}, [this, name = n + "pcf.size"](const ParamRegistry&) {
+    if (p_.pcfSize % 2 == 1) return std::string();  // an even N has no centre tap
+    return name + " = " + std::to_string(p_.pcfSize) + ": the N x N kernel needs an odd N; valid: 1, 3, 5, 7, 9";
+  });
   r.add(n + "pcf.radius", &p_.poissonRadius, 0.5f, 8, "Poisson disk radius in texels");
   r.add(n + "bias.constant", &p_.constantBias, 0, 0.1f, "constant depth bias in the shader");
   r.add(n + "bias.slope", &p_.slopeBias, 0, 0.02f, "slope-scaled bias in the shader: times tan(theta)");
@@ -194,8 +198,7 @@ std::vector<std::string> UniformShadowMaps::shaderDefines() const {
     types +=
         std::string(i ? ", " : "") + std::to_string(i < int(lights_.size()) ? int(lights_[std::size_t(i)].type) : 0);
   return {"SHADOW_TYPES " + types, "SHADOW_FILTER " + std::to_string(int(p_.filter)),
-          "PCF_SIZE " + std::to_string(p_.pcfSize | 1),
-          std::string("RECEIVER_PLANE ") + (p_.receiverPlane ? "1" : "0")};
+          "PCF_SIZE " + std::to_string(p_.pcfSize), std::string("RECEIVER_PLANE ") + (p_.receiverPlane ? "1" : "0")};
 }
 
 // ==== 3. what the lit pass reads: per light its matrix, texel size and map ======================
@@ -203,7 +206,7 @@ void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) co
   lit.set("uCubeNear", p_.cubeNear);
   lit.set("uCubeFar", std::max(p_.cubeFar, p_.cubeNear + 0.1f));
   lit.set("uFilter", int(p_.filter));
-  lit.set("uPcfSize", p_.pcfSize | 1);  // an even N has no centre tap: the next odd one
+  lit.set("uPcfSize", p_.pcfSize);  // odd: declare()'s check refuses an even N
   lit.set("uPoissonRadius", p_.poissonRadius);
   lit.set("uConstantBias", p_.constantBias);
   lit.set("uSlopeBias", p_.slopeBias);

@@ -202,6 +202,7 @@ class ShadowMapLesson : public Lesson {
       const int side = full ? std::min(f.width, f.height) : std::min(f.width, f.height) / 3;
       mapView_.draw(map_, full ? (f.width - side) / 2 : f.width - side - 8, full ? 0 : 8, side, side,
                     glm::vec2(p_.lightNear, p_.lightFar));
+      if (!full) insets.push_back({"shadow-map inset", f.width - side - 8, 8, side, side});
     }
     if (p_.view != View::ShadowMap) {
       auto t = scope("gizmo");

@@ -4,7 +4,7 @@
 #   (the control);
 # - at --ui-scale 2 on 1280x720 the header and the parameter panel do not overlap and stay inside
 #   the frame; with the A/B split on, neither covers the split's labels.
-# Run: cmake -DLESSON=... -DOUT_DIR=... -P this
+# Run: cmake -DLESSON=<lesson 03> -DLESSON02=<lesson 02> -DOUT_DIR=... -P this
 function(layout name)
   execute_process(COMMAND ${LESSON} --headless --frames 2 --strict-gl ${ARGN} --ui-layout ${OUT_DIR}/layout_${name}.json
                   RESULT_VARIABLE rc ERROR_VARIABLE err)
@@ -91,3 +91,15 @@ check_apart("${json}" Parameters "A label")
 check_apart("${json}" Parameters "B label")
 check_apart("${json}" shadowlab "A label")
 check_apart("${json}" shadowlab "B label")
+
+# The insets: lesson 03's god view and lesson 02's shadow map stay clear of the header and panel,
+# at the default UI scale and at 2.
+foreach(scale 1 2)
+  layout(god_${scale} --size 1280x720 --show-ui --ui-scale ${scale} --set view.god=true)
+  check_apart("${json}" Parameters "god view inset")
+  check_apart("${json}" shadowlab "god view inset")
+endforeach()
+set(LESSON ${LESSON02})
+layout(map_inset --size 1280x720 --show-ui)
+check_apart("${json}" Parameters "shadow-map inset")
+check_apart("${json}" shadowlab "shadow-map inset")

@@ -2,6 +2,7 @@
 // clamps, and projections that map near and far to GL's -1 and +1.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <stdexcept>
@@ -192,4 +193,30 @@ TEST_CASE("camera: the orbit camera's fly mode turns about the eye and moves eye
   cam.target = glm::vec3(0.0f);
   cam.fly({0.0f, 0.0f, 1.0f});
   checkVec(cam.target, {0.0f, -0.5f, -std::sqrt(3.0f) / 2.0f});
+}
+
+TEST_CASE("camera: frameBox puts every corner of the box inside the image, from any side") {
+  const glm::vec3 lo(-30.0f, 0.0f, -30.0f), hi(30.0f, 25.0f, 30.0f);  // a city block and its lights
+  for (float aspect : {16.0f / 9.0f, 1.0f, 0.5f})
+    for (float yaw : {0.0f, 0.9f, 2.5f})
+      for (float factor : {1.0f, 1.5f}) {
+        OrbitCamera base;
+        base.yaw = yaw;
+        base.pitch = 0.6f;
+        const OrbitCamera c = frameBox(base, lo, hi, aspect, factor);
+        const glm::mat4 viewProj = c.projection(aspect) * c.view();
+        float extent = 0.0f;
+        for (int i = 0; i < 8; ++i) {
+          const glm::vec3 p((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+          const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+          INFO("aspect " << aspect << " yaw " << yaw << " factor " << factor << " corner " << i);
+          REQUIRE(clip.w > 0.0f);
+          const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+          CHECK(std::abs(ndc.x) <= 1.0f);
+          CHECK(std::abs(ndc.y) <= 1.0f);
+          CHECK(std::abs(ndc.z) <= 1.0f);  // between the near and far planes
+          extent = std::max({extent, std::abs(ndc.x), std::abs(ndc.y)});
+        }
+        CHECK(extent > 0.4f / factor);  // and not a dot in the middle
+      }
 }
