@@ -330,6 +330,7 @@ class Runner {
     lesson_.timers.setFrame(frame);
     lesson_.debug.clear();
     lesson_.insets.clear();
+    lesson_.legends.clear();
     return fi;
   }
 
@@ -402,6 +403,9 @@ class Runner {
     for (auto& [name, value] : measurement_.summary()) shown.push_back({name, value});
     std::vector<std::string> errors = shaderErrors();
     if (!initError_.empty()) errors.insert(errors.begin(), initError_);
+    std::vector<Legend> legends = lesson_.legends;
+    if (const auto l = measurement_.legend()) legends.push_back(*l);
+    ui_.legends(legends);  // first: the header stops above them
     ui_.header({&info_, gl::caps().summary(), frameMsAvg_, &lesson_.timers.passes(), &shown, errors, status_,
                 gl::caps().softwareRenderer, budget_.label()});
     ui_.reserve(lesson_.insets, height_);  // the panel stops above the insets

@@ -80,6 +80,7 @@ class Lesson {
   std::vector<Counter> counters;  // refilled by the lesson each frame
   DebugDraw debug;                // shapes for the god view; cleared by the framework every frame
   std::vector<Inset> insets;      // views drawn into corners this frame; cleared by the framework
+  std::vector<Legend> legends;    // colour keys of the heatmaps drawn this frame; cleared by the framework
 
   gl::TimerScope scope(const std::string& pass) { return gl::TimerScope(timers, pass); }
 };

@@ -3,12 +3,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 
 #include "core/paths.hpp"
 #include "gl/caps.hpp"
 #include "gl/gl.hpp"
 #include "gl/texture.hpp"
 #include "measure/ground_truth.hpp"
+#include "measure/metrics.hpp"
 
 namespace shadowlab {
 namespace {
@@ -286,6 +288,31 @@ void Measurement::drawOverlay(unsigned frameFbo) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
   gl::countDraws();
   glDisable(GL_BLEND);
+}
+
+namespace {
+glm::vec3 toColor(measure::Rgb8 c) { return glm::vec3(c.r, c.g, c.b) / 255.0f; }
+}  // namespace
+
+std::optional<Legend> Measurement::legend() const {
+  if (overlay_ == Overlay::Error)
+    return Legend{"error against ground truth",
+                  {{toColor(measure::kLeakColor), "light leak: lit, should be shadowed"},
+                   {toColor(measure::kFalseShadowColor), "false shadow: shadowed, should be lit"}}};
+  if (overlay_ == Overlay::Aliasing) {
+    Legend l{"aliasing m: screen pixels per shadow texel", {}};
+    for (const auto& [m, label] :
+         std::initializer_list<std::pair<float, const char*>>{{1.0f / 16, "1/16"},
+                                                              {0.25f, "1/4"},
+                                                              {1.0f, "1: alias-free up to here"},
+                                                              {2.0f, "2"},
+                                                              {4.0f, "4"},
+                                                              {8.0f, "8"},
+                                                              {16.0f, "16 and more"}})
+      l.entries.push_back({toColor(measure::aliasingColor(m)), std::string("m = ") + label});
+    return l;
+  }
+  return std::nullopt;
 }
 
 std::vector<std::pair<std::string, std::string>> Measurement::summary() const {

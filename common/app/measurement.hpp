@@ -27,6 +27,17 @@
 
 namespace shadowlab {
 
+// A heatmap's colour key: the header of every view that colours a quantity draws one (error,
+// aliasing m, stencil counts, mip levels), so a projected picture can be read from the back row.
+struct Legend {
+  struct Entry {
+    glm::vec3 color;  // linear 0..1, as drawn
+    std::string label;
+  };
+  std::string title;
+  std::vector<Entry> entries;
+};
+
 namespace measure {
 class GroundTruth;
 }
@@ -89,6 +100,8 @@ class Measurement {
   const MeasureResult& result() const { return result_; }
   // One-line figures for the header.
   std::vector<std::pair<std::string, std::string>> summary() const;
+  // The shown overlay's colour key (none without an overlay).
+  std::optional<Legend> legend() const;
 
  private:
   void ensureTarget(int width, int height);

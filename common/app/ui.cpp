@@ -62,6 +62,7 @@ void Ui::newFrame(double dt, int width, int height) {
   ImGui::NewFrame();
   layout_.clear();
   reserved_.clear();
+  legendTop_ = 1e9f;
 }
 
 void Ui::recordWindow(const char* name) {
@@ -75,6 +76,30 @@ void Ui::reserve(const std::vector<Inset>& insets, int framebufferHeight) {
     reserved_.push_back(r);
     layout_.push_back(r);
   }
+}
+
+void Ui::legends(const std::vector<Legend>& legends) {
+  if (legends.empty()) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(8 * scale_, vp->Size.y - 8 * scale_), ImGuiCond_Always, ImVec2(0, 1));
+  ImGui::SetNextWindowBgAlpha(1.0f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoInputs;
+  ImGui::Begin("Legend", nullptr, flags);
+  for (const Legend& l : legends) {
+    ImGui::TextUnformatted(l.title.c_str());
+    for (const Legend::Entry& e : l.entries) {
+      const ImVec2 box(ImGui::GetFontSize() * 1.6f, ImGui::GetFontSize());
+      ImGui::ColorButton(e.label.c_str(), ImVec4(e.color.x, e.color.y, e.color.z, 1.0f),
+                         ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoBorder, box);
+      ImGui::SameLine();
+      ImGui::TextUnformatted(e.label.c_str());
+    }
+  }
+  recordWindow("Legend");
+  legendTop_ = ImGui::GetWindowPos().y;
+  ImGui::End();
 }
 
 void writeUiLayout(const std::string& path, int width, int height, const std::vector<Ui::Rect>& rects) {
@@ -100,7 +125,8 @@ void Ui::header(const HeaderData& d) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(8 * scale_, 8 * scale_), ImGuiCond_Always);
   // At most the left 60 % and 60 % of the height: the panel takes the right, the picture the rest.
-  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(vp->Size.x * kHeaderShare - 16 * scale_, vp->Size.y * 0.6f));
+  const float maxHeight = std::max(std::min(vp->Size.y * 0.6f, legendTop_ - 16 * scale_), 3 * ImGui::GetFrameHeight());
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(vp->Size.x * kHeaderShare - 16 * scale_, maxHeight));
   ImGui::SetNextWindowBgAlpha(1.0f);  // opaque: a see-through panel darkens the picture like a shadow
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;

@@ -41,6 +41,9 @@ class Ui {
   // Corners the frame shows views in (after newFrame, before paramPanel): the panel stays above
   // those in its column; they are in layout() too.
   void reserve(const std::vector<Inset>& insets, int framebufferHeight);
+  // The colour keys of this frame's heatmaps, bottom left, one under the other (before header():
+  // the header then stops above them).
+  void legends(const std::vector<Legend>& legends);
   // Returns true when a parameter changed.
   bool paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status);
 
@@ -61,6 +64,7 @@ class Ui {
   int presetIndex_ = -1;
   std::vector<Rect> layout_;
   std::vector<Rect> reserved_;  // this frame's insets, top-left origin
+  float legendTop_ = 1e9f;      // the legend's top edge this frame (none: far below)
 };
 
 // --ui-layout FILE: the viewport and the UI's rectangles as JSON. Throws std::runtime_error.

@@ -342,10 +342,23 @@ void StencilVolumes::measureFill(const Frame& f, int i, const VolumeCache& c, co
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+namespace {
+// The stencil counts 1..5; 0 shows the frame; anything else (6+, wrapped negatives) is kOtherCount.
+constexpr glm::vec3 kCountRamp[] = {
+    {0.1f, 0.1f, 0.6f}, {0.1f, 0.6f, 0.9f}, {0.2f, 0.8f, 0.3f}, {0.9f, 0.9f, 0.2f}, {1.0f, 0.5f, 0.1f}};
+constexpr glm::vec3 kOtherCount{0.9f, 0.1f, 0.1f};
+}  // namespace
+
+std::optional<Legend> StencilVolumes::legend() const {
+  if (p_.view != StencilVolumeParams::View::Stencil) return std::nullopt;
+  Legend l{"stencil count: volumes entered minus left (0: lit)", {}};
+  for (int k = 1; k <= 5; ++k) l.entries.push_back({kCountRamp[k - 1], std::to_string(k)});
+  l.entries.push_back({kOtherCount, "6 and more, or negative (a broken volume)"});
+  return l;
+}
+
 // The stencil count as colours: one full-screen triangle per count, where the stencil equals it.
 void StencilVolumes::drawStencilHeatmap() {
-  static const glm::vec3 ramp[] = {
-      {0.1f, 0.1f, 0.6f}, {0.1f, 0.6f, 0.9f}, {0.2f, 0.8f, 0.3f}, {0.9f, 0.9f, 0.2f}, {1.0f, 0.5f, 0.1f}};
   glDisable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -354,7 +367,7 @@ void StencilVolumes::drawStencilHeatmap() {
   withoutMeasurement([&] {
     for (int k = 0; k <= 5; ++k) {  // k = 0: every count not listed (6+, and wrapped negatives) in red
       glStencilFunc(k == 0 ? GL_NOTEQUAL : GL_EQUAL, k, 0xff);
-      heat_.set("uColor", glm::vec4(k == 0 ? glm::vec3(0.9f, 0.1f, 0.1f) : ramp[k - 1], 0.7f));
+      heat_.set("uColor", glm::vec4(k == 0 ? kOtherCount : kCountRamp[k - 1], 0.7f));
       glDrawArrays(GL_TRIANGLES, 0, 3);
       gl::countDraws();
     }

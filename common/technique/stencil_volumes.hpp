@@ -13,6 +13,7 @@
 // caps unclipped. Open meshes are found when the adjacency is built: skipped, or z-pass only.
 // The maths is GL-free in algorithms/shadow_volume; the shaders are in shaders/common/volumes/.
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "algorithms/shadow_volume.hpp"
@@ -60,6 +61,8 @@ class StencilVolumes : public ShadowTechnique {
 
   StencilVolumeHooks hooks;
   StencilVolumeParams& params() { return p_; }
+  // The stencil view's colour key (none in the other views).
+  std::optional<Legend> legend() const;
 
  private:
   // One light's volumes for every caster, built on the CPU and kept on the GPU until the light,

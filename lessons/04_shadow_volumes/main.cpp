@@ -106,6 +106,7 @@ class ShadowVolumeLesson : public Lesson {
     // ==== 1.-4. depth and ambient; per light stencil counting and the lit pass; the views ========
     volumes_.renderLit(c, {glm::vec3(p_.ambient), 0, p_.specular, p_.shininess});
     if (!f.godView) counters = volumes_.stats().counters();
+    if (const auto key = volumes_.legend(); key && !f.godView) legends.push_back(*key);
   }
 
  private:

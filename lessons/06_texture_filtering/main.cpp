@@ -98,6 +98,23 @@ probes under the cursor; view=difference compares the GPU with the CPU reference
 
 }  // namespace
 
+// The colour key of the mip-level and anisotropy views: levelColour() of scene.frag, as drawn.
+Legend levelLegend(View view) {
+  static const glm::vec3 palette[8] = {{0.2f, 0.2f, 1.0f}, {0.0f, 0.8f, 1.0f}, {0.0f, 0.9f, 0.3f}, {0.8f, 1.0f, 0.0f},
+                                       {1.0f, 0.7f, 0.0f}, {1.0f, 0.2f, 0.0f}, {0.9f, 0.0f, 0.6f}, {1.0f, 1.0f, 1.0f}};
+  const auto colour = [](float level) {
+    const float l = std::clamp(level, 0.0f, 7.0f);
+    const int i = int(l);
+    return glm::mix(palette[i], palette[std::min(i + 1, 7)], l - float(i));
+  };
+  Legend key{view == View::MipLevel ? "mip level the hardware picks" : "anisotropic probes N", {}};
+  for (int i = 0; i < (view == View::MipLevel ? 8 : 5); ++i)
+    key.entries.push_back(view == View::MipLevel
+                              ? Legend::Entry{colour(float(i)), "level " + std::to_string(i) + (i == 7 ? "+" : "")}
+                              : Legend::Entry{colour(float(i) * 1.75f), "N = " + std::to_string(1 << i)});
+  return key;
+}
+
 class TextureFilteringLesson : public Lesson {
  public:
   void declare(ParamRegistry& r) override {
@@ -191,6 +208,7 @@ class TextureFilteringLesson : public Lesson {
     {
       auto t = scope("scene");
       drawScene(target_, samplerState(), f.width, f.height);
+      if (p_.view == View::MipLevel || p_.view == View::Anisotropy) legends.push_back(levelLegend(p_.view));
     }
     // ==== 2. readout under the cursor: footprint, lambda, anisotropic probes =========================
     {

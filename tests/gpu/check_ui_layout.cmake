@@ -3,7 +3,8 @@
 # - --show-help draws the F1 help (headless screenshots for slides and docs); --show-ui alone does not
 #   (the control);
 # - at --ui-scale 2 on 1280x720 the header and the parameter panel do not overlap and stay inside
-#   the frame; with the A/B split on, neither covers the split's labels.
+#   the frame; with the A/B split on, neither covers the split's labels; neither covers the god view
+#   or lesson 02's map inset; a heatmap's legend appears with it, clear of both.
 # Run: cmake -DLESSON=<lesson 03> -DLESSON02=<lesson 02> -DOUT_DIR=... -P this
 function(layout name)
   execute_process(COMMAND ${LESSON} --headless --frames 2 --strict-gl ${ARGN} --ui-layout ${OUT_DIR}/layout_${name}.json
@@ -99,6 +100,20 @@ foreach(scale 1 2)
   check_apart("${json}" Parameters "god view inset")
   check_apart("${json}" shadowlab "god view inset")
 endforeach()
+# Heatmaps carry a colour key (the aliasing overlay: m's scale), clear of the header and the panel.
+foreach(scale 1 2)
+  layout(legend_${scale} --size 1280x720 --show-ui --ui-scale ${scale} --set measure.overlay=aliasing)
+  check_apart("${json}" Legend shadowlab)
+  check_apart("${json}" Legend Parameters)
+  check_inside("${json}" Legend 1280 720)
+endforeach()
+has("${json}" Legend legend_with)
+layout(no_legend --size 640x360 --show-ui)
+has("${json}" Legend legend_without)
+if(legend_without OR NOT legend_with)
+  message(FATAL_ERROR "legend with an overlay ${legend_with}, without one ${legend_without} (want TRUE, FALSE)")
+endif()
+
 set(LESSON ${LESSON02})
 layout(map_inset --size 1280x720 --show-ui)
 check_apart("${json}" Parameters "shadow-map inset")
