@@ -126,7 +126,7 @@ ImageF visibilityFromMask(const Image8& mask, int channel) {
   return out;
 }
 
-SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference) {
+SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference, float umbraLevel) {
   checkPair(technique, reference, "compareSoft");
   SoftShadowErrors e;
   double sum = 0;
@@ -136,8 +136,14 @@ SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference) {
     sum += d * d;
     e.maxAbs = std::max(e.maxAbs, std::abs(d));
     ++e.pixels;
+    const bool refUmbra = reference.data[i] < umbraLevel, techUmbra = technique.data[i] < umbraLevel;
+    e.umbraPixels += refUmbra;
+    e.umbraOver += techUmbra && !refUmbra;
+    e.umbraUnder += refUmbra && !techUmbra;
   }
   e.rmse = e.pixels ? std::sqrt(sum / double(e.pixels)) : 0.0;
+  e.umbraOverPct = e.pixels ? 100.0 * double(e.umbraOver) / double(e.pixels) : 0.0;
+  e.umbraUnderPct = e.pixels ? 100.0 * double(e.umbraUnder) / double(e.pixels) : 0.0;
   return e;
 }
 

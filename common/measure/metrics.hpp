@@ -40,12 +40,20 @@ HardShadowErrors compareHard(const ImageF& technique, const ImageF& reference, c
 ImageF visibilityFromMask(const Image8& mask, int channel = 0);
 
 // ---- Soft shadows ------------------------------------------------------------------------------
+// The umbra is where (almost) none of the light is seen: visibility below `umbraLevel`. A technique
+// over-estimates the umbra where it is black but the reference sees part of the light (a hard
+// shadow kept as the umbra), and under-estimates it where the reference is black and it is not
+// (a blurred umbra); both in % of the compared pixels.
+inline constexpr float kUmbraLevel = 0.02f;
 struct SoftShadowErrors {
   std::size_t pixels = 0;  // facing pixels compared
   double rmse = 0;         // visibility units, [0,1]
   double maxAbs = 0;
+  std::size_t umbraPixels = 0;  // the reference's umbra
+  std::size_t umbraOver = 0, umbraUnder = 0;
+  double umbraOverPct = 0, umbraUnderPct = 0;
 };
-SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference);
+SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference, float umbraLevel = kUmbraLevel);
 
 // ---- Heatmaps (RGBA, alpha 255; 0 for background) ----------------------------------------------
 inline constexpr Rgb8 kLeakColor{255, 48, 32};          // lit, should be shadowed

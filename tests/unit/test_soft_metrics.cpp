@@ -1,0 +1,42 @@
+// measure.metrics for soft shadows: the umbra over- and under-estimate next to the RMSE (lesson 05).
+#include <doctest/doctest.h>
+
+#include "measure/ground_truth.hpp"
+#include "measure/metrics.hpp"
+
+using namespace shadowlab;
+using namespace shadowlab::measure;
+
+namespace {
+ImageF row(std::vector<float> values) {
+  ImageF img;
+  img.width = int(values.size());
+  img.height = 1;
+  img.channels = 1;
+  img.data = std::move(values);
+  return img;
+}
+}  // namespace
+
+TEST_CASE("measure.metrics: the umbra a soft technique over- and under-estimates") {
+  // Pixels: agreed umbra, agreed lit, a hard shadow kept where the truth sees 30 % of the light
+  // (over), a blurred umbra (under), a penumbra both see, and one not facing the light.
+  const ImageF ref = row({0.0f, 1.0f, 0.3f, 0.0f, 0.5f, kNotFacing});
+  const ImageF tech = row({0.01f, 1.0f, 0.0f, 0.2f, 0.45f, 0.0f});
+  const SoftShadowErrors e = compareSoft(tech, ref);
+  CHECK(e.pixels == 5);
+  CHECK(e.umbraPixels == 2);  // pixels 0 and 3
+  CHECK(e.umbraOver == 1);    // pixel 2
+  CHECK(e.umbraUnder == 1);   // pixel 3
+  CHECK(e.umbraOverPct == doctest::Approx(20.0));
+  CHECK(e.umbraUnderPct == doctest::Approx(20.0));
+  // The level is a parameter: at 0.25, pixel 3 (0.2) is umbra for both, and nothing is under.
+  const SoftShadowErrors loose = compareSoft(tech, ref, 0.25f);
+  CHECK(loose.umbraUnder == 0);
+  CHECK(loose.umbraOver == 1);
+  // A technique equal to the reference estimates nothing wrongly.
+  const SoftShadowErrors same = compareSoft(ref, ref);
+  CHECK(same.umbraOver == 0);
+  CHECK(same.umbraUnder == 0);
+  CHECK(same.rmse == 0.0);
+}
