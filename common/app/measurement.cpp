@@ -75,6 +75,9 @@ void Measurement::declare(ParamRegistry& r) {
   r.add("measure.light", &light_, 0, 7, "which of the lesson's lights is measured");
   r.add("measure.scale", &scale_, 1, 8, "measure every n-th pixel: 1 exact, larger stays interactive");
   r.add("measure.samples", &samples_, 1, 1024, "rays per pixel toward an area light (soft shadows)");
+  r.add("measure.seed", &seed_, 1, 1000000, "the soft reference's sample seed (another seed: another noise)");
+  r.add("measure.noise_floor", &noiseFloor_,
+        "also trace a second soft reference with another seed: their RMSE is the reference's own noise");
   r.add("measure.live", &live_, "re-measure whenever the view or a parameter changes");
 }
 
@@ -238,11 +241,16 @@ void Measurement::compute(const MeasureSource& source) {
   result_.width = surface.width;
   result_.height = surface.height;
   result_.soft = light.area != AreaShape::None;
-  const ImageF reference =
-      result_.soft ? truth_->softVisibility(surface, light, samples_, 1) : truth_->hardVisibility(surface, light);
+  const ImageF reference = result_.soft ? truth_->softVisibility(surface, light, samples_, std::uint64_t(seed_))
+                                        : truth_->hardVisibility(surface, light);
   result_.groundTruthMs = truth_->lastQueryMs();
   if (result_.soft) {
     result_.soft_ = measure::compareSoft(technique, reference);
+    if (noiseFloor_) {
+      const ImageF second = truth_->softVisibility(surface, light, samples_, std::uint64_t(seed_) + 7919);
+      result_.soft_.noiseFloor = measure::compareSoft(second, reference).rmse;
+      result_.groundTruthMs += truth_->lastQueryMs();
+    }
     result_.errorHeatmap = measure::softErrorHeatmap(technique, reference);
   } else {
     result_.hard = measure::compareHard(technique, reference);
@@ -327,6 +335,13 @@ std::vector<std::pair<std::string, std::string>> Measurement::summary() const {
     std::snprintf(buf, sizeof buf, "RMSE %.4f, max %.3f (%zu px)", result_.soft_.rmse, result_.soft_.maxAbs,
                   result_.soft_.pixels);
     out.push_back({"soft error", buf});
+    std::snprintf(buf, sizeof buf, "over %.2f%%, under %.2f%% of px", result_.soft_.umbraOverPct,
+                  result_.soft_.umbraUnderPct);
+    out.push_back({"umbra", buf});
+    if (result_.soft_.noiseFloor >= 0) {
+      std::snprintf(buf, sizeof buf, "RMSE %.4f between two seeds", result_.soft_.noiseFloor);
+      out.push_back({"reference noise", buf});
+    }
   } else {
     const auto& h = result_.hard;
     std::snprintf(buf, sizeof buf, "%.2f%% (leaks %.2f%%, false shadows %.2f%%)", h.misclassifiedPct, h.leakPct,

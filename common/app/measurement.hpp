@@ -85,6 +85,8 @@ class Measurement {
     light_ = other.light_;
     scale_ = other.scale_;
     samples_ = other.samples_;
+    seed_ = other.seed_;
+    noiseFloor_ = other.noiseFloor_;
     live_ = other.live_;
     forceFull_ = forceFull_ || other.forceFull_;  // a full-resolution request of its own stays
   }
@@ -120,6 +122,8 @@ class Measurement {
   int light_ = 0;
   int scale_ = 2;
   int samples_ = 16;
+  int seed_ = 1;             // the soft reference's sample seed
+  bool noiseFloor_ = false;  // trace a second soft reference (another seed) and report their RMSE
   bool live_ = true;
   bool forceFull_ = false;
   bool dirty_ = true;

@@ -69,7 +69,14 @@ nlohmann::ordered_json figures(const MeasureResult& r) {
   j["width"] = r.width;
   j["height"] = r.height;
   if (r.soft) {
-    j["soft"] = {{"pixels", r.soft_.pixels}, {"rmse", r.soft_.rmse}, {"max_abs", r.soft_.maxAbs}};
+    const auto& s = r.soft_;
+    j["soft"] = {{"pixels", s.pixels},
+                 {"rmse", s.rmse},
+                 {"max_abs", s.maxAbs},
+                 {"umbra_pixels", s.umbraPixels},
+                 {"umbra_over_pct", s.umbraOverPct},
+                 {"umbra_under_pct", s.umbraUnderPct}};
+    if (s.noiseFloor >= 0) j["soft"]["reference_noise_rmse"] = s.noiseFloor;
   } else {
     const auto& h = r.hard;
     j["hard"] = {{"facing_pixels", h.facingPixels},

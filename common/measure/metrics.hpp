@@ -52,6 +52,9 @@ struct SoftShadowErrors {
   std::size_t umbraPixels = 0;  // the reference's umbra
   std::size_t umbraOver = 0, umbraUnder = 0;
   double umbraOverPct = 0, umbraUnderPct = 0;
+  // The reference's own noise: the RMSE between two references traced with different sample seeds
+  // (measure.noise_floor); -1 when not measured. compareSoft leaves it alone.
+  double noiseFloor = -1;
 };
 SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference, float umbraLevel = kUmbraLevel);
 

@@ -96,6 +96,12 @@ std::vector<Column> columns(const std::vector<ReportRow>& rows) {
   c.push_back({"soft_rmse", true, [=](const ReportRow& r) { return r.hasSoft ? num(r.soft.rmse) : std::string(); }});
   c.push_back(
       {"soft_max_abs", true, [=](const ReportRow& r) { return r.hasSoft ? num(r.soft.maxAbs) : std::string(); }});
+  auto soft = [&](const char* name, std::function<std::string(const SoftShadowErrors&)> f) {
+    c.push_back({name, true, [=](const ReportRow& r) { return r.hasSoft ? f(r.soft) : std::string(); }});
+  };
+  soft("umbra_over_pct", [=](const SoftShadowErrors& e) { return num(e.umbraOverPct); });
+  soft("umbra_under_pct", [=](const SoftShadowErrors& e) { return num(e.umbraUnderPct); });
+  soft("reference_noise_rmse", [=](const SoftShadowErrors& e) { return e.noiseFloor < 0 ? "" : num(e.noiseFloor); });
   auto alias = [&](const char* name, std::function<double(const AliasingStats&)> f) {
     c.push_back({name, true, [=](const ReportRow& r) { return r.hasAliasing ? num(f(r.aliasing)) : std::string(); }});
   };
@@ -271,7 +277,12 @@ std::string toJson(const std::vector<ReportRow>& rows, const std::string& title)
                    {"falseShadowPct", finite(r.hard.falseShadowPct)},
                    {"edgeTolerantPct", finite(r.hard.edgeTolerantPct)}};
     if (r.hasSoft)
-      j["soft"] = {{"pixels", r.soft.pixels}, {"rmse", finite(r.soft.rmse)}, {"maxAbs", finite(r.soft.maxAbs)}};
+      j["soft"] = {{"pixels", r.soft.pixels},
+                   {"rmse", finite(r.soft.rmse)},
+                   {"maxAbs", finite(r.soft.maxAbs)},
+                   {"umbraOverPct", finite(r.soft.umbraOverPct)},
+                   {"umbraUnderPct", finite(r.soft.umbraUnderPct)},
+                   {"referenceNoiseRmse", finite(r.soft.noiseFloor)}};
     if (r.hasAliasing)
       j["aliasing"] = {{"pixels", r.aliasing.pixels},   {"mean", finite(r.aliasing.mean)},
                        {"rms", finite(r.aliasing.rms)}, {"p95", finite(r.aliasing.p95)},

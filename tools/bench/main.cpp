@@ -200,6 +200,9 @@ int main(int argc, char** argv) {
               row.soft.pixels = j["soft"].at("pixels");
               row.soft.rmse = j["soft"].at("rmse");
               row.soft.maxAbs = j["soft"].at("max_abs");
+              row.soft.umbraOverPct = j["soft"].value("umbra_over_pct", 0.0);
+              row.soft.umbraUnderPct = j["soft"].value("umbra_under_pct", 0.0);
+              row.soft.noiseFloor = j["soft"].value("reference_noise_rmse", -1.0);
             }
             if (j.contains("aliasing")) {
               const auto& a = j["aliasing"];
