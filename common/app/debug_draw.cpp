@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "gl/gl.hpp"
+
 namespace shadowlab {
 
 void DebugDraw::line(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color) {
@@ -49,6 +51,43 @@ void DebugDraw::cross(const glm::vec3& p, float s, const glm::vec4& color) {
   line(p - glm::vec3(s, 0, 0), p + glm::vec3(s, 0, 0), color);
   line(p - glm::vec3(0, s, 0), p + glm::vec3(0, s, 0), color);
   line(p - glm::vec3(0, 0, s), p + glm::vec3(0, 0, s), color);
+}
+
+void LineRenderer::draw(const std::vector<DebugDraw::Line>& lines, const glm::mat4& viewProj, bool depthTest) {
+  build();
+  struct V {
+    glm::vec3 p;
+    glm::vec4 c;
+  };
+  std::vector<V> v;
+  v.reserve(lines.size() * 2);
+  for (const auto& l : lines) {
+    v.push_back({l.a, l.color});
+    v.push_back({l.b, l.color});
+  }
+  if (!vao_) {
+    vao_ = gl::makeVertexArray(program_.label());
+    vertices_ = gl::makeBuffer(GL_ARRAY_BUFFER, program_.label());
+  }
+  glBindVertexArray(vao_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(V)), v.data(), GL_STREAM_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(V), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(V), reinterpret_cast<void*>(sizeof(glm::vec3)));
+  if (depthTest) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+  } else {
+    glDisable(GL_DEPTH_TEST);
+  }
+  program_.use();
+  program_.set("uViewProj", viewProj);
+  glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
+  gl::countDraws();
+  glDepthFunc(GL_LESS);
+  if (!depthTest) glEnable(GL_DEPTH_TEST);
 }
 
 }  // namespace shadowlab

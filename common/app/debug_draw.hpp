@@ -8,6 +8,8 @@
 #include <glm/glm.hpp>
 
 #include "core/mesh.hpp"
+#include "gl/objects.hpp"
+#include "gl/program.hpp"
 
 namespace shadowlab {
 
@@ -30,6 +32,23 @@ class DebugDraw {
 
  private:
   std::vector<Line> lines_;
+};
+
+// Draws lines into the bound framebuffer with shaders/common/lines.{vert,frag}: the god view's
+// shapes, and lessons' overlays drawn over their own frame (lesson 05's predicted penumbra edges).
+class LineRenderer {
+ public:
+  explicit LineRenderer(std::string label) : program_(std::move(label), {"common/lines.vert", "common/lines.frag"}) {}
+  void build() {
+    if (!program_.valid()) program_.build();
+  }
+  // depthTest: against the bound depth buffer with GL_LEQUAL (left at GL_LESS after); else over everything.
+  void draw(const std::vector<DebugDraw::Line>& lines, const glm::mat4& viewProj, bool depthTest);
+
+ private:
+  gl::Program program_;
+  gl::VertexArray vao_;
+  gl::Buffer vertices_;
 };
 
 }  // namespace shadowlab

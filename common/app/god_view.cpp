@@ -27,7 +27,7 @@ void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const Debu
   const Inset corner = inset(frame.width, frame.height);
   const int w = corner.width, h = corner.height;
   if (target_.width != w || target_.height != h) target_ = gl::makeRenderTarget(w, h, "god view");
-  if (!lines_.valid()) lines_.build();
+  lines_.build();
 
   // Frame what the lesson's shapes span (scene bounds, light frusta and cones) and the viewer's eye;
   // the viewer's own frustum reaches its far plane and would shrink everything else to a dot.
@@ -56,36 +56,9 @@ void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const Debu
   // The viewer's frustum, then the lesson's shapes.
   DebugDraw all = shapes;
   all.frustum(viewer.projection(float(frame.width) / float(frame.height)) * viewer.view(), {1, 1, 0.3f, 1});
-  struct V {
-    glm::vec3 p;
-    glm::vec4 c;
-  };
-  std::vector<V> v;
-  v.reserve(all.lines().size() * 2);
-  for (const auto& l : all.lines()) {
-    v.push_back({l.a, l.color});
-    v.push_back({l.b, l.color});
-  }
-  if (!vao_) {
-    vao_ = gl::makeVertexArray("god view lines");
-    vertices_ = gl::makeBuffer(GL_ARRAY_BUFFER, "god view lines");
-  }
-  glBindVertexArray(vao_.id());
-  glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(V)), v.data(), GL_STREAM_DRAW);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(V), nullptr);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(V), reinterpret_cast<void*>(sizeof(glm::vec3)));
   glBindFramebuffer(GL_FRAMEBUFFER, g.framebuffer);
   glViewport(0, 0, w, h);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  lines_.use();
-  lines_.set("uViewProj", g.projection * g.view);
-  glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
-  gl::countDraws();
-  glDepthFunc(GL_LESS);
+  lines_.draw(all.lines(), g.projection * g.view, true);
 
   // Into the bottom-right corner of the frame, with a thin frame around it.
   const int x0 = corner.x, y0 = corner.y;

@@ -28,9 +28,7 @@ class GodView {
   float distance_ = 1.0f;  // times the distance at which their bounding sphere just fits: all of it in view
   float yaw_ = 0.9f;       // radians around the viewer's yaw
   gl::RenderTarget target_;
-  gl::VertexArray vao_;
-  gl::Buffer vertices_;
-  gl::Program lines_{"god view lines", {"common/lines.vert", "common/lines.frag"}};
+  LineRenderer lines_{"god view lines"};
 };
 
 }  // namespace shadowlab

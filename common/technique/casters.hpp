@@ -23,11 +23,16 @@ class CasterPass {
  public:
   // `vertexShader` and its view-projection uniform: the light's depth pass, or (common/scene.vert,
   // uViewProj) for a pre-pass whose depth a lit pass with the same vertex shader tests EQUAL against.
+  // `fragmentShader`: a filterable map (VSM, ESM) writes its moments from one of its own, with the
+  // same alpha test.
   explicit CasterPass(std::string label = "depth pass", std::string vertexShader = "common/depth.vert",
-                      std::string viewProjUniform = "uLightViewProj")
-      : program_(std::move(label), {std::move(vertexShader), "common/depth.frag"}),
+                      std::string viewProjUniform = "uLightViewProj",
+                      std::string fragmentShader = "common/depth.frag")
+      : program_(std::move(label), {std::move(vertexShader), std::move(fragmentShader)}),
         viewProjUniform_(std::move(viewProjUniform)) {}
   void build() { program_.build(); }
+  // The program, for the uniforms a fragment shader of the caller's own reads (set them after use()).
+  const gl::Program& program() const { return program_; }
   // Draws object i when keep[i] (an empty span: every object that casts). Returns the triangles drawn.
   std::size_t draw(const SceneCache& scene, const glm::mat4& viewProj, std::span<const char> keep,
                    const CasterOptions& options);
