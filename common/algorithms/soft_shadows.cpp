@@ -60,7 +60,7 @@ PenumbraPoint penumbraOnPlane(const glm::vec3& light, float R, const glm::vec3& 
 
 std::vector<PenumbraEdgeSample> penumbraAlongEdge(const glm::vec3& light, float R, const glm::vec3& a,
                                                   const glm::vec3& b, const glm::vec3& interior, const glm::vec4& plane,
-                                                  int samples) {
+                                                  int samples, const HalfWidthFn& halfWidth) {
   require(samples >= 2, "penumbraAlongEdge: samples = " + std::to_string(samples) + " (need >= 2)");
   const PenumbraPoint pa = penumbraOnPlane(light, R, a, plane), pb = penumbraOnPlane(light, R, b, plane);
   const PenumbraPoint pi = penumbraOnPlane(light, R, interior, plane);
@@ -75,7 +75,8 @@ std::vector<PenumbraEdgeSample> penumbraAlongEdge(const glm::vec3& light, float 
   for (int k = 0; k < samples; ++k) {
     const PenumbraPoint p = penumbraOnPlane(light, R, glm::mix(a, b, float(k) / float(samples - 1)), plane);
     if (!p.valid) continue;
-    out.push_back({p.centre, p.centre + across * p.halfWidth, p.centre - across * p.halfWidth, p.halfWidth});
+    const float r = halfWidth ? halfWidth(p.d, p.nDotL, R, p.D) : p.halfWidth;
+    out.push_back({p.centre, p.centre + across * r, p.centre - across * r, r});
   }
   return out;
 }
@@ -354,6 +355,20 @@ std::optional<Light> spotCovering(const Light& point, const Aabb& bounds) {
   spot.spotOuter = std::min(std::asin(radius / distance) + 0.02f, 1.45f);
   spot.spotInner = spot.spotOuter;
   return spot;
+}
+
+glm::vec2 depthRange(const glm::mat4& view, const Aabb& bounds, float minNear) {
+  require(!bounds.empty() && minNear > 0, "depthRange: need bounds and minNear > 0");
+  float lo = 1e30f, hi = -1e30f;
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 corner(k & 1 ? bounds.max.x : bounds.min.x, k & 2 ? bounds.max.y : bounds.min.y,
+                           k & 4 ? bounds.max.z : bounds.min.z);
+    const float z = -(view * glm::vec4(corner, 1.0f)).z;
+    lo = std::min(lo, z);
+    hi = std::max(hi, z);
+  }
+  const float nearZ = std::max(minNear, lo * 0.98f);
+  return {nearZ, std::max(hi * 1.02f, nearZ + 0.1f)};
 }
 
 }  // namespace shadowlab::soft

@@ -15,6 +15,7 @@
 // u = 0.5 + x / (2 z tanHalfFov).
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -53,14 +54,17 @@ PenumbraPoint penumbraOnPlane(const glm::vec3& lightCentre, float R, const glm::
 // The predicted penumbra of a caster edge a-b over a plane, `samples` points along the edge (>= 2):
 // the centre line and the inner (umbra side) and outer edges, r either side across the edge's
 // shadow within the plane. `casterInterior`: a point inside the caster; its shadow tells which side
-// is the umbra. Points whose ray misses the plane are left out.
+// is the umbra. Points whose ray misses the plane are left out. `halfWidth` replaces
+// penumbraHalfWidth(d, n.L, R, D) (a student's, impl=student).
 struct PenumbraEdgeSample {
   glm::vec3 centre{0.0f}, inner{0.0f}, outer{0.0f};
   float halfWidth = 0;
 };
+using HalfWidthFn = std::function<float(float d, float nDotL, float R, float D)>;
 std::vector<PenumbraEdgeSample> penumbraAlongEdge(const glm::vec3& lightCentre, float R, const glm::vec3& a,
                                                   const glm::vec3& b, const glm::vec3& casterInterior,
-                                                  const glm::vec4& plane, int samples);
+                                                  const glm::vec4& plane, int samples,
+                                                  const HalfWidthFn& halfWidth = {});
 
 // The 12 edges of a box (a unit cube [-1,1]^3 scaled by `half` and placed by `model`): a caster
 // edge the lesson's overlay picks. Order: 4 along x, 4 along y, 4 along z.
@@ -172,5 +176,10 @@ std::vector<glm::vec3> isotropicBallSamples(int n, std::uint64_t seed = 1);
 // centre, outer half-angle asin(radius / distance) plus a margin, at most 1.45 rad (a 3-radian field
 // of view). nullopt when the light is inside the sphere (no single frustum holds the scene).
 std::optional<Light> spotCovering(const Light& point, const Aabb& bounds);
+
+// The depth range a light camera (view looking down -z) needs for `bounds`: the nearest and farthest
+// corner along the axis, 2 % margin, near at least minNear (a light inside the bounds). Depth
+// precision lives in near / far; a perspective map of a small scene wastes it on a fixed 0.1..1000.
+glm::vec2 depthRange(const glm::mat4& view, const Aabb& bounds, float minNear);
 
 }  // namespace shadowlab::soft

@@ -284,3 +284,19 @@ TEST_CASE("soft_shadows: a point light seen as a spot around the scene") {
   point.position = {0, 1.5f, 0};  // inside the sphere: no single frustum
   CHECK_FALSE(spotCovering(point, box).has_value());
 }
+
+TEST_CASE("soft_shadows: the depth range a light camera needs for the scene") {
+  // Looking down -z from (0, 0, 10) at the box [-1,1]^3: corners at z distance 9 and 11; with 2 %
+  // margin 8.82 .. 11.22. From inside the box the near plane stops at minNear.
+  const glm::mat4 view = glm::lookAt(glm::vec3(0, 0, 10), glm::vec3(0), glm::vec3(0, 1, 0));
+  Aabb box;
+  box.extend(glm::vec3(-1));
+  box.extend(glm::vec3(1));
+  const glm::vec2 range = depthRange(view, box, 0.05f);
+  CHECK(range.x == doctest::Approx(8.82f));
+  CHECK(range.y == doctest::Approx(11.22f));
+  const glm::vec2 inside = depthRange(glm::lookAt(glm::vec3(0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0)), box, 0.05f);
+  CHECK(inside.x == doctest::Approx(0.05f));
+  CHECK(inside.y == doctest::Approx(1.02f));
+  CHECK_THROWS_AS(depthRange(view, Aabb{}, 0.05f), std::invalid_argument);
+}
