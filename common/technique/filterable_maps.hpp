@@ -1,0 +1,62 @@
+#pragma once
+// Filterable shadow maps (lesson 05), what users of real engines ask about: maps whose texels may
+// be averaged, so one blur per frame (instead of many taps per pixel) gives every shadow the same
+// soft edge, in two kinds (one class, two techniques):
+//   vsm  variance shadow maps (Donnelly and Lauritzen 2006): moments (t, t^2) and Chebyshev's
+//        bound; where casters overlap in the kernel the variance is large and light BLEEDS into
+//        the shadow (uBleed trims it)
+//   esm  exponential shadow maps (Annen et al. 2008): exp(c t) and exp(c (t_occ - t))
+// The light camera is the sphere's centre camera (SoftMaps, without its depth maps); the depth pass
+// is CasterPass with shaders/common/depth_moments.frag, the blur shaders/common/blur.frag.
+// GLSL: shaders/common/shadow_filterable.frag.
+#include <array>
+
+#include "technique/soft_maps.hpp"
+
+namespace shadowlab::tech {
+
+struct FilterableParams {
+  int blur = 4;               // Gaussian radius in texels (sigma = radius / 2): the one penumbra width
+  float minVariance = 2e-6f;  // vsm: variance floor (depth precision)
+  float bleed = 0.2f;         // vsm: light-bleeding reduction, the share of Chebyshev's tail cut away
+  float exponent = 60.0f;     // esm: c (exp(c) must stay finite in 32-bit floats: c <= 88)
+  SoftMapParams maps{1};      // 512^2: a blurred map needs fewer texels
+};
+
+class FilterableMaps : public ShadowTechnique {
+ public:
+  enum class Kind { Vsm, Esm };
+  explicit FilterableMaps(Kind kind, FilterableParams defaults = {});
+  std::string name() const override { return kind_ == Kind::Vsm ? "vsm" : "esm"; }
+  void declare(ParamRegistry& r, const std::string& prefix) override;
+  void init() override;
+  void renderShadows(const ShadowContext& c) override;
+  const ShadowStats& stats() const override { return stats_; }
+  std::string visibilityShader() const override { return "common/shadow_filterable.frag"; }
+  std::vector<std::string> shaderDefines() const override;
+  void bindVisibility(const gl::Program& lit, int firstUnit) const override;
+  void unbindVisibility(int firstUnit) const override;
+  FilterableParams& params() { return p_; }
+
+ private:
+  struct Target {
+    gl::Texture moments, scratch;  // the blur ping-pongs between them
+    gl::Renderbuffer depth;
+    gl::Framebuffer fbo, scratchFbo;
+    int size = 0;
+  };
+  void ensure(Target& t, int size, const std::string& label);
+  void blur(Target& t);
+
+  Kind kind_;
+  FilterableParams p_;
+  SoftMaps maps_;
+  CasterPass casters_;
+  gl::Program blur_{"filterable maps: blur", {"common/fullscreen.vert", "common/blur.frag"}};
+  gl::VertexArray vao_;
+  std::array<Target, 4> targets_;  // per light (MAX_LIGHTS)
+  gl::Texture dummy_;              // 1^2 "nothing in front": bound where a light has no map
+  ShadowStats stats_;
+};
+
+}  // namespace shadowlab::tech

@@ -1,0 +1,46 @@
+#pragma once
+// Many point lights (lesson 05): the spherical light replaced by N point lights on it, one shadow
+// map each, and the N hard shadows averaged: the reference a rasteriser can reach, converging on
+// the sphere's visible fraction as N grows, at N times the shadow passes and N lookups a pixel.
+// The samples (algorithms/soft_shadows):
+//   ball  points in the sphere whose shadow from any direction is a uniform disk
+//         (isotropicBallSamples): right for every receiver
+//   disk  a stratified disk across the light's axis (stratifiedDiskSamples): best along the axis,
+//         foreshortened by cos(angle off the axis) toward the cone's rim
+// GLSL: shaders/common/shadow_many.frag (N compiled in).
+#include "technique/soft_maps.hpp"
+
+namespace shadowlab::tech {
+
+enum class SampleLayout { Ball, Disk };
+
+struct ManyLightsParams {
+  int samples = 16;  // N point lights per spherical light (1 is a hard shadow)
+  SampleLayout layout = SampleLayout::Ball;
+  SoftMapParams maps{1};  // 512^2 per sample: N maps add up
+};
+
+class ManyLights : public ShadowTechnique {
+ public:
+  explicit ManyLights(ManyLightsParams defaults = {}) : p_(defaults), maps_("many lights", defaults.maps) {}
+  std::string name() const override { return "many"; }
+  void declare(ParamRegistry& r, const std::string& prefix) override;
+  void init() override { maps_.init(); }
+  void renderShadows(const ShadowContext& c) override;
+  const ShadowStats& stats() const override { return stats_; }
+  std::string visibilityShader() const override { return "common/shadow_many.frag"; }
+  std::vector<std::string> shaderDefines() const override;
+  void bindVisibility(const gl::Program& lit, int firstUnit) const override { maps_.bind(lit, firstUnit); }
+  void unbindVisibility(int firstUnit) const override { maps_.unbind(firstUnit); }
+
+  ManyLightsParams& params() { return p_; }
+  // The N unit samples in the light's view space for a layout (shared with the light mesh's bake).
+  static std::vector<glm::vec3> samplesFor(int n, SampleLayout layout);
+
+ private:
+  ManyLightsParams p_;
+  SoftMaps maps_;
+  ShadowStats stats_;
+};
+
+}  // namespace shadowlab::tech

@@ -1,0 +1,60 @@
+#include "technique/pcss.hpp"
+
+#include "algorithms/soft_shadows.hpp"
+
+namespace shadowlab::tech {
+
+PcssShadows::PcssShadows(bool adaptive, PcssParams defaults)
+    : adaptive_(adaptive), p_(defaults), maps_(adaptive ? "pcss" : "pcf", defaults.maps) {}
+
+const std::vector<std::string>& PcssShadows::tapCounts() {
+  static const std::vector<std::string> counts{"8", "16", "32", "64"};
+  return counts;
+}
+
+int PcssShadows::searchCount() const { return std::stoi(tapCounts()[std::size_t(p_.searchTaps)]); }
+int PcssShadows::filterCount() const { return std::stoi(tapCounts()[std::size_t(p_.filterTaps)]); }
+
+void PcssShadows::declare(ParamRegistry& r, const std::string& n) {
+  r.addChoice(n + "filter_taps", &p_.filterTaps, tapCounts(), "Poisson taps of the filter, rotated per pixel");
+  if (adaptive_) {
+    r.addChoice(n + "search_taps", &p_.searchTaps, tapCounts(), "Poisson taps of the blocker search");
+    r.add(n + "max_search", &p_.maxSearch, 0.005f, 0.5f, "cap of the blocker search region (uv)");
+    r.add(n + "min_filter", &p_.minFilter, 0, 8, "smallest filter radius (texels)");
+  } else {
+    r.add(n + "radius", &p_.fixedRadius, 0, 32, "the fixed kernel's radius (texels): one penumbra for all");
+  }
+  maps_.declare(r, n);
+}
+
+std::vector<std::string> PcssShadows::shaderDefines() const {
+  std::vector<std::string> d = {"SEARCH_TAPS " + std::to_string(searchCount()),
+                                "FILTER_TAPS " + std::to_string(filterCount())};
+  if (adaptive_) d.push_back("PCSS");
+  return d;
+}
+
+void PcssShadows::renderShadows(const ShadowContext& c) {
+  if (c.frame.godView) {
+    maps_.pushShapes(c);
+    return;
+  }
+  stats_ = {};
+  maps_.render(c, {glm::vec3(0.0f)}, stats_);
+  stats_.extra.push_back(
+      {"taps", adaptive_ ? std::to_string(searchCount()) + " search + " + std::to_string(filterCount()) + " filter"
+                         : std::to_string(filterCount()) + " filter"});
+  maps_.pushShapes(c);
+}
+
+void PcssShadows::bindVisibility(const gl::Program& lit, int firstUnit) const {
+  maps_.bind(lit, firstUnit);
+  // Different seeds: the search and the filter should not sample the same directions.
+  setTaps(lit, "uSearchTaps", soft::poissonDisk(searchCount(), 11));
+  setTaps(lit, "uFilterTaps", soft::poissonDisk(filterCount(), 12));
+  lit.set("uFixedRadius", p_.fixedRadius);
+  lit.set("uMaxSearch", p_.maxSearch);
+  lit.set("uMinFilter", p_.minFilter);
+}
+
+}  // namespace shadowlab::tech

@@ -1,0 +1,48 @@
+#pragma once
+// Percentage-closer filtering of one map from the sphere's centre (lesson 05), Poisson taps
+// rotated per pixel, in two kinds (one class, two techniques):
+//   pcf   a fixed kernel radius (texels): the baseline, one penumbra width for every caster
+//   pcss  percentage-closer soft shadows (Fernando 2005): a blocker search, the penumbra estimate
+//         w = (d_receiver - d_blocker) / d_blocker * R, then the filter over w: contact hardening
+// Tap counts compile in (a software renderer pays for every loop trip). The maths:
+// algorithms/soft_shadows (pcssPenumbraWidth, pcssFilterRadiusUv, pcssSearchRadiusUv, poissonDisk).
+// GLSL: shaders/common/shadow_pcss.frag.
+#include "technique/soft_maps.hpp"
+
+namespace shadowlab::tech {
+
+struct PcssParams {
+  int searchTaps = 1;        // index into tapCounts(): 16 blocker-search taps
+  int filterTaps = 1;        // 16 filter taps
+  float fixedRadius = 3.0f;  // pcf: kernel radius in texels
+  float maxSearch = 0.08f;   // pcss: cap of the search region (uv): a caster near the light is slow
+  float minFilter = 1.0f;    // pcss: the smallest filter radius (texels): contacts stay antialiased
+  SoftMapParams maps{2};     // 1024^2
+};
+
+class PcssShadows : public ShadowTechnique {
+ public:
+  explicit PcssShadows(bool adaptive, PcssParams defaults = {});
+  static const std::vector<std::string>& tapCounts();  // "8" .. "64"
+
+  std::string name() const override { return adaptive_ ? "pcss" : "pcf"; }
+  void declare(ParamRegistry& r, const std::string& prefix) override;
+  void init() override { maps_.init(); }
+  void renderShadows(const ShadowContext& c) override;
+  const ShadowStats& stats() const override { return stats_; }
+  std::string visibilityShader() const override { return "common/shadow_pcss.frag"; }
+  std::vector<std::string> shaderDefines() const override;
+  void bindVisibility(const gl::Program& lit, int firstUnit) const override;
+  void unbindVisibility(int firstUnit) const override { maps_.unbind(firstUnit); }
+  PcssParams& params() { return p_; }
+
+ private:
+  int searchCount() const;
+  int filterCount() const;
+  bool adaptive_;
+  PcssParams p_;
+  SoftMaps maps_;
+  ShadowStats stats_;
+};
+
+}  // namespace shadowlab::tech

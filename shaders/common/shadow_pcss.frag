@@ -1,0 +1,61 @@
+#version 410 core
+// Percentage-closer filtering of the map from the sphere's centre (common/technique/pcss; lesson
+// 05): Poisson taps rotated per pixel over a disk of
+//   PCF   a fixed radius (uFixedRadius texels): the baseline, one penumbra width everywhere
+//   PCSS  (Fernando 2005, #define PCSS) a radius from the blockers: search the region where
+//         something can hide part of the sphere, average the blockers' depth d_b, and filter over
+//         w = (d_r - d_b) / d_b * R, in uv w / (2 d_r tan(fov/2)) (soft::pcssFilterRadiusUv)
+// A uniform disk of taps over a straight shadow edge averages to the disk's visible fraction:
+// A_frac itself. Each tap compares against the receiver's plane there (no acne from wide kernels).
+#include "common/soft_maps.glsl"
+
+#ifndef SEARCH_TAPS
+#define SEARCH_TAPS 16
+#endif
+#ifndef FILTER_TAPS
+#define FILTER_TAPS 16
+#endif
+
+uniform vec2 uSearchTaps[SEARCH_TAPS];  // Poisson disks in the unit disk (soft::poissonDisk)
+uniform vec2 uFilterTaps[FILTER_TAPS];
+uniform float uFixedRadius;    // PCF: texels
+uniform float uMaxSearch;      // PCSS: the search region's cap, in uv
+uniform float uMinFilter;      // PCSS: the smallest filter radius, texels (a contact stays antialiased)
+
+float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
+  texelCoords = vec2(0.0);
+  SoftReceiver r = softReceiver(i, worldPos, N);
+  vec3 dx = dFdx(vec3(r.uv, r.z)), dy = dFdy(vec3(r.uv, r.z));  // uniform control flow: before any return
+  if (uSoftLayer[i] < 0) return 1.0;
+  texelCoords = r.uv * uSoftMapSize;
+  if (softOutside(i, r)) return 1.0;
+  vec2 plane = softReceiverPlane(dx, dy, r, i);
+  float bias = softBias(r);
+  float a = softRotation(gl_FragCoord.xy);
+  mat2 turn = mat2(cos(a), sin(a), -sin(a), cos(a));
+#ifdef PCSS
+  float near = uSoftDepthRange[i].x, tanHalf = uSoftTanHalfFov[i], R = uSoftRadius[i];
+  float search = min(R * max(r.z - near, 0.0) / (2.0 * tanHalf * near * r.z), uMaxSearch);
+  float sum = 0.0;
+  int blockers = 0;
+  for (int k = 0; k < SEARCH_TAPS; ++k) {
+    vec2 o = turn * uSearchTaps[k] * search;
+    float zb = softDepthAt(i, 0, r.uv + o);
+    if (zb < r.z + dot(plane, o) - bias) {
+      sum += zb;
+      ++blockers;
+    }
+  }
+  if (blockers == 0) return 1.0;
+  float zBlocker = sum / float(blockers);
+  float radius = max(R * max(r.z - zBlocker, 0.0) / (zBlocker * 2.0 * r.z * tanHalf), uMinFilter / uSoftMapSize);
+#else
+  float radius = uFixedRadius / uSoftMapSize;
+#endif
+  float v = 0.0;
+  for (int k = 0; k < FILTER_TAPS; ++k) {
+    vec2 o = turn * uFilterTaps[k] * radius;
+    v += softCompare(i, 0, r.uv + o, r.z + dot(plane, o) - bias);
+  }
+  return v / float(FILTER_TAPS);
+}

@@ -1,0 +1,113 @@
+// The soft-shadow techniques' shared half (common/technique/soft_maps; lesson 05): per light a
+// perspective camera at the centre of its spherical emitter, the sample points on the sphere and
+// one depth map per sample in an array texture. Mirrors common/algorithms/soft_shadows.
+//   view space: the centre camera looks down -z; z = -view.z is the distance along its axis
+//   uv = 0.5 + view.xy / (2 z tan(fov/2)); sample k's camera sits at R s_k in that view space
+#include "common/light.glsl"
+
+#ifndef SOFT_MAX_SAMPLES
+#define SOFT_MAX_SAMPLES 64
+#endif
+
+uniform Light uLights[MAX_LIGHTS];
+uniform int uSoftLayer[MAX_LIGHTS];        // light i's first layer; -1: no soft shadow (lit)
+uniform mat4 uSoftView[MAX_LIGHTS];        // the centre camera's view
+uniform float uSoftRadius[MAX_LIGHTS];     // R
+uniform float uSoftTanHalfFov[MAX_LIGHTS];
+uniform vec2 uSoftDepthRange[MAX_LIGHTS];  // near, far
+uniform vec3 uSoftSamples[SOFT_MAX_SAMPLES];  // unit-ball points in the light's view space
+uniform int uSoftSampleCount;
+uniform float uSoftMapSize;
+uniform float uSoftBias, uSoftSlopeBias;  // texels of world size at the receiver; per tan(theta)
+uniform float uSoftNormalOffset;          // texels along the normal
+uniform sampler2DArrayShadow uSoftMaps;   // comparison, GL_LINEAR: hardware 2x2 PCF per lookup
+uniform sampler2DArray uSoftDepths;       // the same texture, raw: the blocker search reads depths
+
+// Window depth of view distance z in light i's perspective maps (glm::perspective, GL depth [0,1]).
+float softWindowDepth(int i, float z) {
+  vec2 r = uSoftDepthRange[i];
+  return clamp(r.y / (r.y - r.x) * (1.0 - r.x / z), 0.0, 1.0);
+}
+float softLinearDepth(int i, float d) {
+  vec2 r = uSoftDepthRange[i];
+  return r.x * r.y / (r.y - d * (r.y - r.x));
+}
+
+// A receiver seen from light i's centre camera, moved along N by the normal offset first.
+struct SoftReceiver {
+  vec3 view;       // view-space position (after the normal offset)
+  vec2 uv;
+  float z;         // distance along the axis
+  float texel;     // world size of one map texel at the receiver
+  float tanTheta;  // of the angle between N and the direction to the light, capped at 10
+};
+
+SoftReceiver softReceiver(int i, vec3 worldPos, vec3 N) {
+  SoftReceiver r;
+  float cosT = clamp(dot(N, normalize(uLights[i].position - worldPos)), 1e-3, 1.0);
+  float sinT = sqrt(max(1.0 - cosT * cosT, 0.0));
+  float distance = max(-(uSoftView[i] * vec4(worldPos, 1.0)).z, 1e-3);
+  r.texel = 2.0 * distance * uSoftTanHalfFov[i] / uSoftMapSize;
+  r.tanTheta = min(sinT / cosT, 10.0);
+  r.view = (uSoftView[i] * vec4(worldPos + N * (uSoftNormalOffset * r.texel * sinT), 1.0)).xyz;
+  r.z = max(-r.view.z, 1e-4);
+  r.uv = 0.5 + r.view.xy / (2.0 * r.z * uSoftTanHalfFov[i]);
+  return r;
+}
+
+float softBias(SoftReceiver r) { return (uSoftBias + uSoftSlopeBias * r.tanTheta) * r.texel; }
+
+// Nothing is known in front of the near plane (behind the light) or beyond the far plane: lit.
+bool softOutside(int i, SoftReceiver r) { return r.z <= uSoftDepthRange[i].x || r.z >= uSoftDepthRange[i].y; }
+
+// The point `view` (centre camera's view space) as sample k of light i sees it: (uv, z).
+vec3 softProjectSample(int i, vec3 view, int k) {
+  vec3 w = view - uSoftRadius[i] * uSoftSamples[k];
+  float z = max(-w.z, 1e-4);
+  return vec3(0.5 + w.xy / (2.0 * z * uSoftTanHalfFov[i]), z);
+}
+
+// Sample k's map at uv for a receiver at view distance z (bias already subtracted): 1 lit, 0
+// shadowed, hardware 2x2 PCF between.
+float softCompare(int i, int k, vec2 uv, float z) {
+  return texture(uSoftMaps, vec4(uv, float(uSoftLayer[i] + k), softWindowDepth(i, z)));
+}
+
+// The stored depth of sample k's map at uv, as a view distance (far outside the map).
+float softDepthAt(int i, int k, vec2 uv) {
+  return softLinearDepth(i, texture(uSoftDepths, vec3(uv, float(uSoftLayer[i] + k))).r);
+}
+
+// The mean of `count` samples' comparisons: the many point lights on the sphere, each a hard
+// shadow; their average is the fraction of the sphere the point sees, up to the sampling.
+float softSampledVisibility(int i, vec3 view, float bias, int count) {
+  float v = 0.0;
+  for (int k = 0; k < count; ++k) {
+    vec3 s = softProjectSample(i, view, k);
+    v += softCompare(i, k, s.xy, s.z - bias);
+  }
+  return v / float(count);
+}
+
+// The per-pixel rotation of the Poisson taps (shadow::rotationAngle).
+float softRotation(vec2 pixel) { return fract(sin(dot(pixel, vec2(12.9898, 78.233))) * 43758.5453) * 6.28318530718; }
+
+// The receiver plane (Isidoro 2006) in (uv, z): the depth change per unit of u and v, from the
+// screen derivatives dx, dy of (uv, z); the slope capped at tan(theta) = 10.
+vec2 softReceiverPlane(vec3 dx, vec3 dy, SoftReceiver r, int i) {
+  float det = dx.x * dy.y - dx.y * dy.x;
+  if (abs(det) < 1e-14) return vec2(0.0);
+  vec2 plane = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
+  float cap = 10.0 * 2.0 * r.z * uSoftTanHalfFov[i];
+  float len = length(plane);
+  return len > cap ? plane * (cap / len) : plane;
+}
+
+// The lecture's A_frac of t = a / R and its linear approximation (soft::visibleFraction).
+float softVisibleFraction(float t) {
+  t = clamp(t, -1.0, 1.0);
+  return 0.5 + (t * sqrt(max(1.0 - t * t, 0.0)) + asin(t)) / 3.14159265;
+}
+float softProfile(float t, bool linearProfile) {
+  return linearProfile ? 0.5 * (1.0 + clamp(t, -1.0, 1.0)) : softVisibleFraction(t);
+}
