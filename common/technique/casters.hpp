@@ -26,8 +26,7 @@ class CasterPass {
   // `fragmentShader`: a filterable map (VSM, ESM) writes its moments from one of its own, with the
   // same alpha test.
   explicit CasterPass(std::string label = "depth pass", std::string vertexShader = "common/depth.vert",
-                      std::string viewProjUniform = "uLightViewProj",
-                      std::string fragmentShader = "common/depth.frag")
+                      std::string viewProjUniform = "uLightViewProj", std::string fragmentShader = "common/depth.frag")
       : program_(std::move(label), {std::move(vertexShader), std::move(fragmentShader)}),
         viewProjUniform_(std::move(viewProjUniform)) {}
   void build() { program_.build(); }

@@ -35,7 +35,8 @@ FilterableMaps::FilterableMaps(Kind kind, FilterableParams defaults)
     : kind_(kind),
       p_(defaults),
       maps_(kind == Kind::Vsm ? "vsm" : "esm", defaults.maps),
-      casters_(kind == Kind::Vsm ? "vsm: moments pass" : "esm: exponential pass", "common/depth_moments.frag") {}
+      casters_(kind == Kind::Vsm ? "vsm: moments pass" : "esm: exponential pass", "common/depth.vert", "uLightViewProj",
+               "common/depth_moments.frag") {}
 
 void FilterableMaps::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "blur", &p_.blur, 0, 16, "Gaussian blur radius in texels: the one penumbra width it gives");
