@@ -1,0 +1,43 @@
+// Lesson 05: YOUR implementations. Each stub compiles and returns a neutral value; replace the
+// body, then grade with  ctest --test-dir build/default -L ex05 --output-on-failure
+#include "exercises.hpp"
+
+namespace shadowlab::ex05 {
+
+// EXERCISE 05.1
+float penumbraHalfWidth(float d, float nDotL, float R, float D) {
+  // TODO: d / (n.L) * R / D
+  return 0.0f;
+}
+
+// EXERCISE 05.2
+float visibleFraction(float t) {
+  // TODO: 1/2 + (t sqrt(1 - t^2) + asin t) / pi, t clamped to [-1, 1]
+  return 0.5f;
+}
+
+// EXERCISE 05.2
+float visibleFractionLinear(float t) {
+  // TODO: (1 + t) / 2, t clamped to [-1, 1]
+  return 0.5f;
+}
+
+// EXERCISE 05.3
+float pcssFilterRadiusUv(float R, float zReceiver, float zBlocker, float tanHalfFov) {
+  // TODO: (zReceiver - zBlocker) / zBlocker * R / (2 zReceiver tanHalfFov); 0 for a blocker behind
+  return 0.0f;
+}
+
+// EXERCISE 05.4
+glm::vec2 rotateTap(const glm::vec2& tap, float angle) {
+  // TODO: turn the tap by angle (counter-clockwise)
+  return tap;
+}
+
+// EXERCISE 05.5
+float lightMeshVisibility(const soft::LightGrid& grid, const glm::vec3& p) {
+  // TODO: the trilinear average of the 8 nodes around p
+  return 1.0f;
+}
+
+}  // namespace shadowlab::ex05

@@ -1,0 +1,45 @@
+#pragma once
+// Lesson 05 exercises. Write them in exercises.cpp; grade with
+//   ctest --test-dir build/default -L ex05 --output-on-failure
+// and see yours live with  lesson_05_soft_shadows --set impl=student
+// (your half-width draws the predicted penumbra edges, your A_frac and its linear approximation
+// the plot).
+#include <glm/glm.hpp>
+
+#include "algorithms/soft_shadows.hpp"
+
+namespace shadowlab::ex05 {
+
+// EXERCISE 05.1: the penumbra half-width of a spherical light (the lecture, after Rogers). A light
+// of radius R at distance D from a caster point; the penumbra's centre line lies d further along
+// the ray; the receiver's normal makes n.L with the direction to the light. By similar triangles
+//   r (n.L) / d = R / D,   so   r = d / (n.L) * R / D.
+// The inputs are valid: d >= 0, nDotL > 0, R >= 0, D > 0.
+float penumbraHalfWidth(float d, float nDotL, float R, float D);
+
+// EXERCISE 05.2: the visible fraction of the sphere, seen partly from -R to a, t = a / R:
+//   A_frac(t) = 1/2 + (1/pi) [ t sqrt(1 - t^2) + asin(t) ]
+// and its linear approximation (1 + t) / 2. Clamp t to [-1, 1] first (beyond: all or nothing).
+float visibleFraction(float t);
+float visibleFractionLinear(float t);
+
+// EXERCISE 05.3: the PCSS filter radius in the shadow map's uv (Fernando 2005). The blocker search
+// found the mean blocker depth zBlocker; the receiver is at zReceiver (both distances along the
+// light's axis). The penumbra estimate is w = (zReceiver - zBlocker) / zBlocker * R (the light's
+// radius), a width at the receiver; one uv unit there is 2 zReceiver tanHalfFov of world, so the
+// radius is w / (2 zReceiver tanHalfFov). Return 0 when zBlocker >= zReceiver (the "blocker" is
+// behind the receiver); the other inputs are valid: zBlocker > 0, zReceiver > 0, tanHalfFov > 0.
+float pcssFilterRadiusUv(float R, float zReceiver, float zBlocker, float tanHalfFov);
+
+// EXERCISE 05.4: Poisson tap rotation. Each pixel turns the whole tap pattern by its own angle, so
+// the pattern's structure becomes noise instead of bands: rotate `tap` by `angle` radians
+// counter-clockwise, (x cos a - y sin a, x sin a + y cos a).
+glm::vec2 rotateTap(const glm::vec2& tap, float angle);
+
+// EXERCISE 05.5: the light mesh's lookup: the visibility at p averaged from the 8 grid nodes around
+// it with trilinear weights. g = (p - grid.origin) / grid.step in node units, clamped to
+// [0, nodes - 1]; the cell's first node i0 = min(floor(g), nodes - 2); f = g - i0; node i0 + o
+// (o in {0,1}^3) weighs prod over axes of (o ? f : 1 - f). Values: grid.visibility[grid.index(n)].
+float lightMeshVisibility(const soft::LightGrid& grid, const glm::vec3& p);
+
+}  // namespace shadowlab::ex05

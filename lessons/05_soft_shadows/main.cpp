@@ -1,0 +1,227 @@
+// Lesson 05: soft shadows (Tarantsev's lecture 12, after Rogers: many point lights, the spherical
+// light's penumbra, A_frac, single-sample soft shadows, the light mesh; and what engines ship:
+// PCF, PCSS, filterable maps). A spherical light of radius R (light0.area = sphere,
+// light0.radius); every approximation is a technique of common/technique, each measured against
+// the Embree sphere-light reference (M, --measure):
+//   many    N point lights on the sphere, one map each, averaged         (many_lights.cpp)
+//   pcf     one map from the centre, a fixed Poisson kernel: the baseline (pcss.cpp)
+//   pcss    blocker search, w = (d_r - d_b) / d_b * R, filter: contact hardening (pcss.cpp)
+//   parker  Parker et al. 1998: the hard shadow as umbra, an outer hull  (single_sample.cpp)
+//   haines  Haines 2001: plateaus on the ground plane                    (single_sample.cpp)
+//   mesh    the light mesh: visibility baked on a 3D grid, trilinear     (light_mesh.cpp)
+//   vsm esm filterable maps with a blur; VSM's light bleeding            (filterable_maps.cpp)
+// and the theory drawn live (soft_theory.cpp): the predicted inner and outer penumbra edges
+// r = d / (n.L) * R / D of a caster edge the lecturer picks (E), A_frac against (1 + a/R) / 2.
+//
+// Controls: left drag orbit, right drag pan, wheel zoom; T cycles the technique, V the view,
+// E the caster edge, G its predicted penumbra, A the A_frac plot, L Parker's profile (exact or
+// linear; haines.profile likewise), 1 2 the lights, M the ground-truth overlays, O the god view; F1 help.
+// Exercises (exercises.hpp): the half-width, A_frac and its line, the PCSS radius, tap
+// rotation, the light mesh's trilinear average.
+#include <imgui.h>
+
+#include "app/lesson.hpp"
+#include "exercises.hpp"
+#include "technique/filterable_maps.hpp"
+#include "technique/light_mesh.hpp"
+#include "technique/lit_pass.hpp"
+#include "technique/many_lights.hpp"
+#include "technique/pcss.hpp"
+#include "technique/scene_cache.hpp"
+#include "technique/single_sample.hpp"
+#include "technique/soft_theory.hpp"
+
+using namespace shadowlab;
+
+namespace {
+
+enum class Technique { Many, Pcf, Pcss, Parker, Haines, Mesh, Vsm, Esm };
+enum class View { Lit, Visibility };
+constexpr int kLights = 2;
+constexpr int kEdgeSamples = 24;
+
+struct Params {
+  tech::SceneChoice scene{0, 30000};      // showcase: contact penumbras at the box, far ones under the knot
+  Technique technique = Technique::Pcss;  // the one engines ship: contact hardening for 32 taps
+  View view = View::Lit;
+  Impl impl = Impl::Reference;  // student: your half-width draws the edges, your A_frac the plot
+  float ambient = 0.12f;
+  bool showEdge = false;  // the predicted penumbra of the picked caster edge
+  int edge = 11;          // which of the box's 12 edges (soft::boxEdges): 11 is a top edge over open ground
+  bool plot = true;       // A_frac against its linear approximation (ImGui)
+  Light lights[kLights];  // a spherical spot over the scene, a second spherical light (off)
+};
+
+const char* const kSummary =
+    "A spherical light: many point lights, PCF and PCSS, single-sample soft shadows, the light mesh, VSM and ESM, "
+    "each against the sphere-light reference; the penumbra formula and A_frac drawn live.";
+const char* const kHelp = R"(T: many lights, PCF, PCSS, Parker, Haines, light mesh, VSM, ESM.
+light0.radius: the sphere's size (0: hard). many.samples: N maps. pcss.* taps.
+G: the predicted penumbra edges of box edge E (yellow centre, red inner, cyan outer).
+A: the A_frac plot; L: Parker's profile, exact or linear (the 7 %; haines.profile too).
+V: the visibility alone. M: error against the sphere-light reference; O: god view.)";
+
+const char* const kTechniques[] = {"many", "pcf", "pcss", "parker", "haines", "mesh", "vsm", "esm"};
+
+}  // namespace
+
+// The lesson holds every soft technique and draws with the one `technique` picks; each declares its
+// parameters under its own name (many.samples, pcss.filter_taps, ...), so the showdown can hold
+// them the same way.
+class SoftShadowsLesson : public Lesson {
+ public:
+  void declare(ParamRegistry& r) override {
+    camera.aim({-3.5f, 0.0f, -0.5f}, 15.0f, 0.9f);  // from above: the box's long shadow, the knot's far one
+    camera.yaw = -0.3f;
+    tech::SceneCache::declare(r, &p_.scene, "procedural scene", "scene size: what every shadow pass draws");
+    r.addChoice("technique", &p_.technique, std::vector<std::string>(std::begin(kTechniques), std::end(kTechniques)),
+                "which approximation of the sphere's visible fraction draws the shadows")
+        .hotkey = "T";
+    r.addChoice("view", &p_.view, {"lit", "visibility"}, "lit, or V of the measured light alone").hotkey = "V";
+    declareImpl(r, &p_.impl, "whose half-width draws the predicted edges, whose A_frac the plot");
+    r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
+    r.add("theory.edges", &p_.showEdge, "draw the lecture's predicted penumbra of the picked caster edge").hotkey = "G";
+    r.addChoice("theory.edge", &p_.edge, {"0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11"},
+                "which edge of the box (0-3 along its x, 4-7 upright, 8-11 along its z)")
+        .hotkey = "E";
+    r.add("theory.plot", &p_.plot, "A_frac against (1 + a/R) / 2, with the largest difference").hotkey = "A";
+    for (std::size_t i = 0; i < techniques_.size(); ++i) techniques_[i]->declare(r, std::string(kTechniques[i]) + ".");
+    r.setHotkey("parker.profile", "L");
+    declareLights(r);
+  }
+
+  LessonInfo info() const override { return {"05", "05_soft_shadows", "Soft shadows", kSummary, 4, kHelp, true}; }
+
+  void init() override {
+    for (tech::ShadowTechnique* t : techniques_) t->init();
+    edgeLines_.build();
+  }
+
+  MeasureSource measureSource() override {
+    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}};
+  }
+
+  void applyPathLight(const glm::vec3& position, const glm::vec3& direction) override {
+    p_.lights[0].position = position;
+    p_.lights[0].direction = direction;
+  }
+
+  void update(const FrameInfo&) override { scene_.update(p_.scene); }
+
+  void render(const FrameInfo& f) override {
+    const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
+    tech::ShadowTechnique& technique = *techniques_[std::size_t(p_.technique)];
+
+    // ==== 1. the light cameras: at the sphere's centre, or at each of N points on it =============
+    // ==== 2. shadow passes (maps, moments and their blur, or the light mesh's bake) ==============
+    technique.renderShadows(c);
+    if (!f.godView) {
+      counters = technique.stats().counters();
+      addTheoryCounters();
+    }
+
+    // ==== 3. the scene from the eye, V from the technique ========================================
+    {
+      auto t = scope("scene");
+      glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      lit_.draw(c, technique, {glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0});
+    }
+
+    // ==== 4. the theory over it: the predicted penumbra of the picked edge =======================
+    if (p_.showEdge) {
+      auto t = scope("theory");
+      const auto [a, b] = pickedEdge();
+      const auto lines = tech::penumbraLines(a, b, predictedPenumbra());
+      withoutMeasurement([&] { edgeLines_.draw(lines, f.projection * f.view, false); });
+    }
+  }
+
+  void gui() override {
+    if (!p_.plot) return;
+    const bool student = p_.impl == Impl::Student;
+    tech::visibleFractionPlot(student ? tech::FractionFn(ex05::visibleFraction) : soft::visibleFraction,
+                              student ? tech::FractionFn(ex05::visibleFractionLinear) : soft::visibleFractionLinear);
+  }
+
+ private:
+  // The box's edge the overlay follows, and a point inside the box (its shadow is the umbra side).
+  std::array<glm::vec3, 2> pickedEdge() const {
+    for (const SceneObject& o : scene_.scene().objects)
+      if (o.name == "box") return soft::boxEdges(o.model, glm::vec3(1.0f))[std::size_t(p_.edge)];
+    return {glm::vec3(0.0f), glm::vec3(0.0f)};
+  }
+  glm::vec3 boxCentre() const {
+    for (const SceneObject& o : scene_.scene().objects)
+      if (o.name == "box") return glm::vec3(o.model[3]);
+    return glm::vec3(0.0f);
+  }
+
+  // The lecture's prediction along the edge, over the ground plane y = 0, from light0's centre.
+  std::vector<soft::PenumbraEdgeSample> predictedPenumbra() const {
+    const Light& l = p_.lights[0];
+    const auto [a, b] = pickedEdge();
+    const soft::HalfWidthFn student = ex05::penumbraHalfWidth;
+    return soft::penumbraAlongEdge(l.position, l.area == AreaShape::Sphere ? l.radius : 0.0f, a, b, boxCentre(),
+                                   {0, 1, 0, 0}, kEdgeSamples, p_.impl == Impl::Student ? student : nullptr);
+  }
+
+  // The figures the overlays show, in the header (and in --measure's counters).
+  void addTheoryCounters() {
+    const auto samples = predictedPenumbra();
+    char buf[128];
+    if (!samples.empty()) {
+      const auto& mid = samples[samples.size() / 2];
+      std::snprintf(buf, sizeof buf, "%.4f m at the middle (edge %d), %.4f .. %.4f along it", mid.halfWidth, p_.edge,
+                    samples.front().halfWidth, samples.back().halfWidth);
+      counters.push_back({"penumbra r predicted", buf});
+    }
+    const bool student = p_.impl == Impl::Student;
+    const tech::PlotFigures f =
+        tech::compareFractions(student ? tech::FractionFn(ex05::visibleFraction) : soft::visibleFraction,
+                               student ? tech::FractionFn(ex05::visibleFractionLinear) : soft::visibleFractionLinear);
+    std::snprintf(buf, sizeof buf, "%.2f %% at a/R = %+.3f", 100.0f * f.maxDifference, f.at);
+    counters.push_back({"A_frac linear error", buf});
+  }
+
+  // light0: a sphere of radius 0.5 m over the showcase, a spot whose cone holds the scene's shapes;
+  // light1: a second sphere (off), to show that every technique serves several lights.
+  void declareLights(ParamRegistry& r) {
+    Light* l = p_.lights;
+    l[0] = {LightKind::Spot,
+            {0.96f, 7.0f, -1.62f}};  // across the plane of the test edge 11 (tests/unit/test_soft_truth)
+    l[0].direction = glm::normalize(glm::vec3(-2.46f, -7.0f, 0.62f));
+    l[0].color = {1.0f, 0.95f, 0.85f};
+    l[0].intensity = 1.3f;
+    l[0].attenuation = {1.0f, 0.0f, 0.002f};
+    l[0].spotInner = 0.9f;  // the cone holds every shape and its shadow: the maps' fov is 2.05 rad
+    l[0].spotOuter = 1.0f;
+    l[0].area = AreaShape::Sphere;
+    l[0].radius = 0.5f;
+    l[1] = {LightKind::Spot, {6.0f, 7.0f, 5.0f}};
+    l[1].direction = glm::normalize(glm::vec3(-6.0f, -7.0f, -5.0f));
+    l[1].color = {0.5f, 0.7f, 1.0f};
+    l[1].intensity = 0.8f;
+    l[1].attenuation = {1.0f, 0.0f, 0.002f};
+    l[1].spotInner = 0.6f;
+    l[1].spotOuter = 0.72f;
+    l[1].area = AreaShape::Sphere;
+    l[1].radius = 0.3f;
+    l[1].enabled = false;
+    for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
+  }
+
+  Params p_;
+  tech::SceneCache scene_{"05 scene"};
+  tech::ManyLights many_;
+  tech::PcssShadows pcf_{false}, pcss_{true};
+  tech::SingleSampleSoft parker_{tech::SingleSampleSoft::Kind::Parker};
+  tech::SingleSampleSoft haines_{tech::SingleSampleSoft::Kind::Haines};
+  tech::LightMesh mesh_;
+  tech::FilterableMaps vsm_{tech::FilterableMaps::Kind::Vsm}, esm_{tech::FilterableMaps::Kind::Esm};
+  std::array<tech::ShadowTechnique*, 8> techniques_{&many_, &pcf_, &pcss_, &parker_, &haines_, &mesh_, &vsm_, &esm_};
+  tech::LitPass lit_{"05 scene"};
+  LineRenderer edgeLines_{"05 penumbra edges"};
+};
+
+int main(int argc, char** argv) { return runLesson<SoftShadowsLesson>(argc, argv); }
