@@ -17,7 +17,7 @@ enum class SampleLayout { Ball, Disk };
 struct ManyLightsParams {
   int samples = 16;  // N point lights per spherical light (1 is a hard shadow)
   SampleLayout layout = SampleLayout::Ball;
-  SoftMapParams maps{1};  // 512^2 per sample: N maps add up
+  SoftMapParams maps{2};  // 1024^2 per sample: 64 of them hold 256 MiB (the header shows it)
 };
 
 class ManyLights : public ShadowTechnique {

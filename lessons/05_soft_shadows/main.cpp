@@ -38,7 +38,7 @@ namespace {
 enum class Technique { Many, Pcf, Pcss, Parker, Haines, Mesh, Vsm, Esm };
 enum class View { Lit, Visibility };
 constexpr int kLights = 2;
-constexpr int kEdgeSamples = 24;
+constexpr int kEdgeSamples = 25;  // odd: the middle sample is the edge's midpoint
 
 struct Params {
   tech::SceneChoice scene{0, 30000};      // showcase: contact penumbras at the box, far ones under the knot

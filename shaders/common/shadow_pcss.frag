@@ -46,7 +46,8 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
       ++blockers;
     }
   }
-  if (blockers == 0) return 1.0;
+  if (blockers == 0) return 1.0;             // nothing can hide the light: lit, and no filter paid
+  if (blockers == SEARCH_TAPS) return 0.0;   // the whole search region blocks it: umbra
   float zBlocker = sum / float(blockers);
   float radius = max(R * max(r.z - zBlocker, 0.0) / (zBlocker * 2.0 * r.z * tanHalf), uMinFilter / uSoftMapSize);
 #else
