@@ -124,7 +124,11 @@ void LightMesh::countStats() {
   stats_.extra.push_back({"light mesh build", buf});
 }
 
+// Units: the sample maps' two (soft_maps.glsl: the lights' centres and radii for the horizon),
+// then one 3D texture per light.
 void LightMesh::bindVisibility(const gl::Program& lit, int firstUnit) const {
+  maps_.bind(lit, firstUnit);
+  firstUnit += 2;
   lit.set("uMeshOffset", p_.offset);
   for (int i = 0; i < kMaxLights; ++i) {
     const std::string n = "[" + std::to_string(i) + "]";
@@ -144,6 +148,8 @@ void LightMesh::bindVisibility(const gl::Program& lit, int firstUnit) const {
 }
 
 void LightMesh::unbindVisibility(int firstUnit) const {
+  maps_.unbind(firstUnit);
+  firstUnit += 2;
   for (int i = 0; i < kMaxLights; ++i) {
     glActiveTexture(GLenum(GL_TEXTURE0 + firstUnit + i));
     glBindTexture(GL_TEXTURE_3D, 0);

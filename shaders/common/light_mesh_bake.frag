@@ -23,5 +23,5 @@ void main() {
     return;
   }
   float texel = 2.0 * z * uSoftTanHalfFov[uLight] / uSoftMapSize;
-  fragColor = vec4(softSampledVisibility(uLight, view, uSoftBias * texel, SOFT_SAMPLES));
+  fragColor = vec4(softSampledVisibility(uLight, view, vec3(0.0), uSoftBias * texel, SOFT_SAMPLES));
 }

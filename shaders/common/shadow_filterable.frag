@@ -23,12 +23,11 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   float t = clamp((r.z - softBias(r) - range.x) / (range.y - range.x), 0.0, 1.0);
   vec4 m = texture(uMoments[i], r.uv);
 #ifdef ESM
-  return clamp(m.x * exp(-uExponent * t), 0.0, 1.0);
+  float v = clamp(m.x * exp(-uExponent * t), 0.0, 1.0);
 #else
-  if (t <= m.x) return 1.0;
   float variance = max(m.y - m.x * m.x, uMinVariance);
   float d = t - m.x;
-  float p = variance / (variance + d * d);
-  return clamp((p - uBleed) / (1.0 - uBleed), 0.0, 1.0);
+  float v = t <= m.x ? 1.0 : clamp((variance / (variance + d * d) - uBleed) / (1.0 - uBleed), 0.0, 1.0);
 #endif
+  return v * softHorizon(i, worldPos, N);
 }

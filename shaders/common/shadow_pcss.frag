@@ -46,8 +46,8 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
       ++blockers;
     }
   }
-  if (blockers == 0) return 1.0;             // nothing can hide the light: lit, and no filter paid
-  if (blockers == SEARCH_TAPS) return 0.0;   // the whole search region blocks it: umbra
+  if (blockers == 0) return softHorizon(i, worldPos, N);  // nothing can hide the light: no filter paid
+  if (blockers == SEARCH_TAPS) return 0.0;                // the whole search region blocks it: umbra
   float zBlocker = sum / float(blockers);
   float radius = max(R * max(r.z - zBlocker, 0.0) / (zBlocker * 2.0 * r.z * tanHalf), uMinFilter / uSoftMapSize);
 #else
@@ -58,5 +58,5 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
     vec2 o = turn * uFilterTaps[k] * radius;
     v += softCompare(i, 0, r.uv + o, r.z + dot(plane, o) - bias);
   }
-  return v / float(FILTER_TAPS);
+  return v / float(FILTER_TAPS) * softHorizon(i, worldPos, N);
 }

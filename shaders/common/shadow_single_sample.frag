@@ -71,14 +71,15 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   float hard = softCompare(i, 0, r.uv, r.z - bias);
   if (hard <= 0.0) return 0.0;  // the hard shadow is the umbra
 #ifdef HAINES
-  if (N.y < 0.99 || abs(worldPos.y - uPlaneHeight) > uPlaneTolerance) return hard;  // not the plane
+  if (N.y < 0.99 || abs(worldPos.y - uPlaneHeight) > uPlaneTolerance)
+    return hard * softHorizon(i, worldPos, N);  // not the plane: the hard shadow
 #endif
   float near = uSoftDepthRange[i].x, tanHalf = uSoftTanHalfFov[i], R = uSoftRadius[i];
   float search = min(R * max(r.z - near, 0.0) / (2.0 * tanHalf * near * r.z), uMaxSearch);
   float a = softRotation(gl_FragCoord.xy);
   mat2 turn = mat2(cos(a), sin(a), -sin(a), cos(a));
   float zMean = meanBlockerDepth(i, r, plane, bias, search, turn);
-  if (zMean <= 0.0) return hard;
+  if (zMean <= 0.0) return hard * softHorizon(i, worldPos, N);
   // Step 2: the taps again, over the penumbra these blockers can throw (the hull's thickness at
   // their mean depth; for plateaus the full width 2r, stretched by 1 / (n.L) on the plane), so
   // they are dense where the nearest blocker is.
@@ -98,5 +99,5 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
     v = min(v, thickness > 0.0 ? softProfile(2.0 * length(o) / thickness - 1.0, LINEAR) : 1.0);
 #endif
   }
-  return hard * v;
+  return hard * v * softHorizon(i, worldPos, N);
 }

@@ -78,15 +78,35 @@ float softDepthAt(int i, int k, vec2 uv) {
   return softLinearDepth(i, texture(uSoftDepths, vec3(uv, float(uSoftLayer[i] + k))).r);
 }
 
+// The lecture's A_frac of t = a / R and its linear approximation (soft::visibleFraction).
+float softVisibleFraction(float t) {
+  t = clamp(t, -1.0, 1.0);
+  return 0.5 + (t * sqrt(max(1.0 - t * t, 0.0)) + asin(t)) / 3.14159265;
+}
+float softProfile(float t, bool linearProfile) {
+  return linearProfile ? 0.5 * (1.0 + clamp(t, -1.0, 1.0)) : softVisibleFraction(t);
+}
+
 // The mean of `count` samples' comparisons: the many point lights on the sphere, each a hard
-// shadow; their average is the fraction of the sphere the point sees, up to the sampling.
-float softSampledVisibility(int i, vec3 view, float bias, int count) {
+// shadow; their average is the fraction of the sphere the point sees, up to the sampling. A sample
+// below the receiver's horizon (its tangent plane, normalView in the light's view space) is hidden
+// by the receiver itself, whatever its map says; normalView = 0 (a grid node) has no horizon.
+float softSampledVisibility(int i, vec3 view, vec3 normalView, float bias, int count) {
   float v = 0.0;
   for (int k = 0; k < count; ++k) {
+    if (dot(normalView, uSoftRadius[i] * uSoftSamples[k] - view) < 0.0) continue;
     vec3 s = softProjectSample(i, view, k);
     v += softCompare(i, k, s.xy, s.z - bias);
   }
   return v / float(count);
+}
+
+// The share of the sphere above the receiver's tangent plane: the light's centre is a = N.(L - p)
+// above it, so A_frac(a / R) of the disk shows (soft::visibleFraction). A map cannot know it: the
+// receiver is not in front of itself. Multiplies the single-map techniques' V.
+float softHorizon(int i, vec3 worldPos, vec3 N) {
+  float a = dot(N, uLights[i].position - worldPos);
+  return uSoftRadius[i] > 0.0 ? softVisibleFraction(a / uSoftRadius[i]) : (a > 0.0 ? 1.0 : 0.0);
 }
 
 // The per-pixel rotation of the Poisson taps (shadow::rotationAngle).
@@ -103,11 +123,3 @@ vec2 softReceiverPlane(vec3 dx, vec3 dy, SoftReceiver r, int i) {
   return len > cap ? plane * (cap / len) : plane;
 }
 
-// The lecture's A_frac of t = a / R and its linear approximation (soft::visibleFraction).
-float softVisibleFraction(float t) {
-  t = clamp(t, -1.0, 1.0);
-  return 0.5 + (t * sqrt(max(1.0 - t * t, 0.0)) + asin(t)) / 3.14159265;
-}
-float softProfile(float t, bool linearProfile) {
-  return linearProfile ? 0.5 * (1.0 + clamp(t, -1.0, 1.0)) : softVisibleFraction(t);
-}
