@@ -2,13 +2,14 @@
 # 320x180, the contact_hardening view: the box's shadow fills the frame). What a correct
 # implementation must reach, each next to a control a broken one would fail:
 #   the reference's own noise (two seeds) is small but not zero;
-#   many point lights converge: N = 1 (a hard shadow) > 4 > 16 > 64, and N = 16 is within 3x the
-#     noise floor, while the hard shadow is beyond 4x;
+#   many point lights converge: N = 1 (a hard shadow) > 4 > 16 > 64, and N = 16 is within 2x the
+#     noise floor (the goal of lesson 05), while the hard shadow is beyond 4x;
 #   PCF and PCSS soften: both below the hard shadow; PCSS below the fixed kernel;
 #   Parker and Haines keep the hard shadow as the umbra: they over-estimate it (> 1 % of the
 #     pixels) and never under-estimate it (< 0.05 %), where many point lights over-estimate it by
 #     less than 0.2 %;
-#   VSM bleeds in vsm_bleeding, and its bleeding reduction lowers the error.
+#   VSM bleeds in vsm_bleeding (its umbra under-estimated three times as much as by 16 point
+#     lights), and its bleeding reduction lowers the error.
 # Run: cmake -DLESSON=... -DOUT_DIR=... -P this
 include(${CMAKE_CURRENT_LIST_DIR}/soft_measure.cmake)
 file(MAKE_DIRECTORY ${OUT_DIR})
@@ -30,14 +31,8 @@ soft_get(noise rmse noise_many16)
 if(NOT noise_many16 STREQUAL many16_rmse)
   message(FATAL_ERROR "measure.noise_floor changed the figure it sits beside: ${noise_many16} against ${many16_rmse}")
 endif()
-expect_below_times("many lights at 16 samples against the noise floor" ${many16_rmse} 3 ${floor})
-to_micro(${floor} f)
-to_micro(${many1_rmse} h)
-math(EXPR f4 "4 * ${f}")
-if(NOT h GREATER f4)
-  message(FATAL_ERROR "the hard shadow (${many1_rmse}) is within 4x the noise floor (${floor}): the measurement cannot tell")
-endif()
-message(STATUS "control: the hard shadow ${many1_rmse} is beyond 4 x the noise floor ${floor}")
+expect_scaled_less("many lights at 16 samples within 2x the noise floor" 1 ${many16_rmse} 2 ${floor})
+expect_scaled_less("control: the hard shadow is beyond 4x the noise floor" 4 ${floor} 1 ${many1_rmse})
 
 foreach(t pcf pcss parker haines)
   soft_run(${t} ${view} --set technique=${t})
@@ -62,6 +57,8 @@ soft_get(bleeding rmse bleeding_rmse)
 soft_get(bleeding umbra_under_pct bleeding_under)
 soft_get(reduced rmse reduced_rmse)
 soft_get(bleeding_many rmse bleeding_many_rmse)
+soft_get(bleeding_many umbra_under_pct bleeding_many_under)
 expect_less("VSM bleeds where casters overlap: far above many lights" ${bleeding_many_rmse} ${bleeding_rmse})
-expect_less("VSM's bleeding lights the umbra (under-estimated, % of pixels)" 2.0 ${bleeding_under})
+expect_scaled_less("VSM's bleeding lights the umbra: over 3 times what many lights under-estimate" 3
+                   ${bleeding_many_under} 1 ${bleeding_under})
 expect_less("the bleeding reduction lowers VSM's error" ${reduced_rmse} ${bleeding_rmse})

@@ -11,18 +11,8 @@
 #     runs without are byte-identical);
 #   the light mesh is baked once for a still light (1 build, maps reused), every frame for a moving one.
 # Run: cmake -DLESSON=... -DOUT_DIR=... -DSTUBS_PRISTINE=ON|OFF -P this
+include(${CMAKE_CURRENT_LIST_DIR}/soft_measure.cmake)
 file(MAKE_DIRECTORY ${OUT_DIR})
-
-function(counters name)
-  set(out ${OUT_DIR}/theory_${name}.json)
-  execute_process(COMMAND ${LESSON} --headless --size 320x180 --strict-gl ${ARGN} --measure ${out}
-                  RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${name}: lesson exited ${rc}: ${err}")
-  endif()
-  file(READ ${out} json)
-  set(${name}_json "${json}" PARENT_SCOPE)
-endfunction()
 
 function(expect_counter name counter pattern)
   string(JSON value ERROR_VARIABLE missing GET "${${name}_json}" counters "${counter}")
@@ -35,13 +25,13 @@ function(expect_counter name counter pattern)
   message(STATUS "${name}: ${counter} = ${value}")
 endfunction()
 
-counters(r05 --frames 1)
+lesson_measure(r05 --frames 1)
 expect_counter(r05 "penumbra r predicted" "^0\\.3117 m at the middle \\(edge 11\\)")
 expect_counter(r05 "A_frac linear error" "^5\\.77 % at a/R = [-+]0\\.61[89]$")
-counters(r10 --frames 1 --set light0.radius=1)
+lesson_measure(r10 --frames 1 --set light0.radius=1)
 expect_counter(r10 "penumbra r predicted" "^0\\.623[34] m")
 if(STUBS_PRISTINE)
-  counters(student --frames 1 --set impl=student)
+  lesson_measure(student --frames 1 --set impl=student)
   expect_counter(student "penumbra r predicted" "^0\\.0000 m")
   expect_counter(student "A_frac linear error" "^0\\.00 %")
 endif()
@@ -69,12 +59,12 @@ endif()
 message(STATUS "the predicted edges change the picture; identical runs do not")
 
 # The light mesh: baked once while nothing moves, every frame while the light does.
-counters(still --frames 3 --set technique=mesh)
+lesson_measure(still --frames 3 --set technique=mesh)
 expect_counter(still "light mesh build" ", 1 build\\(s\\)$")
 expect_counter(still "maps reused" "^1$")
 file(WRITE ${OUT_DIR}/moving_light.path "shadowlab-path 1\n"
      "key 0  -5 12 12  -3.5 0 -0.5  0.96 7 -1.62  -0.33 -0.94 0.08\n"
      "key 1  -5 12 12  -3.5 0 -0.5  0.5 7 -1.0  -0.33 -0.94 0.08\n"
      "key 2  -5 12 12  -3.5 0 -0.5  0.0 7 -0.5  -0.33 -0.94 0.08\n")
-counters(moving --frames 3 --set technique=mesh --replay ${OUT_DIR}/moving_light.path)
+lesson_measure(moving --frames 3 --set technique=mesh --replay ${OUT_DIR}/moving_light.path)
 expect_counter(moving "light mesh build" ", 3 build\\(s\\)$")

@@ -2,17 +2,22 @@
 # soft figures, compare them. CMake's if() compares decimal numbers; math() has only integers, so a
 # scaled comparison goes through millionths (to_micro).
 
-# Runs the lesson at 320x180 (the soft reference traces 64 rays a pixel: seconds at full size) with
-# ARGN, and sets <name>_json in the caller.
-function(soft_run name)
+# Runs the lesson headless at 320x180 with ARGN and --measure, and sets <name>_json in the caller.
+function(lesson_measure name)
   set(out ${OUT_DIR}/soft_${name}.json)
-  execute_process(COMMAND ${LESSON} --headless --frames 2 --size 320x180 --strict-gl --set measure.samples=64 ${ARGN}
-                          --measure ${out} RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+  execute_process(COMMAND ${LESSON} --headless --size 320x180 --strict-gl ${ARGN} --measure ${out}
+                  RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${name}: lesson exited ${rc}: ${err}")
   endif()
   file(READ ${out} json)
   set(${name}_json "${json}" PARENT_SCOPE)
+endfunction()
+
+# The same, measured against the soft reference with 64 rays a pixel (seconds at full size).
+function(soft_run name)
+  lesson_measure(${name} --frames 2 --set measure.samples=64 ${ARGN})
+  set(${name}_json "${${name}_json}" PARENT_SCOPE)
 endfunction()
 
 # soft.<field> of a run (soft_get(run field out)); fails unless the run was measured as soft.
@@ -63,13 +68,14 @@ function(expect_less what a b)
   message(STATUS "${what}: ${a} < ${b}")
 endfunction()
 
-# what: a < factor * b, factor a whole number.
-function(expect_below_times what a factor b)
+# what: fa * a < fb * b, fa and fb whole numbers (a scaled comparison: "within 3x the floor").
+function(expect_scaled_less what fa a fb b)
   to_micro(${a} ma)
   to_micro(${b} mb)
-  math(EXPR limit "${factor} * ${mb}")
-  if(NOT ma LESS limit)
-    message(FATAL_ERROR "${what}: ${a} is not below ${factor} x ${b}")
+  math(EXPR left "${fa} * ${ma}")
+  math(EXPR right "${fb} * ${mb}")
+  if(NOT left LESS right)
+    message(FATAL_ERROR "${what}: ${fa} x ${a} is not below ${fb} x ${b}")
   endif()
-  message(STATUS "${what}: ${a} < ${factor} x ${b}")
+  message(STATUS "${what}: ${fa} x ${a} < ${fb} x ${b}")
 endfunction()
