@@ -41,7 +41,8 @@ bad_input(01_lighting.replay_missing ${l01} 1 "--replay: /nonexistent/walk.path:
 
 # The light rig's checks (declareLight), on every lesson with the rig (light0 is lesson 03's sun:
 # its "sun.direction 1e-45 0 0" of the issue is light0.direction now).
-foreach(lesson IN ITEMS lesson_01_lighting lesson_02_shadow_maps lesson_03_shadow_quality lesson_04_shadow_volumes)
+foreach(lesson IN ITEMS lesson_01_lighting lesson_02_shadow_maps lesson_03_shadow_quality lesson_04_shadow_volumes
+                       lesson_05_soft_shadows)
   if(NOT TARGET ${lesson})
     continue()
   endif()
