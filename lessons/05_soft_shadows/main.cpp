@@ -83,8 +83,8 @@ class SoftShadowsLesson : public Lesson {
     r.add("theory.edges", &p_.showEdge, "draw the lecture's predicted penumbra of the picked caster edge").hotkey = "G";
     r.addChoice("theory.edge", &p_.edge, {"0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11"},
                 "which edge of the box (0-3 along its x, 4-7 upright, 8-11 along its z)")
-        .hotkey = "E";
-    r.add("theory.plot", &p_.plot, "A_frac against (1 + a/R) / 2, with the largest difference").hotkey = "A";
+        .hotkey = "N";
+    r.add("theory.plot", &p_.plot, "A_frac against (1 + a/R) / 2, with the largest difference").hotkey = "P";
     for (std::size_t i = 0; i < techniques_.size(); ++i) techniques_[i]->declare(r, std::string(kTechniques[i]) + ".");
     r.setHotkey("parker.profile", "L");
     declareLights(r);
