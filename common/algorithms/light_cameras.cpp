@@ -69,6 +69,24 @@ LightCamera spotCamera(const Light& spot, float nearZ, float farZ, const CasterB
   return camera;
 }
 
+Map2DCamera fitMap2D(const Light& light, const CasterBoxes& scene, const ConvexVolume& view,
+                     const DirectionalFitOptions& o, float spotNear, float spotFar) {
+  if (light.kind == LightKind::Point)
+    throw std::invalid_argument("fitMap2D: a point light has a cube map, not a 2D map");
+  Map2DCamera m;
+  m.perspective = light.kind == LightKind::Spot;
+  if (!m.perspective) {
+    m.camera = fitDirectional(light.direction, scene, view, o);
+    m.texel = m.camera.texelWorld;
+    m.textureMatrix = textureMatrix(m.camera.projection, m.camera.view);
+  } else {
+    m.camera = spotCamera(light, spotNear, spotFar, scene, o.cullCasters);
+    m.texel = 2.0f * std::tan(0.5f * spotFieldOfView(light)) / float(o.mapSize);
+    m.textureMatrix = textureMatrix(glm::mat4(1.0f), m.camera.viewProj());
+  }
+  return m;
+}
+
 std::array<LightCamera, 6> cubeCameras(const glm::vec3& position, float nearZ, float farZ, const CasterBoxes& scene,
                                        const ConvexVolume& view, bool cullCasters, bool skipFaces) {
   requireConsistent(scene);

@@ -62,6 +62,22 @@ LightCamera fitDirectional(const glm::vec3& direction, const CasterBoxes& scene,
 float spotFieldOfView(const Light& spot);
 LightCamera spotCamera(const Light& spot, float nearZ, float farZ, const CasterBoxes& scene, bool cullCasters);
 
+// A 2D map's light camera with what its lookup needs: a directional light's fitted orthographic
+// camera (fitDirectional with `directional`) or a spot's perspective frustum (spotCamera from
+// spotNear to spotFar, casters culled when directional.cullCasters), the texture matrix (world ->
+// [0,1]^3; a spot's takes its view-projection whole, as lesson 02 builds it) and the texel size
+// (orthographic: the world size of one texel; perspective: 2 tan(fov / 2) / size, a texel's width at
+// unit distance). Shared by every 2D-map technique (uniform maps, hybrid maps). Throws
+// std::invalid_argument for a point light (it needs a cube) and as fitDirectional does.
+struct Map2DCamera {
+  LightCamera camera;
+  glm::mat4 textureMatrix{1.0f};
+  float texel = 0.0f;
+  bool perspective = false;
+};
+Map2DCamera fitMap2D(const Light& light, const CasterBoxes& scene, const ConvexVolume& view,
+                     const DirectionalFitOptions& directional, float spotNear, float spotFar);
+
 // The point light's six faces in GL's cube order (+X, -X, +Y, -Y, +Z, -Z), each a 90-degree
 // perspective from nearZ to max(farZ, nearZ + 0.1), so that the map is what samplerCube reads.
 std::array<LightCamera, 6> cubeCameras(const glm::vec3& position, float nearZ, float farZ, const CasterBoxes& scene,

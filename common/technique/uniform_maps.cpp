@@ -35,23 +35,13 @@ void UniformShadowMaps::declare(ParamRegistry& r, const std::string& n) {
     return name + " = " + std::to_string(p_.pcfSize) + ": the N x N kernel needs an odd N; valid: 1, 3, 5, 7, 9";
   });
   r.add(n + "pcf.radius", &p_.poissonRadius, 0.5f, 8, "Poisson disk radius in texels");
-  r.add(n + "bias.constant", &p_.constantBias, 0, 0.1f, "constant depth bias in the shader");
-  r.add(n + "bias.slope", &p_.slopeBias, 0, 0.02f, "slope-scaled bias in the shader: times tan(theta)");
-  r.add(n + "bias.max", &p_.maxBias, 0, 0.1f, "upper clamp of the in-shader bias");
-  r.add(n + "offset.factor", &p_.offsetFactor, 0, 10, "glPolygonOffset factor: slope-scaled, in the depth pass");
-  r.add(n + "offset.units", &p_.offsetUnits, 0, 100, "glPolygonOffset units: constant, in depth-format steps");
-  r.add(n + "bias.normal_offset", &p_.normalOffset, 0, 4, "look up from a point this many texels along the normal");
+  declareBias(r, n, p_);
   r.add(n + "bias.receiver_plane", &p_.receiverPlane, "filter taps follow the receiver's plane (no PCF acne)");
-  r.add(n + "cull_front", &p_.cullFront, "depth pass draws back faces only: closed casters need no bias");
-  r.addChoice(n + "fit", &p_.fit, {"scene", "view"},
-              "sun frustum: around the scene, or fitted to the receivers in view");
-  r.add(n + "snap", &p_.snap, "texel snapping of the fitted frustum (no shimmer)");
-  r.add(n + "cull_casters", &p_.cullCasters, "skip casters that cannot shade anything in view");
+  declareFitting(r, n, p_);
   r.add(n + "skip_faces", &p_.skipFaces, "skip cube faces whose frustum misses the view frustum");
   r.add(n + "cube.near", &p_.cubeNear, 0.01f, 10, "cube faces' near plane");
   r.add(n + "cube.far", &p_.cubeFar, 1, 500, "cube faces' far plane: beyond it, lit");
-  r.add(n + "spot.near", &p_.spotNear, 0.01f, 50, "the spot frustum's near plane: depth precision lives here");
-  r.add(n + "spot.far", &p_.spotFar, 1, 500, "the spot frustum's far plane");
+  declareSpotRange(r, n, p_);
   r.add(n + "reuse_maps", &p_.reuseMaps, "keep a map nothing invalidated (light, casters, light camera unchanged)");
 }
 
@@ -93,19 +83,15 @@ void UniformShadowMaps::fitLight(const ShadowContext& c, int i, const shadow::Co
     l.map = l.type == Type::Cube ? gl::makeShadowCube(size, p_.format, "light" + std::to_string(i) + " cube map")
                                  : gl::makeShadowMap(size, p_.format, "light" + std::to_string(i) + " shadow map");
   }
-  if (l.type == Type::Ortho) {
-    l.camera = shadow::fitDirectional(light.direction, boxes, view,
-                                      {p_.fit == Fit::View, p_.snap, p_.cullCasters, size, casterTest, fitter});
-    l.texel = l.camera.texelWorld;
-  } else if (l.type == Type::Perspective) {
-    l.camera = shadow::spotCamera(light, p_.spotNear, p_.spotFar, boxes, p_.cullCasters);
-    l.texel = 2.0f * std::tan(0.5f * shadow::spotFieldOfView(light)) / float(size);
-  } else {
+  if (l.type == Type::Cube) {
     l.faces = shadow::cubeCameras(light.position, p_.cubeNear, p_.cubeFar, boxes, view, p_.cullCasters, p_.skipFaces);
+    return;
   }
-  // (A spot's matrix takes its view-projection whole, as lesson 02 builds it.)
-  l.textureMatrix = l.type == Type::Ortho ? shadow::textureMatrix(l.camera.projection, l.camera.view)
-                                          : shadow::textureMatrix(glm::mat4(1.0f), l.camera.viewProj());
+  const shadow::Map2DCamera m =
+      shadow::fitMap2D(light, boxes, view, directionalFit(p_, size, casterTest, fitter), p_.spotNear, p_.spotFar);
+  l.camera = m.camera;
+  l.texel = m.texel;
+  l.textureMatrix = m.textureMatrix;
 }
 
 // What light i's map depends on: its cameras and the casters they keep, the scene, the depth pass's
@@ -208,10 +194,7 @@ void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) co
   lit.set("uFilter", int(p_.filter));
   lit.set("uPcfSize", p_.pcfSize);  // odd: declare()'s check refuses an even N
   lit.set("uPoissonRadius", p_.poissonRadius);
-  lit.set("uConstantBias", p_.constantBias);
-  lit.set("uSlopeBias", p_.slopeBias);
-  lit.set("uMaxBias", p_.maxBias);
-  lit.set("uNormalOffset", p_.normalOffset);
+  setBiasUniforms(lit, p_);
   lit.set("uReceiverPlane", p_.receiverPlane);
   const bool nearest = p_.filter == Filter::Nearest || p_.filter == Filter::BoxNxN;
   const GLuint sampler = nearest ? compareNearest_.id() : compareLinear_.id();

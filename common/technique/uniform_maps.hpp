@@ -16,34 +16,24 @@
 #include "gl/shadow_map.hpp"
 #include "technique/casters.hpp"
 #include "technique/pass_key.hpp"
+#include "technique/map_settings.hpp"
 #include "technique/technique.hpp"
 
 namespace shadowlab::tech {
 
 enum class Filter { Nearest, Hardware2x2, BoxNxN, Poisson };
-enum class Fit { Scene, View };
 
-struct UniformMapParams {
+// Bias, fit, culling and the spot's range come from MapSettings (shared with the hybrid maps).
+struct UniformMapParams : MapSettings {
   int mapSize = 3;                                    // index into mapSizes(): 2048^2 (directional, spot)
   int cubeSize = 2;                                   // 1024^2 per cube face
   gl::DepthFormat format = gl::DepthFormat::Depth24;  // every map's depth format
   Filter filter = Filter::Hardware2x2;                // GL_LINEAR on a comparison sampler: free 2x2 PCF
   int pcfSize = 3;                                    // N of N x N PCF (odd)
   float poissonRadius = 2.0f;                         // Poisson disk radius in texels
-  float constantBias = 0.0005f;                       // depth units subtracted before the comparison
-  float slopeBias = 0.0005f;                          // times tan(theta): steep receivers need more
-  float maxBias = 0.003f;                             // clamp: tan(theta) grows without bound
-  float offsetFactor = 1.0f;                          // glPolygonOffset factor (depth pass)
-  float offsetUnits = 1.0f;                           // glPolygonOffset units (depth pass)
-  float normalOffset = 0.5f;                          // lookup point moved this many texels along N
   bool receiverPlane = false;                         // filter taps compare against the receiver's plane
-  bool cullFront = false;                             // depth pass draws back faces
-  Fit fit = Fit::View;                                // directional frustum around the scene or the view
-  bool snap = true;                                   // texel snapping of the fitted frustum
-  bool cullCasters = true;                            // skip casters that cannot shade the view
-  bool skipFaces = true;                              // skip cube faces the view frustum misses
+  bool skipFaces = true;                              // skip cube faces whose frustum misses the view frustum
   float cubeNear = 0.2f, cubeFar = 60.0f;             // the cube faces' depth range
-  float spotNear = 0.5f, spotFar = 150.0f;            // the spot frustum's depth range
   bool reuseMaps = true;                              // skip a map's pass when nothing it depends on changed
 };
 

@@ -9,6 +9,7 @@
 // SHADOW_FILTER f, PCF_SIZE n, RECEIVER_PLANE 0|1, so a software renderer runs only the lookup each
 // light needs; without them the same code reads the uniforms (the generic variant).
 #include "common/light.glsl"
+#include "common/shadow_bias.glsl"
 
 const int SHADOW_NONE = 0, SHADOW_ORTHO = 1, SHADOW_PERSPECTIVE = 2, SHADOW_CUBE = 3;
 
@@ -26,10 +27,6 @@ uniform float uCubeNear, uCubeFar;
 uniform int uFilter;           // 0 nearest, 1 hardware 2x2, 2 N x N, 3 Poisson disk (rotated)
 uniform int uPcfSize;          // N (odd)
 uniform float uPoissonRadius;  // in texels
-uniform float uConstantBias;   // depth units
-uniform float uSlopeBias;      // depth units per unit of tan(theta)
-uniform float uMaxBias;
-uniform float uNormalOffset;   // texels of world offset along the normal
 uniform bool uReceiverPlane;   // receiver-plane depth bias for the filter taps
 
 #ifdef SHADOW_TYPES
@@ -67,12 +64,6 @@ float tapCube(int i, vec4 p) {
     case 2: return textureGrad(uShadowCube2, p, vec3(0.0), vec3(0.0));
     default: return textureGrad(uShadowCube3, p, vec3(0.0), vec3(0.0));
   }
-}
-
-float slopeScaledBias(float cosTheta) {  // shadow::slopeScaledBias
-  if (cosTheta <= 0.0) return uMaxBias;
-  float c = min(cosTheta, 1.0);
-  return min(uConstantBias + uSlopeBias * sqrt(1.0 - c * c) / c, uMaxBias);
 }
 
 float rotationAngle(vec2 pixel) {  // shadow::rotationAngle
@@ -157,14 +148,7 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
     return cubeVisibility(i, uLights[i].position, q, cosPoint, uShadowSize[i]);
   }
   float cosTheta;
-  vec3 q;
-  if (type == SHADOW_ORTHO) {
-    cosTheta = dot(N, -uLights[i].direction);
-    q = worldPos + N * uNormalOffset * uShadowTexel[i] * sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
-  } else {
-    cosTheta = dot(N, normalize(toLightPos));
-    q = worldPos + N * uNormalOffset * uShadowTexel[i] * length(toLightPos) * sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
-  }
+  vec3 q = normalOffsetPoint(uLights[i], type == SHADOW_PERSPECTIVE, uShadowTexel[i], worldPos, N, cosTheta);
   vec4 h = uShadowMatrix[i] * vec4(q, 1.0);
   vec3 p = h.w > 0.0 ? h.xyz / h.w : vec3(0.5, 0.5, 2.0);  // behind a spot: nothing known, lit
   vec2 plane = receiverPlane(p);
