@@ -257,6 +257,13 @@ void Measurement::compute(const MeasureSource& source) {
     result_.errorHeatmap = measure::hardErrorHeatmap(technique, reference);
   }
   measureAliasing(shaded.jacobian, surface.covered);
+  if (source.edgeBand > 0.0f && !result_.soft) {  // the same figures near shadow edges
+    const auto band = measure::shadowEdgeBand(reference, shaded.position, light, source.edgeBand);
+    result_.hasBand = true;
+    result_.bandRadius = source.edgeBand;
+    result_.band = measure::compareHard(technique, reference, band);
+    if (result_.hasAliasing) result_.bandAliasing = measure::aliasingStats(measure::keepWhere(shaded.jacobian, band));
+  }
   result_.referenceImage = referenceImage(reference);
   result_.valid = true;
   uploadOverlay();

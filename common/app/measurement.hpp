@@ -57,6 +57,10 @@ struct MeasureSource {
   const Scene* scene = nullptr;     // everything that casts shadows, on the CPU
   std::uint64_t sceneRevision = 0;  // change it when the scene changes: the BVH is rebuilt then only
   std::vector<Light> lights;        // the lesson's lights, in its own order
+  // Also measure the pixels near shadow edges (MeasureResult::band): facing pixels within this
+  // distance of a reference shadow boundary, across the light (measure::shadowEdgeBand): world
+  // units for a directional light, a width at unit distance for a spot or point light. 0: not.
+  float edgeBand = 0.0f;
 };
 
 struct MeasureResult {
@@ -66,6 +70,10 @@ struct MeasureResult {
   measure::SoftShadowErrors soft_;
   bool hasAliasing = false;
   measure::AliasingStats aliasing;
+  bool hasBand = false;  // the figures of the pixels near shadow edges (MeasureSource::edgeBand)
+  float bandRadius = 0.0f;
+  measure::HardShadowErrors band;
+  measure::AliasingStats bandAliasing;
   double groundTruthMs = 0, readbackMs = 0, buildMs = 0;
   int width = 0, height = 0;  // the resolution measured at
   Image8 errorHeatmap, aliasingHeatmap, referenceImage;

@@ -89,10 +89,17 @@ nlohmann::ordered_json figures(const MeasureResult& r) {
                  {"false_shadow_pct", h.falseShadowPct},
                  {"edge_tolerant_pct", h.edgeTolerantPct}};
   }
-  if (r.hasAliasing) {
-    const auto& a = r.aliasing;
-    j["aliasing"] = {{"pixels", a.pixels}, {"mean", a.mean}, {"rms", a.rms},
-                     {"p95", a.p95},       {"max", a.max},   {"share_above_1", a.shareAbove1}};
+  auto aliasing = [](const measure::AliasingStats& a) {
+    return nlohmann::ordered_json{{"pixels", a.pixels}, {"mean", a.mean}, {"rms", a.rms},
+                                  {"p95", a.p95},       {"max", a.max},   {"share_above_1", a.shareAbove1}};
+  };
+  if (r.hasAliasing) j["aliasing"] = aliasing(r.aliasing);
+  if (r.hasBand) {  // near shadow edges (MeasureSource::edgeBand)
+    const auto& b = r.band;
+    j["edge_band"] = {{"radius", r.bandRadius},           {"pixels", b.facingPixels},
+                      {"misclassified", b.misclassified}, {"leaks", b.leaks},
+                      {"false_shadows", b.falseShadows},  {"misclassified_pct", b.misclassifiedPct}};
+    if (r.hasAliasing) j["edge_band"]["aliasing"] = aliasing(r.bandAliasing);
   }
   return j;
 }

@@ -75,6 +75,79 @@ HardShadowErrors compareHardImpl(const ImageF& technique, const ImageF& referenc
   return e;
 }
 
+}  // namespace
+
+std::vector<std::uint8_t> shadowEdgeBand(const ImageF& reference, const ImageF& position, const Light& light,
+                                         float radius, int window) {
+  checkImage(reference, "reference", "shadowEdgeBand");
+  checkImage(position, "position", "shadowEdgeBand");
+  const int w = reference.width, h = reference.height;
+  if (reference.channels != 1 || position.channels < 3 || position.width != w || position.height != h)
+    throw std::invalid_argument("shadowEdgeBand: reference " + sizeText(reference) + " and position " +
+                                sizeText(position) + " must be one size (1 and 3+ channels)");
+  auto facing = [&](int x, int y) { return reference.data[std::size_t(y) * w + x] >= 0.0f; };
+  auto lit = [&](int x, int y) { return reference.data[std::size_t(y) * w + x] >= 0.5f; };
+  // Boundary pixels, and their summed-area table for a quick "any boundary near" test.
+  std::vector<std::uint32_t> sat(std::size_t(w + 1) * std::size_t(h + 1), 0u);
+  std::vector<std::uint8_t> boundary(std::size_t(w) * h, 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      bool edge = false;
+      for (int dy = -1; dy <= 1 && facing(x, y); ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx >= 0 && ny >= 0 && nx < w && ny < h && facing(nx, ny) && lit(nx, ny) != lit(x, y)) edge = true;
+        }
+      boundary[std::size_t(y) * w + x] = edge;
+      sat[std::size_t(y + 1) * (w + 1) + x + 1] = edge + sat[std::size_t(y) * (w + 1) + x + 1] +
+                                                  sat[std::size_t(y + 1) * (w + 1) + x] -
+                                                  sat[std::size_t(y) * (w + 1) + x];
+    }
+  auto boundariesIn = [&](int x0, int y0, int x1, int y1) {  // inclusive, clamped
+    x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, w - 1), y1 = std::min(y1, h - 1);
+    return sat[std::size_t(y1 + 1) * (w + 1) + x1 + 1] - sat[std::size_t(y0) * (w + 1) + x1 + 1] -
+           sat[std::size_t(y1 + 1) * (w + 1) + x0] + sat[std::size_t(y0) * (w + 1) + x0];
+  };
+  auto world = [&](int x, int y) {
+    const float* p = &position.data[(std::size_t(y) * w + x) * std::size_t(position.channels)];
+    return glm::vec3(p[0], p[1], p[2]);
+  };
+  const bool directional = light.kind == LightKind::Directional;
+  std::vector<std::uint8_t> band(std::size_t(w) * h, 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!facing(x, y) || boundariesIn(x - window, y - window, x + window, y + window) == 0) continue;
+      const glm::vec3 p = world(x, y);
+      const glm::vec3 ray = directional ? glm::normalize(light.direction) : glm::normalize(p - light.position);
+      const float r = directional ? radius : radius * glm::length(p - light.position);
+      bool near = false;
+      for (int qy = std::max(y - window, 0); qy <= std::min(y + window, h - 1) && !near; ++qy)
+        for (int qx = std::max(x - window, 0); qx <= std::min(x + window, w - 1) && !near; ++qx) {
+          if (!boundary[std::size_t(qy) * w + qx]) continue;
+          glm::vec3 d = world(qx, qy) - p;
+          d -= glm::dot(d, ray) * ray;
+          near = glm::dot(d, d) <= r * r;
+        }
+      band[std::size_t(y) * w + x] = near;
+    }
+  return band;
+}
+
+ImageF keepWhere(const ImageF& image, const std::vector<std::uint8_t>& mask) {
+  checkImage(image, "image", "keepWhere");
+  if (mask.size() != std::size_t(image.width) * image.height)
+    throw std::invalid_argument("keepWhere: a mask of " + std::to_string(mask.size()) + " pixels for " +
+                                sizeText(image));
+  ImageF out = image;
+  for (std::size_t i = 0; i < mask.size(); ++i)
+    if (!mask[i])
+      for (int c = 0; c < image.channels; ++c)
+        out.data[i * std::size_t(image.channels) + std::size_t(c)] = std::nanf("");
+  return out;
+}
+
+namespace {
+
 std::uint8_t lerp8(std::uint8_t a, std::uint8_t b, float t) {
   return std::uint8_t(std::lround(a + (float(b) - float(a)) * std::clamp(t, 0.0f, 1.0f)));
 }

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "core/image.hpp"
+#include "core/light.hpp"
 
 namespace shadowlab::measure {
 
@@ -38,6 +39,22 @@ HardShadowErrors compareHard(const ImageF& technique, const ImageF& reference, c
                              float litThreshold = 0.5f);
 // A technique's 8-bit lit mask (channel `channel`, 255 lit) as a visibility image in [0,1].
 ImageF visibilityFromMask(const Image8& mask, int channel = 0);
+
+// ---- Near shadow edges (lesson 07's figures) ---------------------------------------------------
+// The facing pixels near a reference shadow edge: within `radius` of a boundary pixel (a facing
+// pixel with a facing 8-neighbour of the other reference class), the distance measured across the
+// light, i.e. in the plane perpendicular to the light's ray at the pixel, where a shadow map's
+// texels lie: the direction of a directional light (radius in world units), or the ray from a
+// spot or point light's position (radius a width at unit distance, times the pixel's distance to
+// the light). So "within 2 texels of an edge" is one set of pixels for every technique measured
+// on the same view: radius = 2 texels of one chosen map. Boundary pixels are searched within
+// `window` screen pixels. `position`: 4 channels, the world positions of the shaded points.
+// One byte per pixel, 1 inside. Throws std::invalid_argument for images of different sizes.
+std::vector<std::uint8_t> shadowEdgeBand(const ImageF& reference, const ImageF& position, const Light& light,
+                                         float radius, int window = 24);
+// `image` with every pixel outside `mask` (one byte per pixel, 0 outside) set to NaN in all its
+// channels: statistics that skip NaN then cover the mask only.
+ImageF keepWhere(const ImageF& image, const std::vector<std::uint8_t>& mask);
 
 // ---- Soft shadows ------------------------------------------------------------------------------
 // The umbra is where (almost) none of the light is seen: visibility below `umbraLevel`. A technique

@@ -110,6 +110,16 @@ std::vector<Column> columns(const std::vector<ReportRow>& rows) {
   alias("m_p95", [](const AliasingStats& s) { return s.p95; });
   alias("m_max", [](const AliasingStats& s) { return s.max; });
   alias("m_share_above_1", [](const AliasingStats& s) { return s.shareAbove1; });
+  // Near shadow edges: only when a lesson measured them, so other reports keep their columns.
+  if (std::any_of(rows.begin(), rows.end(), [](const ReportRow& r) { return r.hasBand; })) {
+    auto band = [&](const char* name, std::function<std::string(const ReportRow&)> f) {
+      c.push_back({name, true, [=](const ReportRow& r) { return r.hasBand ? f(r) : std::string(); }});
+    };
+    band("edge_pixels_band", [=](const ReportRow& r) { return count(r.band.facingPixels); });
+    band("edge_misclassified_pct", [=](const ReportRow& r) { return num(r.band.misclassifiedPct); });
+    band("edge_m_mean", [=](const ReportRow& r) { return r.hasAliasing ? num(r.bandAliasing.mean) : std::string(); });
+    band("edge_m_p95", [=](const ReportRow& r) { return r.hasAliasing ? num(r.bandAliasing.p95) : std::string(); });
+  }
   c.push_back({"image", false, [](const ReportRow& r) { return r.imageThumbnail; }});
   c.push_back({"error_image", false, [](const ReportRow& r) { return r.errorThumbnail; }});
   return c;

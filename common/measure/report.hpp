@@ -32,6 +32,9 @@ struct ReportRow {
   SoftShadowErrors soft;
   bool hasAliasing = false;
   AliasingStats aliasing;
+  bool hasBand = false;  // near shadow edges (the lesson's MeasureSource::edgeBand): errors, and m there
+  HardShadowErrors band;
+  AliasingStats bandAliasing;
   std::string imageThumbnail;  // paths relative to the report's folder (may be empty)
   std::string errorThumbnail;
 

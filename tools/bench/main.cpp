@@ -214,6 +214,20 @@ int main(int argc, char** argv) {
               row.aliasing.max = a.at("max");
               row.aliasing.shareAbove1 = a.at("share_above_1");
             }
+            if (j.contains("edge_band")) {
+              const auto& b = j["edge_band"];
+              row.hasBand = true;
+              row.band.facingPixels = b.at("pixels");
+              row.band.misclassified = b.at("misclassified");
+              row.band.leaks = b.at("leaks");
+              row.band.falseShadows = b.at("false_shadows");
+              row.band.misclassifiedPct = b.at("misclassified_pct");
+              if (b.contains("aliasing")) {
+                row.bandAliasing.pixels = b["aliasing"].at("pixels");
+                row.bandAliasing.mean = b["aliasing"].at("mean");
+                row.bandAliasing.p95 = b["aliasing"].at("p95");
+              }
+            }
             for (const auto& [name, value] : j.at("counters").items()) {
               if (name == "shadow triangles") row.shadowTriangles = leadingNumber(value.get<std::string>());
               if (name == "shadow texels") row.shadowTexels = leadingNumber(value.get<std::string>());
