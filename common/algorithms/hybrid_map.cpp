@@ -237,11 +237,18 @@ Descent descend(const HybridMap& map, int sx, int sy) {
   return d;
 }
 
-float hybridLookup(const HybridMap& map, const glm::vec3& uvz, float bias) {
+float levelBias(float constant, float slope, float maxBias, float cosTheta, int level) {
+  const float scale = std::ldexp(1.0f, level);
+  if (cosTheta <= 0.0f) return maxBias * scale;
+  const float c = std::min(cosTheta, 1.0f);
+  return std::min(constant + slope * std::sqrt(1.0f - c * c) / c * scale, maxBias * scale);
+}
+
+float hybridLookup(const HybridMap& map, const glm::vec3& uvz, const Bias& bias, float cosTheta) {
   if (uvz.x < 0.0f || uvz.x > 1.0f || uvz.y < 0.0f || uvz.y > 1.0f || uvz.z > 1.0f) return 1.0f;
   const float n = float(map.sourceSize);
   const Descent d = descend(map, int(std::floor(uvz.x * n)), int(std::floor(uvz.y * n)));
-  return uvz.z - bias * std::ldexp(1.0f, d.level) <= d.depth ? 1.0f : 0.0f;
+  return uvz.z - levelBias(bias.constant, bias.slope, bias.maxBias, cosTheta, d.level) <= d.depth ? 1.0f : 0.0f;
 }
 
 // ---- what it costs --------------------------------------------------------------------------------

@@ -135,10 +135,19 @@ struct Descent {
 // Source texel (sx, sy), clamped into the map. Throws std::runtime_error for a pointer to a record
 // that does not exist (a corrupt map).
 Descent descend(const HybridMap& map, int sx, int sy);
+// The depth bias for a texel stored at `level`: the slope-scaled part and its clamp grow with the
+// texel's width, 2^level source texels (a tilted receiver is that much farther from the stored
+// mean); the constant part, the depth format's precision, does not:
+//   min(constant + slope tan(theta) 2^level, maxBias 2^level), maxBias 2^level when cosTheta <= 0.
+// Level 0 is shadow::slopeScaledBias.
+float levelBias(float constant, float slope, float maxBias, float cosTheta, int level);
 // The paper's shadow test (its Algorithm 2) at uvz = (u, v, window depth), GL_NEAREST: lit (1) when
-// depth - bias * 2^level <= the stored depth (the bias grows with the texel actually read); outside
+// depth - levelBias(...) <= the stored depth, with the level of the texel actually read; outside
 // [0,1]^2 or beyond the far plane (depth > 1) the light knows nothing: lit.
-float hybridLookup(const HybridMap& map, const glm::vec3& uvz, float bias);
+struct Bias {
+  float constant = 0.0f, slope = 0.0f, maxBias = 0.0f;
+};
+float hybridLookup(const HybridMap& map, const glm::vec3& uvz, const Bias& bias, float cosTheta);
 
 // ---- what it costs --------------------------------------------------------------------------------
 

@@ -3,6 +3,7 @@
 // independent top-down build of the same quadtree.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <functional>
 #include <random>
 #include <stdexcept>
@@ -191,18 +192,34 @@ TEST_CASE("hybrid: the sweep and the index of a 4x4 map, by hand") {
   CHECK(storedBytes(map, 4) == 4u + 64u);  // one row of 4 records allocated whole
 }
 
+TEST_CASE("hybrid: the bias grows with the level read, all but its constant part") {
+  // 60 degrees: tan = sqrt(3). Level 0 is the standard map's slope-scaled bias.
+  const float c = 0.5f, tan60 = std::sqrt(3.0f);
+  CHECK(levelBias(0.001f, 0.002f, 1.0f, c, 0) == doctest::Approx(shadow::slopeScaledBias(0.001f, 0.002f, c, 1.0f)));
+  CHECK(levelBias(0.001f, 0.002f, 1.0f, c, 0) == doctest::Approx(0.001f + 0.002f * tan60));
+  CHECK(levelBias(0.001f, 0.002f, 1.0f, c, 2) == doctest::Approx(0.001f + 4.0f * 0.002f * tan60));
+  CHECK(levelBias(0.001f, 0.002f, 0.003f, c, 0) == doctest::Approx(0.003f));     // clamped
+  CHECK(levelBias(0.001f, 0.002f, 0.003f, c, 1) == doctest::Approx(0.006f));     // the clamp doubles too
+  CHECK(levelBias(0.001f, 0.002f, 0.003f, 0.0f, 3) == doctest::Approx(0.024f));  // grazing: the clamp
+  CHECK(levelBias(0.001f, 0.0f, 0.003f, 1.0f, 3) == doctest::Approx(0.001f));    // the constant stays
+}
+
 TEST_CASE("hybrid: the lookup compares against the texel it reaches, its bias grown with the level") {
   const HybridMap map = buildHybrid(stepMap(), windowRule(0.01f), 2);
   // (0.9, 0.9) is texel (3, 3): 0.1 at level 0. (0.1, 0.1) is texel (0, 0): 0.5 at level 1.
-  CHECK(hybridLookup(map, {0.9f, 0.9f, 0.1f}, 0.0f) == 1.0f);
-  CHECK(hybridLookup(map, {0.9f, 0.9f, 0.2f}, 0.0f) == 0.0f);
-  CHECK(hybridLookup(map, {0.1f, 0.1f, 0.52f}, 0.0f) == 0.0f);
-  CHECK(hybridLookup(map, {0.1f, 0.1f, 0.52f}, 0.01f) == 1.0f);  // 0.52 - 0.01 * 2 <= 0.5
-  CHECK(hybridLookup(map, {0.9f, 0.9f, 0.12f}, 0.01f) == 0.0f);  // level 0: 0.12 - 0.01 > 0.1
+  const Bias none;
+  CHECK(hybridLookup(map, {0.9f, 0.9f, 0.1f}, none, 1.0f) == 1.0f);
+  CHECK(hybridLookup(map, {0.9f, 0.9f, 0.2f}, none, 1.0f) == 0.0f);
+  CHECK(hybridLookup(map, {0.1f, 0.1f, 0.52f}, none, 1.0f) == 0.0f);
+  // Slope 0.01 at 45 degrees (tan 1): 0.01 at level 0, 0.02 at level 1.
+  const Bias slope{0.0f, 0.01f, 1.0f};
+  const float cos45 = std::sqrt(0.5f);
+  CHECK(hybridLookup(map, {0.1f, 0.1f, 0.515f}, slope, cos45) == 1.0f);  // 0.515 - 0.02 <= 0.5
+  CHECK(hybridLookup(map, {0.9f, 0.9f, 0.115f}, slope, cos45) == 0.0f);  // 0.115 - 0.01 > 0.1
   // Outside the map or beyond the far plane: lit.
-  CHECK(hybridLookup(map, {-0.1f, 0.5f, 0.99f}, 0.0f) == 1.0f);
-  CHECK(hybridLookup(map, {0.5f, 1.2f, 0.99f}, 0.0f) == 1.0f);
-  CHECK(hybridLookup(map, {0.9f, 0.9f, 1.01f}, 0.0f) == 1.0f);
+  CHECK(hybridLookup(map, {-0.1f, 0.5f, 0.99f}, none, 1.0f) == 1.0f);
+  CHECK(hybridLookup(map, {0.5f, 1.2f, 0.99f}, none, 1.0f) == 1.0f);
+  CHECK(hybridLookup(map, {0.9f, 0.9f, 1.01f}, none, 1.0f) == 1.0f);
 }
 
 TEST_CASE("hybrid: levels 0 is the standard map itself, word for word") {

@@ -1,0 +1,28 @@
+#version 410 core
+// The hybrid map over the light's view (common/technique/hybrid_maps: drawLevels): each source
+// texel coloured by the level it is stored at, darker for nearer depth, with the stored texels'
+// borders once they are large enough on screen to see. Silhouettes stay red (full resolution);
+// floors, roofs and the empty background turn green or blue.
+#include "common/measure.glsl"
+#include "common/hybrid_descent.glsl"
+#include "common/hybrid/colours.glsl"
+
+in vec2 vUv;
+
+uniform usampler2D uRoot, uRecords;
+uniform int uLevels, uSize;
+
+out vec4 fragColor;
+
+void main() {
+  vec2 texel = vUv * float(uSize);
+  vec2 perPixel = fwidth(texel);  // source texels per screen pixel (before any branch)
+  ivec2 s = clamp(ivec2(floor(texel)), ivec2(0), ivec2(uSize - 1));
+  HybridTexel t = hybridDescend(uRoot, uRecords, uLevels, s);
+  float scale = float(1 << t.level);
+  vec2 within = fract(texel / scale);
+  bool border = max(perPixel.x, perPixel.y) < 0.25 * scale && any(lessThan(within, perPixel / scale));
+  float shade = 0.35 + 0.65 * sqrt(clamp(t.depth, 0.0, 1.0));
+  fragColor = vec4(HYBRID_LEVEL_COLOURS[t.level] * shade * (border ? 0.55 : 1.0), 1.0);
+  writeNoMeasurement();
+}
