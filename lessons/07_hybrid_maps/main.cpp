@@ -1,0 +1,202 @@
+// Lesson 07: hybrid-resolution shadow maps (Li, Yang, Zhao, Chen, "Hybrid-resolution shadow
+// mapping design and hard shadows anti-aliasing in special effects movies", Chinese Optics 9(1),
+// 2016). A standard map spends the same texels on a flat street as on a tower's silhouette. The
+// paper renders the full map, then sweeps it bottom-up: every 2x2 block whose depths agree
+// becomes one texel of their mean, for one to three levels, and an index records where the
+// kept texels are; the lookup follows the index down to the finest texel stored. The technique
+// (common/technique/hybrid_maps, its GPU passes in hybrid_build, its GLSL in
+// shaders/common/shadow_hybrid.frag) is this lesson's subject; its GL-free reference is
+// common/algorithms/hybrid_map. Against it: lesson 03's uniform map (technique=standard).
+//   criterion  what the merge test reads: window depth (the paper's |m - Dn| / Dn <= eps0),
+//              linear depth, or the depth's derivative (a slope bound)
+//   levels     0 (a standard map) to 3 sweeps; eps0 and max_slope the thresholds
+//   views      the map coloured by level over the light's view, the merge mask on the scene, the
+//              steps each lookup took, and the memory against the full map in the header
+//
+// Controls: left drag orbit, right drag pan, wheel zoom; L levels, C criterion, T technique,
+// P filter, G GPU or CPU build, V the view, 1 2 the lights, M ground truth, O god view; F1 help.
+// Exercises (exercises.hpp): the merge criterion, one level of the sweep, the index descent,
+// linear depth.
+#include <cstdio>
+
+#include "app/lesson.hpp"
+#include "exercises.hpp"
+#include "technique/hybrid_maps.hpp"
+#include "technique/lit_pass.hpp"
+#include "technique/scene_cache.hpp"
+#include "technique/uniform_maps.hpp"
+
+using namespace shadowlab;
+
+namespace {
+
+enum class Technique { Hybrid, Standard };
+enum class View { Lit, Visibility, Levels, Mask, Steps };
+constexpr int kLights = 2;
+
+struct Params {
+  tech::SceneChoice scene{1, 60000};        // city: flat streets and roofs merge, tower silhouettes must not
+  Technique technique = Technique::Hybrid;  // the hybrid map, or lesson 03's uniform map (uniform.*)
+  View view = View::Lit;
+  Impl impl = Impl::Reference;  // student: your sweep (07.1, 07.2) builds the sun's map on the CPU
+  float ambient = 0.1f;
+  float bandTexels = 2.0f;  // measured "near an edge": within this many source texels of a shadow boundary
+  int bandMapSize = 0;      // ... texels of a map this size (0: the hybrid map's), so that maps of any size
+                            // are judged on the same pixels
+  Light lights[kLights];    // the sun, and a spot (off) whose perspective depth crowds toward 1
+};
+
+// What the launcher and the F1 overlay say about this lesson.
+const char* const kSummary =
+    "Hybrid-resolution shadow maps: a full map merged bottom-up where its depth is smooth, an index to "
+    "the kept texels; the paper's claims measured.";
+const char* const kHelp = R"(The map merges 2x2 blocks whose depths agree: L levels (0 = standard map),
+eps0 / max_slope thresholds, C criterion (window depth as the paper, linear, slope).
+V: lit, visibility, levels (the map by level), mask (the scene by level), steps.
+The header: stored texels and bytes (root + index) against the full map.
+T: lesson 03's uniform map (uniform.*). G: build on the CPU (the reference).
+M: error and aliasing heatmaps; the figures near edges are in --measure's JSON.)";
+
+}  // namespace
+
+// The lesson holds the hybrid maps (its subject: bare parameter names) and lesson 03's uniform
+// maps (prefix uniform.) to compare with, and tells the hybrid map's passes one by one.
+class HybridMapsLesson : public Lesson {
+ public:
+  void declare(ParamRegistry& r) override {
+    camera.aim({0, 2, 0}, 45.0f, 0.5f);  // the city from above: long shadows across the streets
+    tech::SceneCache::declare(r, &p_.scene, "procedural scene", "scene size: what the depth pass draws");
+    r.addChoice("technique", &p_.technique, {"hybrid", "standard"},
+                "the hybrid map (this lesson) or lesson 03's uniform map at its own size (uniform.*)")
+        .hotkey = "T";
+    r.addChoice("view", &p_.view, {"lit", "visibility", "levels", "mask", "steps"},
+                "lit; V of the measured light; the map by level; the scene by level; steps per lookup")
+        .hotkey = "V";
+    declareImpl(r, &p_.impl, "whose merge sweep (07.1, 07.2) builds the maps (yours runs on the CPU)");
+    r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
+    r.add("edge_band.texels", &p_.bandTexels, 0.5f, 16, "measured near an edge: within this many texels of a boundary");
+    r.add("edge_band.map_size", &p_.bandMapSize, 0, 8192,
+          "the map whose texels edge_band.texels counts (0: map_size): every map is judged on the same pixels");
+    hybrid_.declare(r, "");  // this lesson's subject: its parameters keep their bare names
+    for (const auto& [name, key] : {std::pair{"levels", "L"}, {"criterion", "C"}, {"filter", "P"}, {"build", "G"}})
+      r.setHotkey(name, key);
+    standard_.declare(r, "uniform.");
+    declareLights(r);
+  }
+
+  LessonInfo info() const override {
+    return {"07", "07_hybrid_maps", "Hybrid-resolution shadow maps", kSummary, 4, kHelp, true};
+  }
+
+  void init() override {
+    hybrid_.init();
+    standard_.init();
+  }
+
+  MeasureSource measureSource() override {
+    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}, edgeBand()};
+  }
+
+  void update(const FrameInfo&) override {
+    scene_.update(p_.scene);
+    // impl=student: your level sweep (window depth, eps0) replaces the reference's, on the CPU.
+    if (p_.impl == Impl::Student)
+      hybrid_.sweep = [](const hybrid::MergeGrid& children, const hybrid::MergeRule& rule, int) {
+        return ex07::sweepLevel(children, rule.eps0);
+      };
+    else hybrid_.sweep = nullptr;
+  }
+
+  void render(const FrameInfo& f) override {
+    const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
+    if (f.measureLight >= 0 && f.measureLight < kLights) measured_ = f.measureLight;
+    if (p_.technique == Technique::Standard) {
+      standard_.renderShadows(c);  // lesson 03's passes, at uniform.map_size
+    } else {
+      // ==== 1. the light camera: fitted to the view as lesson 03 fits its sun ====================
+      hybrid_.fitLights(c);
+      // ==== 2. the full-resolution depth map: what a standard map of map_size renders ============
+      hybrid_.renderDepth(c);
+      // ==== 3. the merge sweep: 2x2 blocks whose depths agree become one texel, level by level ==
+      // ==== 4. the index: the root grid and a record of four words for every kept texel =========
+      hybrid_.buildMaps(c);
+      hybrid_.finish(c);
+    }
+    tech::ShadowTechnique& technique = p_.technique == Technique::Standard
+                                           ? static_cast<tech::ShadowTechnique&>(standard_)
+                                           : static_cast<tech::ShadowTechnique&>(hybrid_);
+    if (!f.godView) counters = technique.stats().counters();
+
+    // ==== 5. the scene from the eye: each lookup descends the index to the finest stored texel ====
+    auto t = scope("scene");
+    glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const tech::LitSettings lit{glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0};
+    const bool hybrid = p_.technique == Technique::Hybrid;
+    const int shown = hybrid_.viewLight(measured_);  // the views: the measured light, or the first mapped
+    if (hybrid && (p_.view == View::Mask || p_.view == View::Steps))
+      hybrid_.drawSceneView(c, p_.view == View::Mask ? tech::HybridSceneView::Levels : tech::HybridSceneView::Steps,
+                            lit, shown);
+    else lit_.draw(c, technique, lit);
+
+    // ==== 6. the map itself, coloured by level over the light's view (view=levels) ==============
+    if (hybrid && p_.view == View::Levels) {
+      const int side = std::min(f.width, f.height);
+      hybrid_.drawLevels(shown, (f.width - side) / 2, 0, side, side);
+    }
+  }
+
+ private:
+  // "Near an edge" for the measurement: edge_band.texels texels of the band's map, across the measured
+  // light, from whichever technique's light camera: a width in world units (the sun's orthographic
+  // map) or at unit distance (a spot's perspective one).
+  float edgeBand() const {
+    const shadow::LightCamera* cam = nullptr;
+    bool perspective = p_.lights[measured_].kind != LightKind::Directional;
+    if (p_.technique == Technique::Hybrid && hybrid_.camera(measured_)) cam = &hybrid_.camera(measured_)->camera;
+    if (p_.technique == Technique::Standard) cam = standard_.camera(measured_);
+    if (!cam) return 0.0f;
+    const float width = perspective ? 2.0f / cam->projection[1][1] : 2.0f / cam->projection[0][0];
+    const int texels = p_.bandMapSize > 0 ? p_.bandMapSize : hybrid_.params().mapSize;
+    return p_.bandTexels * width / float(texels);
+  }
+
+  // light0: the sun over the city; light1: a spot (off), for the depth spaces of a perspective map.
+  void declareLights(ParamRegistry& r) {
+    Light* l = p_.lights;
+    l[0] = {LightKind::Directional};
+    l[0].direction = glm::normalize(glm::vec3(-0.45f, -1.0f, -0.3f));
+    l[0].color = {1.0f, 0.95f, 0.85f};
+    l[0].intensity = 0.9f;
+    l[1] = {LightKind::Spot, {-14.0f, 18.0f, 12.0f}};
+    l[1].direction = glm::normalize(glm::vec3(14.0f, -18.0f, -12.0f));
+    l[1].color = {0.6f, 0.75f, 1.0f};
+    l[1].intensity = 2.5f;
+    l[1].attenuation = {1.0f, 0.0f, 0.0015f};
+    l[1].spotInner = 0.4f;
+    l[1].spotOuter = 0.55f;
+    l[1].enabled = false;
+    for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
+  }
+
+  // The spot's near plane further out than lesson 03's: window depth keeps precision where the city is.
+  static tech::HybridMapParams hybridDefaults() {
+    tech::HybridMapParams d;
+    d.spotNear = 5.0f;
+    return d;
+  }
+  static tech::UniformMapParams standardDefaults() {
+    tech::UniformMapParams d;
+    d.spotNear = 5.0f;
+    return d;
+  }
+
+  Params p_;
+  int measured_ = 0;  // the light the measurement judges (the last frame that measured)
+  tech::SceneCache scene_{"07 scene"};
+  tech::HybridShadowMaps hybrid_{hybridDefaults()};
+  tech::UniformShadowMaps standard_{standardDefaults()};
+  tech::LitPass lit_{"07 scene"};
+};
+
+int main(int argc, char** argv) { return runLesson<HybridMapsLesson>(argc, argv); }
