@@ -9,12 +9,6 @@
 namespace shadowlab::tech {
 namespace {
 
-constexpr int kMaxLights = 4;  // MAX_LIGHTS in shaders/common/light.glsl
-const glm::vec4 kLightColours[] = {
-    {1.0f, 0.9f, 0.3f, 1.0f}, {1.0f, 0.6f, 0.3f, 1.0f}, {0.5f, 0.7f, 1.0f, 1.0f}, {0.5f, 1.0f, 0.5f, 1.0f}};
-
-std::uint64_t depthBytes(gl::DepthFormat f) { return f == gl::DepthFormat::Depth16 ? 2 : 4; }
-
 std::string kib(std::uint64_t bytes) { return std::to_string((bytes + 512) / 1024) + " KiB"; }
 
 std::string percent(double part, double whole) {
@@ -187,7 +181,7 @@ void HybridShadowMaps::finish(const ShadowContext& c) {
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     const PerLight& l = *lights_[i];
     if (!c.frame.godView && (l.on || l.point)) pushStats(int(i), l);
-    if (l.on) c.debug.frustum(l.camera.camera.viewProj(), kLightColours[i % 4]);
+    if (l.on) c.debug.frustum(l.camera.camera.viewProj(), lightColour(i));
   }
   if (p_.fit == Fit::View) c.debug.box(c.scene.bounds(), {0.4f, 0.4f, 0.4f, 1.0f});
 }
@@ -230,12 +224,12 @@ void HybridShadowMaps::bindLight(const gl::Program& p, int i, int unitRoot, int 
 void HybridShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) const {
   setBiasUniforms(lit, p_);
   lit.set("uPcfSize", p_.pcfSize | 1);  // an even N has no centre tap: the next odd one
-  for (int i = 0; i < kMaxLights; ++i) bindLight(lit, i, firstUnit + i, firstUnit + kMaxLights + i);
+  for (int i = 0; i < kMaxShadowLights; ++i) bindLight(lit, i, firstUnit + i, firstUnit + kMaxShadowLights + i);
   glActiveTexture(GL_TEXTURE0);
 }
 
 void HybridShadowMaps::unbindVisibility(int firstUnit) const {
-  for (int u = firstUnit; u < firstUnit + 2 * kMaxLights; ++u) {
+  for (int u = firstUnit; u < firstUnit + 2 * kMaxShadowLights; ++u) {
     glActiveTexture(GLenum(GL_TEXTURE0 + u));
     glBindTexture(GL_TEXTURE_2D, 0);
   }
@@ -255,6 +249,10 @@ void HybridShadowMaps::drawLevels(int light, int x, int y, int width, int height
   levelsView_.set("uRecords", 1);
   levelsView_.set("uLevels", m->levels);
   levelsView_.set("uSize", m->sourceSize);
+  const hybrid::DepthSpace space = mergeRule(light).space;
+  levelsView_.set("uPerspective", space.perspective);
+  levelsView_.set("uNear", space.nearZ);
+  levelsView_.set("uFar", space.farZ);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, m->root.id());
   glBindSampler(0, 0);

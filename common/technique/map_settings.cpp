@@ -2,6 +2,14 @@
 
 namespace shadowlab::tech {
 
+glm::vec4 lightColour(std::size_t i) {
+  static const glm::vec4 colours[] = {
+      {1.0f, 0.9f, 0.3f, 1.0f}, {1.0f, 0.6f, 0.3f, 1.0f}, {0.5f, 0.7f, 1.0f, 1.0f}, {0.5f, 1.0f, 0.5f, 1.0f}};
+  return colours[i % 4];
+}
+
+std::uint64_t depthBytes(gl::DepthFormat f) { return f == gl::DepthFormat::Depth16 ? 2 : 4; }
+
 void declareBias(ParamRegistry& r, const std::string& n, MapSettings& s) {
   r.add(n + "bias.constant", &s.constantBias, 0, 0.1f, "constant depth bias in the shader");
   r.add(n + "bias.slope", &s.slopeBias, 0, 0.02f, "slope-scaled bias in the shader: times tan(theta)");

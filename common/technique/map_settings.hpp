@@ -4,11 +4,13 @@
 // (shaders/common/shadow_bias.glsl), the directional light's fit and caster culling, and the spot's
 // depth range. Registered with the same names and reasons under each holder's prefix, so a preset
 // reads `bias.constant = 0` whichever technique it sets.
+#include <cstdint>
 #include <string>
 
 #include "algorithms/light_cameras.hpp"
 #include "core/params.hpp"
 #include "gl/program.hpp"
+#include "gl/shadow_map.hpp"
 
 namespace shadowlab::tech {
 
@@ -27,6 +29,12 @@ struct MapSettings {
   bool cullCasters = true;                  // skip casters that cannot shade the view
   float spotNear = 0.5f, spotFar = 150.0f;  // the spot frustum's depth range
 };
+
+inline constexpr int kMaxShadowLights = 4;  // MAX_LIGHTS in shaders/common/light.glsl
+// Light i's colour in the god view (its frustum, its cross).
+glm::vec4 lightColour(std::size_t i);
+// Bytes a texel of a depth map takes: 2 for 16 bits, 4 for 24 (padded) and 32F.
+std::uint64_t depthBytes(gl::DepthFormat format);
 
 // bias.constant, bias.slope, bias.max, offset.factor, offset.units, bias.normal_offset.
 void declareBias(ParamRegistry& r, const std::string& prefix, MapSettings& s);

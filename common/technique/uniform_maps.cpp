@@ -5,15 +5,6 @@
 #include "technique/scene_cache.hpp"
 
 namespace shadowlab::tech {
-namespace {
-
-constexpr int kMaxLights = 4;  // MAX_LIGHTS in shaders/common/light.glsl
-const glm::vec4 kLightColours[] = {
-    {1.0f, 0.9f, 0.3f, 1.0f}, {1.0f, 0.6f, 0.3f, 1.0f}, {0.5f, 0.7f, 1.0f, 1.0f}, {0.5f, 1.0f, 0.5f, 1.0f}};
-
-std::uint64_t depthBytes(gl::DepthFormat f) { return f == gl::DepthFormat::Depth16 ? 2 : 4; }
-
-}  // namespace
 
 const std::vector<std::string>& UniformShadowMaps::mapSizes() {
   static const std::vector<std::string> sizes{"256", "512", "1024", "2048", "4096", "8192"};
@@ -170,7 +161,7 @@ void UniformShadowMaps::renderShadows(const ShadowContext& c) {
 void UniformShadowMaps::pushShapes(const ShadowContext& c) const {
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     const PerLight& l = lights_[i];
-    const glm::vec4 colour = kLightColours[i % 4];
+    const glm::vec4 colour = lightColour(i);
     if (l.type == Type::Ortho || l.type == Type::Perspective) c.debug.frustum(l.camera.viewProj(), colour);
     if (l.type == Type::Cube) c.debug.cross(c.lights[i].position, 0.5f, colour);
   }
@@ -180,7 +171,7 @@ void UniformShadowMaps::pushShapes(const ShadowContext& c) const {
 // The lit program specialised for this frame: each light's kind of map, the filter, its size.
 std::vector<std::string> UniformShadowMaps::shaderDefines() const {
   std::string types;
-  for (int i = 0; i < kMaxLights; ++i)
+  for (int i = 0; i < kMaxShadowLights; ++i)
     types +=
         std::string(i ? ", " : "") + std::to_string(i < int(lights_.size()) ? int(lights_[std::size_t(i)].type) : 0);
   return {"SHADOW_TYPES " + types, "SHADOW_FILTER " + std::to_string(int(p_.filter)),
@@ -198,7 +189,7 @@ void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) co
   lit.set("uReceiverPlane", p_.receiverPlane);
   const bool nearest = p_.filter == Filter::Nearest || p_.filter == Filter::BoxNxN;
   const GLuint sampler = nearest ? compareNearest_.id() : compareLinear_.id();
-  for (int i = 0; i < kMaxLights; ++i) {
+  for (int i = 0; i < kMaxShadowLights; ++i) {
     const PerLight* l = i < int(lights_.size()) ? &lights_[std::size_t(i)] : nullptr;
     const Type type = l ? l->type : Type::None;
     const std::string n = "[" + std::to_string(i) + "]";
@@ -208,7 +199,7 @@ void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) co
       lit.set(("uShadowTexel" + n).c_str(), l->texel);
       lit.set(("uShadowSize" + n).c_str(), float(l->map.size));
     }
-    const int unit2D = firstUnit + i, unitCube = firstUnit + kMaxLights + i;
+    const int unit2D = firstUnit + i, unitCube = firstUnit + kMaxShadowLights + i;
     lit.set(("uShadowMap" + std::to_string(i)).c_str(), unit2D);
     lit.set(("uShadowCube" + std::to_string(i)).c_str(), unitCube);
     const bool cube = type == Type::Cube, flat = type == Type::Ortho || type == Type::Perspective;
@@ -223,7 +214,7 @@ void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) co
 }
 
 void UniformShadowMaps::unbindVisibility(int firstUnit) const {
-  for (int u = firstUnit; u < firstUnit + 2 * kMaxLights; ++u) glBindSampler(GLuint(u), 0);
+  for (int u = firstUnit; u < firstUnit + 2 * kMaxShadowLights; ++u) glBindSampler(GLuint(u), 0);
 }
 
 }  // namespace shadowlab::tech

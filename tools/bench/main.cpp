@@ -121,6 +121,18 @@ std::uint64_t leadingNumber(const std::string& s) {
   return digits.empty() ? 0 : std::stoull(digits);
 }
 
+// The aliasing figures of a --measure JSON ("aliasing", or an edge band's).
+measure::AliasingStats aliasingFrom(const nlohmann::json& a) {
+  measure::AliasingStats s;
+  s.pixels = a.at("pixels");
+  s.mean = a.at("mean");
+  s.rms = a.at("rms");
+  s.p95 = a.at("p95");
+  s.max = a.at("max");
+  s.shareAbove1 = a.at("share_above_1");
+  return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -205,14 +217,8 @@ int main(int argc, char** argv) {
               row.soft.noiseFloor = j["soft"].value("reference_noise_rmse", -1.0);
             }
             if (j.contains("aliasing")) {
-              const auto& a = j["aliasing"];
               row.hasAliasing = true;
-              row.aliasing.pixels = a.at("pixels");
-              row.aliasing.mean = a.at("mean");
-              row.aliasing.rms = a.at("rms");
-              row.aliasing.p95 = a.at("p95");
-              row.aliasing.max = a.at("max");
-              row.aliasing.shareAbove1 = a.at("share_above_1");
+              row.aliasing = aliasingFrom(j["aliasing"]);
             }
             if (j.contains("edge_band")) {
               const auto& b = j["edge_band"];
@@ -222,11 +228,7 @@ int main(int argc, char** argv) {
               row.band.leaks = b.at("leaks");
               row.band.falseShadows = b.at("false_shadows");
               row.band.misclassifiedPct = b.at("misclassified_pct");
-              if (b.contains("aliasing")) {
-                row.bandAliasing.pixels = b["aliasing"].at("pixels");
-                row.bandAliasing.mean = b["aliasing"].at("mean");
-                row.bandAliasing.p95 = b["aliasing"].at("p95");
-              }
+              if (b.contains("aliasing")) row.bandAliasing = aliasingFrom(b["aliasing"]);
             }
             for (const auto& [name, value] : j.at("counters").items()) {
               if (name == "shadow triangles") row.shadowTriangles = leadingNumber(value.get<std::string>());
