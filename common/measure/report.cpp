@@ -297,6 +297,12 @@ std::string toJson(const std::vector<ReportRow>& rows, const std::string& title)
       j["aliasing"] = {{"pixels", r.aliasing.pixels},   {"mean", finite(r.aliasing.mean)},
                        {"rms", finite(r.aliasing.rms)}, {"p95", finite(r.aliasing.p95)},
                        {"max", finite(r.aliasing.max)}, {"shareAbove1", finite(r.aliasing.shareAbove1)}};
+    if (r.hasBand)
+      j["edgeBand"] = {{"pixels", r.band.facingPixels},
+                       {"misclassified", r.band.misclassified},
+                       {"misclassifiedPct", finite(r.band.misclassifiedPct)},
+                       {"mMean", finite(r.bandAliasing.mean)},
+                       {"mP95", finite(r.bandAliasing.p95)}};
     j["imageThumbnail"] = r.imageThumbnail;
     j["errorThumbnail"] = r.errorThumbnail;
     list.push_back(std::move(j));

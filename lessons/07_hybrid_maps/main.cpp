@@ -41,8 +41,8 @@ struct Params {
   Impl impl = Impl::Reference;  // student: your sweep (07.1, 07.2) builds the sun's map on the CPU
   float ambient = 0.1f;
   float bandTexels = 2.0f;  // measured "near an edge": within this many source texels of a shadow boundary
-  int bandMapSize = 0;      // ... texels of a map this size (0: the hybrid map's), so that maps of any size
-                            // are judged on the same pixels
+  int bandMapSize = 0;      // ... texels of a map this size (0: the technique's own), so that maps of any
+                            // size can be judged on the same pixels
   Light lights[kLights];    // the sun, and a spot (off) whose perspective depth crowds toward 1
 };
 
@@ -76,7 +76,8 @@ class HybridMapsLesson : public Lesson {
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     r.add("edge_band.texels", &p_.bandTexels, 0.5f, 16, "measured near an edge: within this many texels of a boundary");
     r.add("edge_band.map_size", &p_.bandMapSize, 0, 8192,
-          "the map whose texels edge_band.texels counts (0: map_size): every map is judged on the same pixels");
+          "the map whose texels edge_band.texels counts (0: the technique's own): judge maps of any size on the same "
+          "pixels");
     hybrid_.declare(r, "");  // this lesson's subject: its parameters keep their bare names
     for (const auto& [name, key] : {std::pair{"levels", "L"}, {"criterion", "C"}, {"filter", "P"}, {"build", "G"}})
       r.setHotkey(name, key);
@@ -150,14 +151,17 @@ class HybridMapsLesson : public Lesson {
   // "Near an edge" for the measurement: edge_band.texels texels of the band's map, across the measured
   // light, from whichever technique's light camera: a width in world units (the sun's orthographic
   // map) or at unit distance (a spot's perspective one).
-  float edgeBand() const {
+  float edgeBand() {
     const shadow::LightCamera* cam = nullptr;
     bool perspective = p_.lights[measured_].kind != LightKind::Directional;
     if (p_.technique == Technique::Hybrid && hybrid_.camera(measured_)) cam = &hybrid_.camera(measured_)->camera;
     if (p_.technique == Technique::Standard) cam = standard_.camera(measured_);
     if (!cam) return 0.0f;
     const float width = perspective ? 2.0f / cam->projection[1][1] : 2.0f / cam->projection[0][0];
-    const int texels = p_.bandMapSize > 0 ? p_.bandMapSize : hybrid_.params().mapSize;
+    const int own = p_.technique == Technique::Standard
+                        ? std::stoi(tech::UniformShadowMaps::mapSizes()[std::size_t(standard_.params().mapSize)])
+                        : hybrid_.params().mapSize;
+    const int texels = p_.bandMapSize > 0 ? p_.bandMapSize : own;
     return p_.bandTexels * width / float(texels);
   }
 
