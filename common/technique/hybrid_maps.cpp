@@ -269,7 +269,7 @@ void HybridShadowMaps::drawLevels(int light, int x, int y, int width, int height
 }
 
 void HybridShadowMaps::drawSceneView(const ShadowContext& c, HybridSceneView view, const LitSettings& lit, int light) {
-  gl::Program& p = sceneView_.program(*this);
+  gl::Program& p = sceneView_.program(c, *this, lit);
   p.use();
   p.set("uSceneView", int(view));
   p.set("uViewLight", light);

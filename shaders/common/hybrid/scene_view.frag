@@ -33,7 +33,9 @@ void main() {
   float v = hybridVisibility(max(uViewLight, 0), vWorldPos, N, texelCoords, level, steps);
   if (uViewLight < 0) level = -1;
   vec4 texel = uUseTexture ? texture(uTexture, vUv) : vec4(1.0);
+#ifndef DEPTH_PREPASS  // (after LitPass's depth pre-pass a hole's fragment fails the EQUAL test)
   if (uAlphaCutoff > 0.0 && texel.a < uAlphaCutoff) discard;
+#endif
   writeMeasurement(vWorldPos, N, v, texelCoords);
   vec3 colour = level < 0 ? vec3(0.55) : uSceneView == 0 ? HYBRID_LEVEL_COLOURS[level] : HYBRID_STEP_COLOURS[steps];
   fragColor = vec4(colour * (0.4 + 0.6 * v), 1.0);
