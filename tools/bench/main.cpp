@@ -121,6 +121,17 @@ std::uint64_t leadingNumber(const std::string& s) {
   return digits.empty() ? 0 : std::stoull(digits);
 }
 
+// The counts a --measure JSON's "hard" and "edge_band" share (their pixels under `pixelsKey`).
+measure::HardShadowErrors countsFrom(const nlohmann::json& h, const char* pixelsKey) {
+  measure::HardShadowErrors e;
+  e.facingPixels = h.at(pixelsKey);
+  e.misclassified = h.at("misclassified");
+  e.leaks = h.at("leaks");
+  e.falseShadows = h.at("false_shadows");
+  e.misclassifiedPct = h.at("misclassified_pct");
+  return e;
+}
+
 // The aliasing figures of a --measure JSON ("aliasing", or an edge band's).
 measure::AliasingStats aliasingFrom(const nlohmann::json& a) {
   measure::AliasingStats s;
@@ -197,12 +208,8 @@ int main(int argc, char** argv) {
             if (j.contains("hard")) {
               const auto& h = j["hard"];
               row.hasHard = true;
-              row.hard.facingPixels = h.at("facing_pixels");
-              row.hard.misclassified = h.at("misclassified");
-              row.hard.leaks = h.at("leaks");
-              row.hard.falseShadows = h.at("false_shadows");
+              row.hard = countsFrom(h, "facing_pixels");
               row.hard.edgePixels = h.at("edge_pixels");
-              row.hard.misclassifiedPct = h.at("misclassified_pct");
               row.hard.leakPct = h.at("leak_pct");
               row.hard.falseShadowPct = h.at("false_shadow_pct");
               row.hard.edgeTolerantPct = h.at("edge_tolerant_pct");
@@ -223,11 +230,7 @@ int main(int argc, char** argv) {
             if (j.contains("edge_band")) {
               const auto& b = j["edge_band"];
               row.hasBand = true;
-              row.band.facingPixels = b.at("pixels");
-              row.band.misclassified = b.at("misclassified");
-              row.band.leaks = b.at("leaks");
-              row.band.falseShadows = b.at("false_shadows");
-              row.band.misclassifiedPct = b.at("misclassified_pct");
+              row.band = countsFrom(b, "pixels");
               if (b.contains("aliasing")) row.bandAliasing = aliasingFrom(b["aliasing"]);
             }
             for (const auto& [name, value] : j.at("counters").items()) {
