@@ -89,6 +89,7 @@ nlohmann::ordered_json figures(const MeasureResult& r) {
                  {"false_shadow_pct", h.falseShadowPct},
                  {"edge_tolerant_pct", h.edgeTolerantPct}};
   }
+  j["nonfinite"] = {{"visibility", r.nonFiniteVisibility}, {"texel_jacobian", r.nonFiniteJacobian}};
   if (r.hasAliasing) {
     const auto& a = r.aliasing;
     j["aliasing"] = {{"pixels", a.pixels}, {"mean", a.mean}, {"rms", a.rms},
