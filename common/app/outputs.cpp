@@ -80,6 +80,7 @@ nlohmann::ordered_json figures(const MeasureResult& r) {
   } else {
     const auto& h = r.hard;
     j["hard"] = {{"facing_pixels", h.facingPixels},
+                 {"reference_shadowed", h.referenceShadowed},
                  {"misclassified", h.misclassified},
                  {"leaks", h.leaks},
                  {"false_shadows", h.falseShadows},
