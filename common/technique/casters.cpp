@@ -25,7 +25,7 @@ std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& viewProj,
     program_.set("uUseTexture", texture != 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture);
-    m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
+    (m.twoSided || !o.cull) ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
     const gl::GpuMesh& mesh = cache.gpu().meshes[object.mesh];
     if (world) {
       glBindVertexArray(world);

@@ -18,6 +18,10 @@ struct CasterOptions {
   bool alphaTest = true;    // discard alpha-tested texels (off: solid cards, the lesson-02 mistake)
   bool cullFront = false;   // draw back faces only: a closed caster's own thickness is the bias
   bool allObjects = false;  // every object, casting or not (a depth pre-pass from the eye)
+  // Cull at all. Off for maps rendered after the camera's projection (perspective shadow maps):
+  // a caster behind the camera comes out mirrored (its w changes sign twice), so its front faces
+  // would be culled; and a one-sided wall seen from behind must still cast.
+  bool cull = true;
   // Vertices computed on the CPU (a student's per-vertex bias): a vertex array with WORLD positions
   // for object i (the mesh's indices and uvs), or 0 for the mesh's own; empty: every mesh's own.
   std::function<GLuint(std::size_t object)> worldVertexArray;

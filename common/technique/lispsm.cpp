@@ -44,7 +44,7 @@ bool LightSpacePsm::fitLight(const ShadowContext& c, int i, const psm::CameraFru
     if (fit.perspective)
       std::snprintf(b, sizeof b, "n %.3g, gamma %.1f deg", fit.n, fit.gamma * 180.0 / 3.14159265358979);
     else
-      std::snprintf(b, sizeof b, "uniform (light along the view), gamma %.1f deg",
+      std::snprintf(b, sizeof b, "no warp (the uniform fallback), gamma %.1f deg",
                     fit.gamma * 180.0 / 3.14159265358979);
     stats_.extra.push_back({n + "warp", b});
     return true;

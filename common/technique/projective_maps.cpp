@@ -13,6 +13,9 @@ std::uint64_t depthBytes(gl::DepthFormat f) { return f == gl::DepthFormat::Depth
 
 std::string indexed(const char* name, int i) { return std::string(name) + "[" + std::to_string(i) + "]"; }
 
+// Both faces of every caster (see CasterOptions::cull): alpha-tested cards still discard their holes.
+const CasterOptions kNoCulling{.alphaTest = true, .cullFront = false, .cull = false};
+
 }  // namespace
 
 void ProjectiveMapSet::declare(ParamRegistry& r, const std::string& n) {
@@ -26,6 +29,8 @@ void ProjectiveMapSet::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "bias.a", &p_.worldA, 0, 1, "a: world units every caster moves away from the light");
   r.add(n + "bias.b", &p_.worldB, 0, 8, "b: times the world size of one texel where the caster is");
   r.add(n + "bias.max", &p_.worldMax, 0, 10, "the most a caster moves (one texel can be unbounded near infinity)");
+  r.add(n + "bias.normal_offset", &p_.normalOffset, 0, 4,
+        "the lookup moves this many texels along N (their world size at the point), more at grazing light");
   r.add(n + "offset.factor", &p_.slopeOffset, 0, 10,
         "glPolygonOffset factor in the depth pass: the depth slope of each caster in the map itself");
 }
@@ -118,11 +123,14 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
     glClear(GL_DEPTH_BUFFER_BIT);
     const glm::dmat4& m = maps[std::size_t(k)].worldToClip;
     l.matrices[std::size_t(k)] = glm::mat4(m);
+    const psm::TexelStep step = psm::texelStepFactors(m, glm::dvec2(double(side)));
+    l.texelStep[std::size_t(k)] = glm::vec4(step.u);
+    l.clipW[std::size_t(k)] = glm::vec4(step.r);
     if (student) {
       stats.triangles += drawStudentBiased(c, m, side, keep, worldLight);
     } else {
       setBiasUniforms(m, side, worldLight);
-      stats.triangles += casters_.draw(c.scene, l.matrices[std::size_t(k)], keep, {});
+      stats.triangles += casters_.draw(c.scene, l.matrices[std::size_t(k)], keep, kNoCulling);
     }
     stats.texels += std::uint64_t(side) * std::uint64_t(side);
   }
@@ -157,7 +165,7 @@ std::size_t ProjectiveMapSet::drawStudentBiased(const ShadowContext& c, const gl
   glBindBuffer(GL_ARRAY_BUFFER, studentVertices_.id());
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(studentScratch_.size() * sizeof(glm::vec3)), studentScratch_.data(),
                GL_STREAM_DRAW);
-  CasterOptions options;
+  CasterOptions options = kNoCulling;
   options.worldVertexArray = [&](std::size_t i) -> GLuint {
     const gl::GpuMesh& mesh = c.scene.gpu().meshes[scene.objects[i].mesh];
     if (!studentVaos_[i]) studentVaos_[i] = gl::makeVertexArray("student-biased object " + std::to_string(i));
@@ -186,13 +194,17 @@ bool ProjectiveMapSet::anyFaces() const {
 
 void ProjectiveMapSet::bind(const gl::Program& lit, int firstUnit) const {
   lit.set("uPsmConstantBias", p_.bias == ProjectiveBias::Constant ? p_.constantBias : 0.0f);
+  lit.set("uPsmNormalOffset", p_.normalOffset);
   const GLuint sampler = p_.filter == ProjectiveFilter::Hardware2x2 ? compareLinear_.id() : compareNearest_.id();
   for (int i = 0; i < kPsmLights; ++i) {
     const PerLight& l = lights_[std::size_t(i)];
     lit.set(indexed("uPsmLayers", i).c_str(), l.used);
     lit.set(indexed("uPsmSize", i).c_str(), float(l.side));
-    for (int k = 0; k < l.used; ++k)
+    for (int k = 0; k < l.used; ++k) {
       lit.set(indexed("uPsmMatrix", i * kPsmMaps + k).c_str(), l.matrices[std::size_t(k)]);
+      lit.set(indexed("uPsmTexelStep", i * kPsmMaps + k).c_str(), l.texelStep[std::size_t(k)]);
+      lit.set(indexed("uPsmClipW", i * kPsmMaps + k).c_str(), l.clipW[std::size_t(k)]);
+    }
     lit.set(indexed("uPsmFaces", i).c_str(), l.used > 0 && l.faces.faces);
     if (l.used > 0 && l.faces.faces) {
       lit.set(indexed("uPsmCamera", i).c_str(), glm::mat4(l.faces.cameraViewProj));

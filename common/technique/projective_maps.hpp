@@ -39,7 +39,8 @@ struct ProjectiveMapParams {
   float worldA = 0.02f;                                     // a: world units every caster moves away from the light
   float worldB = 1.5f;                                      // b: times the world size of one texel there
   float worldMax = 1.0f;                                    // the most a caster moves (a texel can be unbounded)
-  float slopeOffset = 1.0f;  // glPolygonOffset factor: steep casters in the map's own depth
+  float slopeOffset = 1.0f;   // glPolygonOffset factor: steep casters in the map's own depth
+  float normalOffset = 1.0f;  // the lookup moves this many texels (their world size there) along N, times sin(theta)
 };
 
 // One map to render: its world -> clip matrix (double, converted at the GL boundary).
@@ -88,6 +89,7 @@ class ProjectiveMapSet {
     int side = 0, layers = 0, used = 0;
     gl::DepthFormat format = gl::DepthFormat::Depth24;
     std::array<glm::mat4, kPsmMaps> matrices{};
+    std::array<glm::vec4, kPsmMaps> texelStep{}, clipW{};  // fix 4's factors, for the receiver's texel size
     FaceLookup faces;
   };
   void ensureArray(PerLight& l, int light, int side, int layers);

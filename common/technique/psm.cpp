@@ -47,6 +47,7 @@ PsmParams PsmParams::original() {
   p.receiverClipping = false;
   p.faces = psm::FaceMode::Never;
   p.maps.bias = ProjectiveBias::Constant;
+  p.maps.normalOffset = 0.0f;  // the original knew no normal offset either
   return p;
 }
 

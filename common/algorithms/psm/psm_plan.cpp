@@ -8,6 +8,10 @@
 
 namespace shadowlab::psm {
 
+namespace {
+constexpr double kMaxDepthRatio = 500.0;  // the PSM camera's largest far / near (fix 2)
+}  // namespace
+
 int faceMapSize(int side, int count) {
   if (count <= 1) return std::max(side, 1);
   return std::max(1, int(std::floor(double(side) / std::sqrt(double(count)))));
@@ -20,7 +24,8 @@ glm::dmat4 mapTexelOffset(const glm::dmat4& worldToClip, int size) {
 const PsmPlan& PsmPlanner::plan(const CameraFrustum& camera, const glm::dvec4& light, std::span<const Aabb> receivers,
                                 std::span<const Aabb> objects, std::span<const Aabb> casters, const PsmSwitches& s) {
   auto toPost = [&](const glm::dmat4& viewProj) {
-    return s.toPostProjective ? s.toPostProjective(viewProj, light) : toPostProjective(viewProj, light);
+    return s.toPostProjective ? s.toPostProjective(viewProj, light)
+                              : toPostProjective(viewProj, light, s.directionTolerance);
   };
   plan_ = {};
   plan_.camera = camera;
@@ -57,7 +62,11 @@ const PsmPlan& PsmPlanner::plan(const CameraFrustum& camera, const glm::dvec4& l
       zMin = std::min(zMin, z);
       zMax = std::max(zMax, z);
     }
-    const double n = std::max(camera.zNear, zMin * (1.0 - 1e-6));
+    // Never closer than far / kMaxDepthRatio: at Zf/Zn = 1e4 and more a directional light lands
+    // 1e-4 behind the far face and the map's matrices lose texels in float (measured: 6 texels of a
+    // 1024 map at 3e4, a fifth of one at 500). Receivers nearer than that (the eye inside a rough
+    // volume) lie in front of the near face, outside the cube: a single map still holds them.
+    const double n = std::max({camera.zNear, zMin * (1.0 - 1e-6), zMax / kMaxDepthRatio});
     const double f = std::max(zMax * (1.0 + 1e-6), n * (1.0 + 1e-3));
     plan_.camera =
         makeCamera(camera.view, camera.fovY, camera.aspect, n, std::min(f, std::max(camera.zFar, n * 1.001)));

@@ -40,6 +40,14 @@ struct PsmSwitches {
   FaceMode faces = FaceMode::Auto;                    // fix 3
   PsmOptions options;                                 // depth range, the Auto switch's cone limit, near fraction, steps
   double singleMapMaxHalfAngle = 1.5620696805349117;  // 89.5 degrees: the widest single map (faces Never)
+  // A light this close to parallel to the near plane (|h.w| <= tolerance |h.xyz|) is taken as a
+  // direction: its post-projective point lies over 1,000 cube sizes away. A perspective map from
+  // there crams the receivers into the last 1e-3 of its depth, which float cannot resolve at the GL
+  // boundary (speckled acne, measured); an orthographic one along the light is linear in depth, and
+  // its rays differ from the true ones by at most (cube size)^2 / distance, about 3 texels of a 2048
+  // map at the far corners and a tenth of one for casters near their receivers
+  // (conventions.hpp keeps 1e-9 for the double-precision maths).
+  double directionTolerance = 1e-3;
   // A student's versions (impl=student); empty: the reference.
   std::function<PostProjectiveLight(const glm::dmat4&, const glm::dvec4&)> toPostProjective;  // ex08.1
   std::function<double(const CameraFrustum&, std::span<const Aabb>)> virtualShift;            // ex08.2
