@@ -5,7 +5,6 @@
 #include <string>
 
 #include "algorithms/psm/post_shapes.hpp"
-#include "algorithms/psm/receivers.hpp"
 #include "technique/psm.hpp"
 #include "technique/scene_cache.hpp"
 
@@ -25,12 +24,8 @@ bool LightSpacePsm::fitLight(const ShadowContext& c, int i, const psm::CameraFru
   PerLight& l = lights_[std::size_t(i)];
   const glm::dvec4 h = psm::homogeneousLight(light);
   const psm::Frustum frustum = psm::frustumFromViewProj(camera.viewProj, camera.invViewProj);
-  const int kept = psm::potentialCasters(c.scene.boxes(), c.scene.casts(), frustum, h, l.keep);
-  int casters = 0;
-  for (const char k : c.scene.casts()) casters += k != 0;
-  if (!p_.cullCasters) l.keep.assign(c.scene.casts().begin(), c.scene.casts().end());
-  else stats_.culledCasters += casters - kept;
-  psm::receiverKeyPoints(receivers_, frustum, points_);
+  stats_.culledCasters += selectCasters(c.scene, frustum, h, p_.cullCasters, l.keep);
+  psm::receiverKeyPoints(receivers_.get(c.scene, p_.receiverTiles), frustum, points_);
   const std::string n = "light" + std::to_string(i) + " ";
   if (points_.empty()) {
     stats_.extra.push_back({n + "maps", "none: no receiver in view"});
@@ -71,11 +66,6 @@ void LightSpacePsm::renderShadows(const ShadowContext& c) {
     return;
   }
   stats_ = {};
-  if (receiversRevision_ != c.scene.revision() || receiversTiles_ != p_.receiverTiles) {
-    receivers_ = psm::receiverVolumes(c.scene.scene(), p_.receiverTiles);
-    receiversRevision_ = c.scene.revision();
-    receiversTiles_ = p_.receiverTiles;
-  }
   lights_.resize(kPsmLights);
   const psm::CameraFrustum camera = viewerFrustum(c);
   for (int i = 0; i < kPsmLights; ++i) {

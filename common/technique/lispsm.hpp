@@ -32,6 +32,7 @@ class LightSpacePsm : public ShadowTechnique {
   void renderShadows(const ShadowContext& c) override;
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "common/shadow_psm.frag"; }
+  std::vector<std::string> shaderDefines() const override { return maps_.shaderDefines(); }
   void bindVisibility(const gl::Program& lit, int firstUnit) const override { maps_.bind(lit, firstUnit); }
   void unbindVisibility(int firstUnit) const override { maps_.unbind(firstUnit); }
   void describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const override;
@@ -53,10 +54,8 @@ class LightSpacePsm : public ShadowTechnique {
   LispsmParams p_;
   ProjectiveMapSet maps_;
   std::vector<PerLight> lights_;
-  std::vector<Aabb> receivers_;
+  ReceiverVolumes receivers_;
   std::vector<glm::dvec3> points_, scratch_;
-  std::uint64_t receiversRevision_ = 0;
-  int receiversTiles_ = -1;
   ShadowStats stats_;
 };
 

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "algorithms/psm/bias.hpp"
+#include "algorithms/psm/receivers.hpp"
 #include "technique/scene_cache.hpp"
 #include "technique/uniform_maps.hpp"
 
@@ -17,6 +18,27 @@ std::string indexed(const char* name, int i) { return std::string(name) + "[" + 
 const CasterOptions kNoCulling{.alphaTest = true, .cullFront = false, .cull = false};
 
 }  // namespace
+
+std::span<const Aabb> ReceiverVolumes::get(const SceneCache& scene, int tiles) {
+  if (revision_ != scene.revision() || tiles_ != tiles) {
+    boxes_ = psm::receiverVolumes(scene.scene(), tiles);
+    revision_ = scene.revision();
+    tiles_ = tiles;
+  }
+  return boxes_;
+}
+
+int selectCasters(const SceneCache& scene, const psm::Frustum& view, const glm::dvec4& light, bool cull,
+                  std::vector<char>& keep) {
+  const int kept = psm::potentialCasters(scene.boxes(), scene.casts(), view, light, keep);
+  if (cull) {
+    int casters = 0;
+    for (const char k : scene.casts()) casters += k != 0;
+    return casters - kept;
+  }
+  keep.assign(scene.casts().begin(), scene.casts().end());
+  return 0;
+}
 
 void ProjectiveMapSet::declare(ParamRegistry& r, const std::string& n) {
   r.addChoice(n + "map_size", &p_.mapSize, UniformShadowMaps::mapSizes(),
@@ -190,6 +212,13 @@ bool ProjectiveMapSet::anyFaces() const {
   for (const PerLight& l : lights_)
     if (l.used > 0 && l.faces.faces) return true;
   return false;
+}
+
+std::vector<std::string> ProjectiveMapSet::shaderDefines() const {
+  std::vector<std::string> defines;
+  if (anyFaces()) defines.push_back("PSM_FACES");
+  if (p_.normalOffset > 0) defines.push_back("PSM_NORMAL_OFFSET");
+  return defines;
 }
 
 void ProjectiveMapSet::bind(const gl::Program& lit, int firstUnit) const {

@@ -57,6 +57,23 @@ struct FaceLookup {
   std::array<int, 6> layerOfFace{};  // -1: no map on that face
 };
 
+// The rough receiver volumes of the scene (psm::receiverVolumes), rebuilt only when the scene or
+// the tile count changes.
+class ReceiverVolumes {
+ public:
+  std::span<const Aabb> get(const SceneCache& scene, int tiles);
+
+ private:
+  std::vector<Aabb> boxes_;
+  std::uint64_t revision_ = 0;
+  int tiles_ = -1;
+};
+
+// keep[i]: scene object i may shade the view frustum for the light (psm::potentialCasters), or
+// every caster when `cull` is off. Returns how many casters were left out.
+int selectCasters(const SceneCache& scene, const psm::Frustum& view, const glm::dvec4& light, bool cull,
+                  std::vector<char>& keep);
+
 class ProjectiveMapSet {
  public:
   explicit ProjectiveMapSet(ProjectiveMapParams defaults) : p_(defaults) {}
@@ -75,6 +92,8 @@ class ProjectiveMapSet {
   void bind(const gl::Program& lit, int firstUnit) const;
   void unbind(int firstUnit) const;
   bool anyFaces() const;
+  // The lit program's variant for these maps: PSM_FACES (some light has face maps), PSM_NORMAL_OFFSET.
+  std::vector<std::string> shaderDefines() const;
   // A student's world-space bias (ex09.4), evaluated per caster vertex on the CPU; empty: the
   // reference in the depth pass's vertex shader.
   std::function<glm::dvec3(const glm::dmat4&, const glm::dvec3&, const glm::dvec3&, double, double, double)>

@@ -92,15 +92,13 @@ void PerspectiveShadowMaps::planLight(const ShadowContext& c, int i, const psm::
   if (!light.enabled) return maps_.disable(i);
   const glm::dvec4 h = psm::homogeneousLight(light);
   const psm::Frustum frustum = psm::frustumFromViewProj(camera.viewProj, camera.invViewProj);
-  const int kept = psm::potentialCasters(c.scene.boxes(), c.scene.casts(), frustum, h, l.keep);
+  // The slide covers the potential casters, whether or not the depth pass culls the others.
+  const int culled = selectCasters(c.scene, frustum, h, true, l.keep);
   l.casterBoxes.clear();
-  int casters = 0;
-  for (std::size_t j = 0; j < l.keep.size(); ++j) {
-    casters += c.scene.casts()[j] != 0;
+  for (std::size_t j = 0; j < l.keep.size(); ++j)
     if (l.keep[j]) l.casterBoxes.push_back(c.scene.boxes()[j]);
-  }
-  if (!p_.cullCasters) l.keep.assign(c.scene.casts().begin(), c.scene.casts().end());
-  else stats_.culledCasters += casters - kept;
+  if (p_.cullCasters) stats_.culledCasters += culled;
+  else l.keep.assign(c.scene.casts().begin(), c.scene.casts().end());
   const psm::PsmPlan& plan = l.planner.plan(camera, h, receivers_, c.scene.boxes(), l.casterBoxes, switches());
   l.planned = true;
   addCounters(i);
@@ -127,11 +125,7 @@ void PerspectiveShadowMaps::renderShadows(const ShadowContext& c) {
     return;
   }
   stats_ = {};
-  if (receiversRevision_ != c.scene.revision() || receiversTiles_ != p_.receiverTiles) {
-    receivers_ = psm::receiverVolumes(c.scene.scene(), p_.receiverTiles);
-    receiversRevision_ = c.scene.revision();
-    receiversTiles_ = p_.receiverTiles;
-  }
+  receivers_ = receiverCache_.get(c.scene, p_.receiverTiles);
   lights_.resize(kPsmLights);
   const psm::CameraFrustum camera = viewerFrustum(c);
   for (int i = 0; i < kPsmLights; ++i) {
@@ -169,10 +163,7 @@ void PerspectiveShadowMaps::addCounters(int i) {
     stats_.extra.push_back({n + "outside the map", std::to_string(plan.pointsOutside) + " key points (unshadowed)"});
 }
 
-std::vector<std::string> PerspectiveShadowMaps::shaderDefines() const {
-  if (maps_.anyFaces()) return {"PSM_FACES"};
-  return {};
-}
+std::vector<std::string> PerspectiveShadowMaps::shaderDefines() const { return maps_.shaderDefines(); }
 
 const psm::PsmPlan* PerspectiveShadowMaps::plan(int light) const {
   if (light < 0 || light >= int(lights_.size()) || !lights_[std::size_t(light)].planned) return nullptr;

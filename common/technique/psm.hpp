@@ -76,9 +76,8 @@ class PerspectiveShadowMaps : public ShadowTechnique {
   ProjectiveMapSet maps_;
   psm::PsmSwitches student_;
   std::vector<PerLight> lights_;
-  std::vector<Aabb> receivers_;
-  std::uint64_t receiversRevision_ = 0;
-  int receiversTiles_ = -1;
+  ReceiverVolumes receiverCache_;
+  std::span<const Aabb> receivers_;
   ShadowStats stats_;
 };
 
