@@ -8,11 +8,6 @@
 // and their index; replay one with --seed S --only I.
 //   psm_stress LESSON --out DIR [--configs N] [--seed S] [--size WxH] [--only I] [--max-edge P] [--max-leak P]
 //              [--set NAME=VALUE]...   (passed to the lesson: a control run with a broken setting)
-#include <spawn.h>
-#include <sys/wait.h>
-
-#include <fcntl.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -26,10 +21,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/process.hpp"
 #include "core/scene_gen.hpp"
 #include "measure/paths.hpp"
 
-extern char** environ;
 namespace fs = std::filesystem;
 using namespace shadowlab;
 
@@ -139,21 +134,6 @@ Config drawConfig(Rng& r, int index, int group) {
   return c;
 }
 
-int run(const std::vector<std::string>& args, const std::string& log) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid;
-  int status = -1;
-  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0) waitpid(pid, &status, 0);
-  posix_spawn_file_actions_destroy(&actions);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
-
 struct Outcome {
   Config config;
   double edgePct = 0, leakShare = 0, misPct = 0;
@@ -218,7 +198,7 @@ bool runGroup(const std::string& lesson, const fs::path& dir, int group, const s
                                    std::string("light0.kind=") + (g.point ? "point" : "directional")};
   args.insert(args.end(), extra.begin(), extra.end());
   const std::string log = (dir / (stem + ".log")).string();
-  if (const int rc = run(args, log); rc != 0) {
+  if (const int rc = runProcess(args, {log}); rc != 0) {
     std::ifstream in(log);
     std::cerr << "psm_stress: group " << group << " (" << g.scene << ") exited " << rc << ":\n" << in.rdbuf() << '\n';
     return false;
