@@ -214,7 +214,7 @@ TEST_CASE("psm receivers: large objects become a coarse height map, small ones k
         (m.positions[m.indices[t]] + m.positions[m.indices[t + 1]] + m.positions[m.indices[t + 2]]) / 3.0f;
     bool in = false;
     for (const Aabb& a : tiles)
-      in = in || glm::all(glm::lessThanEqual(a.min, c)) && glm::all(glm::lessThanEqual(c, a.max));
+      in = in || (glm::all(glm::lessThanEqual(a.min, c)) && glm::all(glm::lessThanEqual(c, a.max)));
     CHECK(in);
   }
   CHECK_THROWS_AS(receiverVolumes(scene, 1000), std::invalid_argument);
