@@ -50,7 +50,7 @@ void addFrame(psm::PostProjectiveShapes& s, const glm::dmat4& camera, const glm:
 void PostProjectiveView::declare(ParamRegistry& r, const std::string& n) {
   r.addChoice(n, &mode_, {"off", "inset", "full"},
               "the scene after the camera's projection: the unit cube, the light there, its light camera")
-      .hotkey = "Q";
+      .hotkey = "P";  // Q flies the camera down (a framework key)
   r.add(n + ".size", &size_, 0.2f, 1.0f, "the inset's width, as a fraction of the frame");
   r.add(n + ".yaw", &yaw_, -3.2f, 3.2f, "the display camera around the cube (0: along the eye's rays)");
   r.add(n + ".pitch", &pitch_, -1.5f, 1.5f, "the display camera above the cube's equator");

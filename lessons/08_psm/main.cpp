@@ -9,12 +9,12 @@
 //                      virtual camera back until every potential caster is in front of it
 //   the light camera   fitted to every object inside the (virtual) view frustum, one map however
 //                      wide its cone; the constant depth bias
-// The lesson is its picture: the post-projective view (Q) draws the squashed scene, the unit cube,
+// The lesson is its picture: the post-projective view (P) draws the squashed scene, the unit cube,
 // the light where it lands, its light camera and the virtual camera's slide. Against it, lesson
 // 03's uniform map at the same texels (technique=uniform, A/B preset versus_uniform).
 //
-// Controls: orbit/pan/zoom with the mouse; T the technique, V the view, Q the post-projective view,
-// O the god view, M ground truth, Y turns the camera slowly; F1 help. Exercises (exercises.hpp):
+// Controls: orbit/pan/zoom with the mouse; T the technique, V the view, P the post-projective view,
+// O the god view, M ground truth, Y turns the camera (turn.speed); F1 help. Exercises (exercises.hpp):
 // the post-projective light, the virtual camera's slide; `--set impl=student` runs yours.
 #include <algorithm>
 
@@ -40,7 +40,8 @@ struct Params {
   View view = View::Lit;
   Impl impl = Impl::Reference;  // student: your post-projective light and virtual slide
   bool equalTexels = true;      // the uniform map gets the PSM's texels (map_size)
-  float turn = 0.0f;            // radians per second the camera turns (a caster leaves the view)
+  bool turn = false;            // the camera turns (a caster leaves the view)
+  float turnSpeed = 0.35f;      // radians per second
   float ambient = 0.1f;
   Light lights[kLights];  // the sun overhead-ish, and a point light (off)
 };
@@ -48,7 +49,7 @@ struct Params {
 const char* const kSummary =
     "The original perspective shadow map: the depth map in the camera's post-projective space, the light "
     "there, the virtual camera slid back for a light behind; the post-projective view.";
-const char* const kHelp = R"(Q: the post-projective view (inset, full): the unit cube, the squashed scene,
+const char* const kHelp = R"(P: the post-projective view (inset, full): the unit cube, the squashed scene,
 the light where it lands (red: behind the camera), the light camera and the slide.
 Presets: overhead (the best case), side, behind (the slide), facing (dueling frusta).
 T: the uniform map at equal texels. Y turns the camera: watch the slide jump.
@@ -95,7 +96,8 @@ class OriginalPsmLesson : public Lesson {
         .hotkey = "V";
     declareImpl(r, &p_.impl, "whose post-projective light and virtual camera slide the PSM runs");
     r.add("equal_texels", &p_.equalTexels, "the uniform map gets the PSM's map_size (the same texels)");
-    r.add("turn", &p_.turn, -1, 1, "turn the camera (radians per second): a caster leaves the view").hotkey = "Y";
+    r.add("turn", &p_.turn, "turn the camera (turn.speed): a caster leaves the view").hotkey = "Y";
+    r.add("turn.speed", &p_.turnSpeed, -1, 1, "how fast the camera turns, radians per second");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     psm_.declare(r, "");  // the subject: bare names (the fixes are lesson 09's, all off here)
     uniform_.declare(r, "uniform.");
@@ -122,7 +124,7 @@ class OriginalPsmLesson : public Lesson {
 
   void update(const FrameInfo& f) override {
     scene_.update(p_.scene);
-    camera.yaw += float(f.dt) * p_.turn;
+    if (p_.turn) camera.yaw += float(f.dt) * p_.turnSpeed;
     if (p_.equalTexels) uniform_.params().mapSize = psm_.maps().params().mapSize;
     const bool student = p_.impl == Impl::Student;
     psm::PsmSwitches& steps = psm_.studentSteps();

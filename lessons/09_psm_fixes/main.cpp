@@ -12,11 +12,11 @@
 //                      light outside, 6 inside), when the cone is too wide or always
 //   bias=world   §5    a + b L_texel in world space, per caster vertex, against bias=constant
 //   technique          lispsm (Wimmer et al. 2004, n_opt) and uniform (lesson 03) on the same controls
-// Views: the post-projective view (Q: inset, full) with the light, its cone, key points and maps;
+// Views: the post-projective view (P: inset, full) with the light, its cone, key points and maps;
 // the god view (O) with the receiver volumes, key points and light frusta; view=maps.
 //
 // Controls: orbit/pan/zoom with the mouse; I fix 1, C fix 2, F cycles fix 3, B the bias, T the
-// technique, V the view, Q the post-projective view, O the god view, M ground truth, 1 2 the
+// technique, V the view, P the post-projective view, O the god view, M ground truth, 1 2 the
 // lights; F1 help. Exercises (exercises.hpp): the inverse projection, the smallest cone, the face
 // test, the texel-size bias, LiSPSM's n_opt; `--set impl=student` runs yours in the lesson.
 #include <numbers>
@@ -55,7 +55,7 @@ const char* const kSummary =
 const char* const kHelp = R"(I: fix 1, the inverse projection for a light behind the camera (off: the virtual slide).
 C: fix 2, unit-cube clipping: rough receiver volumes, key points, smallest cone.
 F: fix 3, never / auto / always the hidden faces of the unit cube. B: constant or world bias.
-format 16 / 24 / 32f. T: PSM, LiSPSM, uniform (equal texels). Q: post-projective view.
+format 16 / 24 / 32f. T: PSM, LiSPSM, uniform (equal texels). P: post-projective view.
 O: god view (volumes, key points, frusta). M: ground truth. V: lit, visibility, maps.)";
 
 // The lesson's exercises as the technique's replaceable steps (impl=student).
