@@ -305,9 +305,17 @@ class Runner {
     input_.pressed.clear();
   }
 
+  // --measure FILE: the last frame; a FILE with %d: every frame, into FILE with %d its index (a
+  // stress run measures many configurations in one process). "" when this frame is not measured.
+  std::string measurePath(int frame, bool lastFrame) const {
+    const auto at = cl_.measure.find("%d");
+    if (at == std::string::npos) return lastFrame ? cl_.measure : "";
+    return cl_.measure.substr(0, at) + std::to_string(frame) + cl_.measure.substr(at + 2);
+  }
+
   // The replayed pose, then the viewer's camera as the frame's.
   FrameInfo beginFrame(int frame, double dt, bool lastFrame) {
-    if (lastFrame && !cl_.measure.empty()) {
+    if (!measurePath(frame, lastFrame).empty()) {
       measurement_.requestFullResolution();
       ab_.requestFullResolution();
     }
@@ -428,11 +436,11 @@ class Runner {
     }
     if (!gl::caps().khrDebug) gl::checkErrors("end of frame");
     try {
-      if (lastFrame && !cl_.measure.empty()) {
+      if (const std::string path = measurePath(fi.index, lastFrame); !path.empty()) {
         const SplitFigures b{ab_.enabled() ? ab_.presetB() : "", ab_.measurementB().result()};
         std::vector<Counter> counters = lesson_.counters;
         counters.push_back({"draw calls", std::to_string(drawCalls_)});
-        writeMeasurementJson(cl_.measure, info_, measurement_.result(), counters, lesson_.timers,
+        writeMeasurementJson(path, info_, measurement_.result(), counters, lesson_.timers,
                              ab_.enabled() ? &b : nullptr);
       }
       if (lastFrame && !cl_.screenshot.empty()) saveScreenshot(cl_.screenshot, fi.framebuffer, width_, height_);

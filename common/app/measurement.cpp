@@ -214,7 +214,12 @@ void Measurement::measureAliasing(ImageF jacobian, const std::vector<std::uint8_
     if (!covered[i]) {
       for (int c = 0; c < 4; ++c) jacobian.data[i * 4 + c] = std::nanf("");  // background
     } else {
-      for (int c = 0; c < 4; ++c) anyJ = anyJ || jacobian.data[i * 4 + c] != 0.0f;
+      bool finite = true;
+      for (int c = 0; c < 4; ++c) {
+        anyJ = anyJ || jacobian.data[i * 4 + c] != 0.0f;
+        finite = finite && std::isfinite(jacobian.data[i * 4 + c]);
+      }
+      result_.nonFiniteJacobian += !finite;  // NaN would otherwise pass for background below
     }
   }
   result_.hasAliasing = anyJ;
@@ -237,6 +242,8 @@ void Measurement::compute(const MeasureSource& source) {
   // 3. rays from the very points that were shaded
   const measure::SurfaceBuffer surface = measure::surfaceFromImages(shaded.position, shaded.normal);
   const ImageF technique = techniqueVisibility(shaded.normal);
+  for (std::size_t i = 0; i < surface.covered.size(); ++i)
+    result_.nonFiniteVisibility += surface.covered[i] && !std::isfinite(technique.data[i]);
   const Light& light = source.lights[std::size_t(light_)];
   result_.width = surface.width;
   result_.height = surface.height;

@@ -74,6 +74,8 @@ struct MeasureResult {
   float bandRadius = 0.0f;
   measure::HardShadowErrors band;
   measure::AliasingStats bandAliasing;
+  std::size_t nonFiniteVisibility = 0;  // covered pixels whose V is NaN or infinite (a broken matrix)
+  std::size_t nonFiniteJacobian = 0;    // covered pixels whose texel Jacobian is (else they pass for background)
   double groundTruthMs = 0, readbackMs = 0, buildMs = 0;
   int width = 0, height = 0;  // the resolution measured at
   Image8 errorHeatmap, aliasingHeatmap, referenceImage;

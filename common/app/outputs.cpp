@@ -79,16 +79,13 @@ nlohmann::ordered_json figures(const MeasureResult& r) {
     if (s.noiseFloor >= 0) j["soft"]["reference_noise_rmse"] = s.noiseFloor;
   } else {
     const auto& h = r.hard;
-    j["hard"] = {{"facing_pixels", h.facingPixels},
-                 {"misclassified", h.misclassified},
-                 {"leaks", h.leaks},
-                 {"false_shadows", h.falseShadows},
-                 {"edge_pixels", h.edgePixels},
-                 {"misclassified_pct", h.misclassifiedPct},
-                 {"leak_pct", h.leakPct},
-                 {"false_shadow_pct", h.falseShadowPct},
-                 {"edge_tolerant_pct", h.edgeTolerantPct}};
+    j["hard"] = {{"facing_pixels", h.facingPixels},         {"reference_shadowed", h.referenceShadowed},
+                 {"misclassified", h.misclassified},        {"leaks", h.leaks},
+                 {"false_shadows", h.falseShadows},         {"edge_pixels", h.edgePixels},
+                 {"misclassified_pct", h.misclassifiedPct}, {"leak_pct", h.leakPct},
+                 {"false_shadow_pct", h.falseShadowPct},    {"edge_tolerant_pct", h.edgeTolerantPct}};
   }
+  j["nonfinite"] = {{"visibility", r.nonFiniteVisibility}, {"texel_jacobian", r.nonFiniteJacobian}};
   auto aliasing = [](const measure::AliasingStats& a) {
     return nlohmann::ordered_json{{"pixels", a.pixels}, {"mean", a.mean}, {"rms", a.rms},
                                   {"p95", a.p95},       {"max", a.max},   {"share_above_1", a.shareAbove1}};

@@ -60,6 +60,7 @@ HardShadowErrors compareHardImpl(const ImageF& technique, const ImageF& referenc
         }
       bool techLit = technique.data[std::size_t(y) * w + x] >= litThreshold;
       bool wrong = techLit != lit;
+      e.referenceShadowed += !lit;
       if (wrong) {
         ++e.misclassified;
         if (techLit) ++e.leaks;

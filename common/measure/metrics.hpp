@@ -26,6 +26,7 @@ struct Rgb8 {
 // boundary, i.e. facing pixels with a facing neighbour of the other reference class.
 struct HardShadowErrors {
   std::size_t facingPixels = 0;
+  std::size_t referenceShadowed = 0;  // facing pixels the reference shadows (leaks are a share of these)
   std::size_t misclassified = 0, leaks = 0, falseShadows = 0;
   std::size_t edgePixels = 0;                                    // facing pixels excluded by the edge tolerance
   std::size_t edgeTolerantMisclassified = 0;                     // misclassified among the rest

@@ -89,6 +89,7 @@ std::vector<Column> columns(const std::vector<ReportRow>& rows) {
     c.push_back({name, true, [=](const ReportRow& r) { return r.hasHard ? f(r.hard) : std::string(); }});
   };
   hard("facing_pixels", [=](const HardShadowErrors& e) { return count(e.facingPixels); });
+  hard("reference_shadowed", [=](const HardShadowErrors& e) { return count(e.referenceShadowed); });
   hard("misclassified_pct", [=](const HardShadowErrors& e) { return num(e.misclassifiedPct); });
   hard("leak_pct", [=](const HardShadowErrors& e) { return num(e.leakPct); });
   hard("false_shadow_pct", [=](const HardShadowErrors& e) { return num(e.falseShadowPct); });
@@ -232,6 +233,83 @@ std::string scatterSvg(const std::vector<const ReportRow*>& rows, const std::vec
   return s.str();
 }
 
+// One figure of a row for the series plots; NaN where the row has none.
+struct Series {
+  const char* name;
+  bool logScale;
+  std::function<double(const ReportRow&)> value;
+};
+std::vector<Series> seriesFigures() {
+  const double nan = std::nan("");
+  return {{"aliasing m (mean)", true, [=](const ReportRow& r) { return r.hasAliasing ? r.aliasing.mean : nan; }},
+          {"misclassified pixels (%)", false,
+           [=](const ReportRow& r) { return r.hasHard ? r.hard.misclassifiedPct : nan; }},
+          {"shadow passes (GPU ms)", false, [=](const ReportRow& r) {
+             double ms = 0;
+             bool any = false;
+             for (const auto& [pass, v] : r.gpuMs)
+               if (pass.rfind("shadow", 0) == 0) {
+                 ms += v;
+                 any = true;
+               }
+             return any ? ms : nan;
+           }}};
+}
+
+// A figure along the frames (path samples, or the directions of a sweep), one line per technique.
+std::string seriesSvg(const std::vector<const ReportRow*>& rows, const Series& fig) {
+  static const char* colours[] = {"#4263eb", "#d9480f", "#2b8a3e", "#ae3ec9", "#e67700", "#1098ad", "#c2255c"};
+  std::vector<std::string> techniques;
+  int frames = 0;
+  double lo = 1e300, hi = -1e300;
+  for (const ReportRow* r : rows) {
+    if (std::find(techniques.begin(), techniques.end(), r->technique) == techniques.end())
+      techniques.push_back(r->technique);
+    frames = std::max(frames, r->frame + 1);
+    const double v = fig.value(*r);
+    if (!std::isfinite(v) || (fig.logScale && !(v > 0))) continue;
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  if (!(hi >= lo) || frames < 2) return "";
+  auto map = [&](double v) { return fig.logScale ? std::log10(v) : v; };
+  double a = fig.logScale ? std::floor(map(lo)) : 0.0, b = fig.logScale ? std::ceil(map(hi)) : hi * 1.1;
+  if (!(b > a)) b = a + 1;
+  const double W = 560, H = 300, left = 70, right = 160, top = 20, bottom = 45;
+  auto px = [&](double f) { return left + (W - left - right) * f / (frames - 1); };
+  auto py = [&](double v) { return H - bottom - (H - top - bottom) * (map(v) - a) / (b - a); };
+  std::ostringstream s;
+  s << "<svg class=\"series\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
+    << "\" viewBox=\"0 0 " << W << ' ' << H << "\" role=\"img\" aria-label=\"" << html(fig.name) << " per frame\">\n";
+  s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << W - left - right << "\" height=\""
+    << H - top - bottom << "\" fill=\"#fafafa\" stroke=\"#999\"/>\n";
+  for (int i = 0; i <= 4; ++i) {
+    const double t = a + (b - a) * i / 4, v = fig.logScale ? std::pow(10.0, t) : t;
+    s << "<text x=\"" << left - 8 << "\" y=\"" << py(v) + 4 << "\" text-anchor=\"end\" class=\"tick\">" << fmt(v)
+      << "</text>\n";
+  }
+  for (int f = 0; f < frames; f += std::max(1, frames / 8))
+    s << "<text x=\"" << px(f) << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\" class=\"tick\">" << f
+      << "</text>\n";
+  s << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 8 << "\" text-anchor=\"middle\">frame</text>\n";
+  s << "<text transform=\"translate(16 " << (top + H - bottom) / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
+    << html(fig.name) << (fig.logScale ? " (log)" : "") << "</text>\n";
+  for (std::size_t t = 0; t < techniques.size(); ++t) {
+    const char* c = colours[t % 7];
+    s << "<polyline fill=\"none\" stroke=\"" << c << "\" stroke-width=\"1.5\" points=\"";
+    for (const ReportRow* r : rows) {
+      const double v = fig.value(*r);
+      if (r->technique == techniques[t] && std::isfinite(v) && (!fig.logScale || v > 0))
+        s << px(r->frame) << ',' << py(v) << ' ';
+    }
+    s << "\"><title>" << html(techniques[t]) << "</title></polyline>\n";
+    s << "<text x=\"" << W - right + 10 << "\" y=\"" << top + 14 + 16 * t << "\" fill=\"" << c << "\">"
+      << html(techniques[t]) << "</text>\n";
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
 void writeText(const std::string& path, const std::string& text) {
   std::ofstream file(path, std::ios::binary);
   if (!file) throw std::runtime_error(path + ": cannot open for writing");
@@ -277,6 +355,7 @@ std::string toJson(const std::vector<ReportRow>& rows, const std::string& title)
     j["shadowTexels"] = r.shadowTexels;
     if (r.hasHard)
       j["hard"] = {{"facingPixels", r.hard.facingPixels},
+                   {"referenceShadowed", r.hard.referenceShadowed},
                    {"misclassified", r.hard.misclassified},
                    {"leaks", r.hard.leaks},
                    {"falseShadows", r.hard.falseShadows},
@@ -353,6 +432,8 @@ std::string toHtml(const std::vector<ReportRow>& rows, const std::string& title)
 
     s << "<section>\n<h2>Scene: " << html(scene) << "</h2>\n";
     if (!plotRows.empty()) s << scatterSvg(plotRows, frontInPlot, errorName);
+    // Along the frames (a path or a sweep), when there are several: each figure per technique.
+    for (const Series& fig : seriesFigures()) s << seriesSvg(sceneRows, fig);
     s << "<h3>Pareto front</h3>\n<ol class=\"pareto-list\">\n";
     for (std::size_t i : front)
       s << "<li>" << html(label(*sceneRows[i])) << ": " << formatNumber(sceneRows[i]->gpuTotalMs()) << " ms, "

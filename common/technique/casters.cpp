@@ -19,13 +19,21 @@ std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& viewProj,
     if ((!object.castsShadow && !o.allObjects) || (!keep.empty() && !keep[i])) continue;
     const Material& m = scene.materials[object.material];
     const GLuint texture = cache.gpu().materialTextures[object.material].id();
-    program_.set("uModel", object.model);
+    const GLuint world = o.worldVertexArray ? o.worldVertexArray(i) : 0;
+    program_.set("uModel", world ? glm::mat4(1.0f) : object.model);
     program_.set("uAlphaCutoff", m.alphaCutoff);
     program_.set("uUseTexture", texture != 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture);
-    m.twoSided ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
-    cache.gpu().meshes[object.mesh].draw();
+    (m.twoSided || !o.cull) ? glDisable(GL_CULL_FACE) : glEnable(GL_CULL_FACE);
+    const gl::GpuMesh& mesh = cache.gpu().meshes[object.mesh];
+    if (world) {
+      glBindVertexArray(world);
+      glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+      gl::countDraws();
+    } else {
+      mesh.draw();
+    }
     triangles += scene.meshes[object.mesh].triangleCount();
   }
   glEnable(GL_CULL_FACE);

@@ -4,6 +4,7 @@
 // alpha-tested card discards its holes here too and casts the shadow of its leaves, not of a
 // solid card (Boreskov's tutorial, docs/references.md). The caller binds the map's framebuffer
 // (gl::beginShadowPass) and sets the polygon offset; the GL calls of the pass are here.
+#include <functional>
 #include <span>
 
 #include <glm/glm.hpp>
@@ -17,20 +18,29 @@ struct CasterOptions {
   bool alphaTest = true;    // discard alpha-tested texels (off: solid cards, the lesson-02 mistake)
   bool cullFront = false;   // draw back faces only: a closed caster's own thickness is the bias
   bool allObjects = false;  // every object, casting or not (a depth pre-pass from the eye)
+  // Cull at all. Off for maps rendered after the camera's projection (perspective shadow maps):
+  // a caster behind the camera comes out mirrored (its w changes sign twice), so its front faces
+  // would be culled; and a one-sided wall seen from behind must still cast.
+  bool cull = true;
+  // Vertices computed on the CPU (a student's per-vertex bias): a vertex array with WORLD positions
+  // for object i (the mesh's indices and uvs), or 0 for the mesh's own; empty: every mesh's own.
+  std::function<GLuint(std::size_t object)> worldVertexArray;
 };
 
 class CasterPass {
  public:
-  // `vertexShader` and its view-projection uniform: the light's depth pass, or (common/scene.vert,
-  // uViewProj) for a pre-pass whose depth a lit pass with the same vertex shader tests EQUAL against.
-  // `fragmentShader`: a filterable map (VSM, ESM) writes its moments from one of its own, with the
-  // same alpha test.
+  // `vertexShader` and its view-projection uniform: the light's depth pass (a technique may move
+  // its casters there, e.g. the world-space bias of perspective shadow maps, common/depth_psm.vert),
+  // or (common/scene.vert, uViewProj) for a pre-pass whose depth a lit pass with the same vertex
+  // shader tests EQUAL against. `fragmentShader`: a filterable map (VSM, ESM) writes its moments
+  // from one of its own, with the same alpha test.
   explicit CasterPass(std::string label = "depth pass", std::string vertexShader = "common/depth.vert",
                       std::string viewProjUniform = "uLightViewProj", std::string fragmentShader = "common/depth.frag")
       : program_(std::move(label), {std::move(vertexShader), std::move(fragmentShader)}),
         viewProjUniform_(std::move(viewProjUniform)) {}
   void build() { program_.build(); }
-  // The program, for the uniforms a fragment shader of the caller's own reads (set them after use()).
+  // The program, for the uniforms a shader of the caller's own reads (a technique's depth pass, a
+  // filterable map's fragment shader).
   const gl::Program& program() const { return program_; }
   // Draws object i when keep[i] (an empty span: every object that casts). Returns the triangles drawn.
   std::size_t draw(const SceneCache& scene, const glm::mat4& viewProj, std::span<const char> keep,

@@ -28,6 +28,10 @@
 #include "core/params.hpp"
 #include "gl/program.hpp"
 
+namespace shadowlab::psm {
+class PostProjectiveShapes;
+}
+
 namespace shadowlab::tech {
 
 class SceneCache;
@@ -92,6 +96,16 @@ class ShadowTechnique {
   // ---- techniques that own the lit pass (stencil volumes) ---------------------------------------
   virtual bool ownsLitPass() const { return false; }
   virtual void renderLit(const ShadowContext& c, const LitSettings& lit) {}
+
+  // ---- the post-projective view (technique/post_projective_view) ---------------------------------
+  // The camera whose post-projective space shows light `light` of this technique: the viewer's
+  // (the default), or a perspective shadow map's virtual camera slid back behind it.
+  virtual glm::dmat4 postProjectiveCamera(const ShadowContext& c, int light) const {
+    return glm::dmat4(c.viewerViewProj());
+  }
+  // The technique's own shapes in that space: its light frusta, cones, key points (none: only the
+  // unit cube, the squashed scene and the light are drawn).
+  virtual void describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const {}
 };
 
 }  // namespace shadowlab::tech

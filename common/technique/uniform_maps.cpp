@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "algorithms/psm/post_shapes.hpp"
 #include "technique/scene_cache.hpp"
 
 namespace shadowlab::tech {
@@ -211,6 +212,12 @@ void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) co
     glBindSampler(GLuint(unitCube), sampler);
   }
   glActiveTexture(GL_TEXTURE0);
+}
+
+void UniformShadowMaps::describePostProjective(const ShadowContext& c, int light,
+                                               psm::PostProjectiveShapes& out) const {
+  if (const shadow::LightCamera* cam = camera(light))
+    out.worldFrustum(postProjectiveCamera(c, light), glm::dmat4(cam->viewProj()), kLightColours[light % 4]);
 }
 
 void UniformShadowMaps::unbindVisibility(int firstUnit) const {

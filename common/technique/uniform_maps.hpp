@@ -51,6 +51,8 @@ class UniformShadowMaps : public ShadowTechnique {
   std::vector<std::string> shaderDefines() const override;
   void bindVisibility(const gl::Program& lit, int firstUnit) const override;
   void unbindVisibility(int firstUnit) const override;
+  // Light i's frustum (2D maps) in the post-projective view: what a uniform map spends its texels on.
+  void describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const override;
 
   // A student's versions of the directional light's steps (impl=student); empty: the reference.
   shadow::CasterTest casterTest;

@@ -12,4 +12,13 @@ glm::dvec4 postProjectiveLight(const glm::dmat4& viewProj, const glm::dvec4& lig
   return glm::dvec4(0.0);
 }
 
+// EXERCISE 08.2
+double virtualCameraShift(const glm::dmat4& view, double zNear, const std::vector<glm::dvec3>& casterCorners) {
+  // TODO: the largest z_view + zNear over the corners (z_view = (view * (corner, 1)).z), or 0.
+  (void)view;
+  (void)zNear;
+  (void)casterCorners;
+  return 0.0;
+}
+
 }  // namespace shadowlab::ex08

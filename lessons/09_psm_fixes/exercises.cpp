@@ -40,4 +40,13 @@ glm::dvec3 texelSizeBias(const glm::dmat4& worldToClip, const glm::dvec3& p, con
   return p * 0.0;
 }
 
+// EXERCISE 09.5
+double lispsmOptimalN(double z0, double z1, double gamma) {
+  // TODO: (z0 + sqrt(z0 z1)) / |sin(gamma)|, or +infinity when sin(gamma) == 0.
+  (void)z0;
+  (void)z1;
+  (void)gamma;
+  return 0.0;
+}
+
 }  // namespace shadowlab::ex09

@@ -50,4 +50,15 @@ bool cubeFaceVisible(int face, const glm::dvec4& postLight);
 glm::dvec3 texelSizeBias(const glm::dmat4& worldToClip, const glm::dvec3& p, const glm::dvec3& dirFromLight, double a,
                          double b, double mapSize);
 
+// EXERCISE 09.5: LiSPSM's optimal n
+// Light Space Perspective Shadow Maps (Wimmer, Scherzer and Purgathofer 2004), lesson 09's third
+// technique, warp with a perspective whose centre sits n in front of the view body's near side.
+// n -> infinity is the uniform map, n = z0 the strongest (PSM-like) warp; the n that makes the
+// aliasing at the near and the far end equal is
+//   n_opt = (z0 + sqrt(z0 z1)) / sin(gamma)
+// with [z0, z1] the body's depth range along the view direction and gamma the angle between the
+// view direction and the light's. Return n_opt; return +infinity when sin(gamma) is 0 (light
+// along the view: no warp helps, LiSPSM falls back to the uniform map). z0 > 0 and z1 > z0.
+double lispsmOptimalN(double z0, double z1, double gamma);
+
 }  // namespace shadowlab::ex09

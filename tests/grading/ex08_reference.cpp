@@ -2,6 +2,7 @@
 #include "exercises.hpp"
 
 #include "algorithms/psm/conventions.hpp"
+#include "algorithms/psm/psm_camera.hpp"
 
 namespace shadowlab::ex08 {
 
@@ -13,6 +14,10 @@ glm::dvec4 postProjectiveLight(const glm::dmat4& viewProj, const glm::dvec4& lig
     case psm::PostLightKind::Direction: break;
   }
   return glm::dvec4(l.direction, 0.0);
+}
+
+double virtualCameraShift(const glm::dmat4& view, double zNear, const std::vector<glm::dvec3>& casterCorners) {
+  return psm::virtualCameraShift(view, zNear, casterCorners);
 }
 
 }  // namespace shadowlab::ex08

@@ -1,8 +1,10 @@
 // Grader for lesson 08 (ctest -L ex08). Hand-computed cases, then seeded random ones.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -86,5 +88,45 @@ TEST_CASE("ex08.1: random cameras and point lights: the point maps back and the 
     const glm::dvec4 back = glm::inverse(vp) * glm::dvec4(glm::dvec3(r), 1.0);
     const glm::dvec3 q = glm::dvec3(back) / back.w;
     CHECK(glm::length(q - p) <= 1e-6 * (1.0 + glm::length(p)));
+  }
+}
+
+TEST_CASE("ex08.2: the virtual camera's slide, by hand") {
+  // The hand camera looks down -z from the origin: view = identity, z_view = z.
+  using shadowlab::ex08::virtualCameraShift;
+  // Everything in front of the near plane (z <= -1): no slide.
+  CHECK(virtualCameraShift(glm::dmat4(1.0), 1.0, {{0, 0, -1}, {3, 2, -5}}) == doctest::Approx(0.0));
+  CHECK(virtualCameraShift(glm::dmat4(1.0), 1.0, {}) == doctest::Approx(0.0));
+  // A corner 4 behind the eye (z = +4) must end 1 in front of it: slide 5.
+  CHECK(virtualCameraShift(glm::dmat4(1.0), 1.0, {{0, 0, -3}, {1, 1, 4}}) == doctest::Approx(5.0));
+  // On the eye plane (z = 0) with near 0.5: 0.5.
+  CHECK(virtualCameraShift(glm::dmat4(1.0), 0.5, {{7, -2, 0}}) == doctest::Approx(0.5));
+  // A camera at (0, 0, 10) looking down -z: view translates by -10; the corner at z = 12 is 2
+  // behind it, so with near 1 the slide is 3.
+  glm::dmat4 view(1.0);
+  view[3][2] = -10.0;
+  CHECK(virtualCameraShift(view, 1.0, {{0, 0, 12}, {0, 0, 0}}) == doctest::Approx(3.0));
+}
+
+TEST_CASE("ex08.2: random cameras: after the slide every corner is at least zNear in front") {
+  std::mt19937_64 rng(shadowlab::test::seedFor("ex08.2 random"));
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 200; ++i) {
+    const double a = 3.0 * u(rng), zNear = 0.05 + 2.0 * (u(rng) + 1.0);
+    glm::dmat4 view(1.0);  // a rotation about y and a translation
+    view[0][0] = std::cos(a);
+    view[2][0] = std::sin(a);
+    view[0][2] = -std::sin(a);
+    view[2][2] = std::cos(a);
+    view[3] = glm::dvec4(10 * u(rng), 10 * u(rng), 10 * u(rng), 1.0);
+    std::vector<glm::dvec3> corners;
+    for (int k = 0; k < 1 + i % 7; ++k) corners.push_back({30 * u(rng), 30 * u(rng), 30 * u(rng)});
+    const double shift = shadowlab::ex08::virtualCameraShift(view, zNear, corners);
+    CHECK(shift >= 0.0);
+    double worst = -1e300;  // the largest z_view after sliding back by shift (z' = z - shift)
+    for (const auto& c : corners) worst = std::max(worst, (view * glm::dvec4(c, 1.0)).z - shift);
+    CHECK(worst <= -zNear + 1e-9);
+    // The slide is the least that does it: either nothing was needed, or one corner sits on the plane.
+    CHECK((shift == 0.0 || std::abs(worst + zNear) <= 1e-9 * (1.0 + shift)));
   }
 }

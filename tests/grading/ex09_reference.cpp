@@ -4,6 +4,7 @@
 #include "algorithms/psm/bias.hpp"
 #include "algorithms/psm/cube_faces.hpp"
 #include "algorithms/psm/enclosing_cone.hpp"
+#include "algorithms/psm/lispsm.hpp"
 #include "algorithms/psm/psm_camera.hpp"
 
 namespace shadowlab::ex09 {
@@ -34,5 +35,7 @@ glm::dvec3 texelSizeBias(const glm::dmat4& worldToClip, const glm::dvec3& p, con
   const glm::dmat4 K = psm::texelOffsetMatrix(worldToClip, glm::dvec2(mapSize));
   return psm::biasedWorldPoint(p, dirFromLight, a, b, psm::texelWorldSize(K, p));
 }
+
+double lispsmOptimalN(double z0, double z1, double gamma) { return psm::lispsmOptimalN(z0, z1, gamma); }
 
 }  // namespace shadowlab::ex09

@@ -192,3 +192,30 @@ TEST_CASE("ex09.4: random perspective maps: moves away from the light by a + b L
     CHECK(glm::dot(r - p, L) == doctest::Approx(glm::length(r - p)));
   }
 }
+
+TEST_CASE("ex09.5: LiSPSM's n_opt by hand") {
+  // z0 = 1, z1 = 100: z0 + sqrt(z0 z1) = 11; gamma = 90 degrees: sin = 1.
+  CHECK(lispsmOptimalN(1.0, 100.0, std::numbers::pi / 2.0) == doctest::Approx(11.0));
+  // gamma = 30 degrees: sin = 1/2, n doubles.
+  CHECK(lispsmOptimalN(1.0, 100.0, std::numbers::pi / 6.0) == doctest::Approx(22.0));
+  // z0 = 4, z1 = 9: 4 + 6 = 10; gamma = 150 degrees: sin = 1/2 as well.
+  CHECK(lispsmOptimalN(4.0, 9.0, 5.0 * std::numbers::pi / 6.0) == doctest::Approx(20.0));
+  // Light along the view (gamma = 0): no warp helps.
+  CHECK(std::isinf(lispsmOptimalN(1.0, 100.0, 0.0)));
+  CHECK(lispsmOptimalN(1.0, 100.0, 0.0) > 0.0);
+}
+
+TEST_CASE("ex09.5: random ranges: n_opt equalises the aliasing at both ends") {
+  // LiSPSM's aliasing along depth for an overhead light (Wimmer et al.): with z' = z - z0 + n,
+  // m(z) is proportional to z'^2 / z; n_opt (gamma = 90 degrees) makes m(z0) = m(z1).
+  std::mt19937_64 rng(shadowlab::test::seedFor("ex09.5 random"));
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 200; ++i) {
+    const double z0 = 0.01 + 10.0 * u(rng), z1 = z0 * (1.5 + 1000.0 * u(rng));
+    const double n = lispsmOptimalN(z0, z1, std::numbers::pi / 2.0);
+    const double m0 = n * n / z0, m1 = (z1 - z0 + n) * (z1 - z0 + n) / z1;
+    CHECK(m0 == doctest::Approx(m1).epsilon(1e-9));
+    const double gamma = 0.05 + 3.0 * u(rng);
+    CHECK(lispsmOptimalN(z0, z1, gamma) * std::abs(std::sin(gamma)) == doctest::Approx(n).epsilon(1e-12));
+  }
+}

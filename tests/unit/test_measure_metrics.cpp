@@ -45,6 +45,7 @@ ImageF technique() {
 TEST_CASE("measure.metrics: hard-shadow errors split into leaks and false shadows") {
   HardShadowErrors e = compareHard(technique(), reference());
   CHECK(e.facingPixels == 10);
+  CHECK(e.referenceShadowed == 5);  // columns 2-3 of rows 0-1, and (2,2)
   CHECK(e.misclassified == 3);
   CHECK(e.leaks == 2);
   CHECK(e.falseShadows == 1);

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <filesystem>
@@ -178,6 +179,51 @@ TEST_CASE("measure.report: CSV, JSON and HTML are written and agree") {
 
   CHECK_THROWS_WITH_AS(writeCsv("/nonexistent/dir/x.csv", rows), doctest::Contains("/nonexistent/dir/x.csv"),
                        std::runtime_error);
+}
+
+TEST_CASE("measure.report: figures along the frames, one line per technique, only for several frames") {
+  // Two techniques over four frames (a path or a light sweep); A's mean m doubles each frame.
+  std::vector<ReportRow> rows;
+  for (int f = 0; f < 4; ++f) {
+    ReportRow a = hardRow("city", "A", 1.0, 0.5, 2.0 + f), b = hardRow("city", "B", 2.0, 0.5, 1.0);
+    a.frame = b.frame = f;
+    a.aliasing.mean = std::pow(2.0, f);
+    a.hard.referenceShadowed = 400 + std::size_t(f);
+    rows.push_back(a);
+    rows.push_back(b);
+  }
+  const std::string html = toHtml(rows, "series");
+  std::vector<std::string> plots;
+  for (std::size_t at = 0; (at = html.find("<svg class=\"series\"", at)) != std::string::npos; ++at)
+    plots.push_back(html.substr(at, html.find("</svg>", at) - at));
+  REQUIRE(plots.size() == 3);  // aliasing m, misclassified %, shadow-pass ms
+  CHECK(plots[0].find("aliasing m (mean) (log)") != std::string::npos);
+  CHECK(plots[1].find("misclassified pixels (%)") != std::string::npos);
+  CHECK(plots[2].find("shadow passes (GPU ms)") != std::string::npos);
+  // A's aliasing line: four points, frames evenly apart, and (log scale) equal steps up for each doubling.
+  const std::size_t title = plots[0].find("<title>A</title>");
+  REQUIRE(title != std::string::npos);
+  const std::size_t points = plots[0].rfind("points=\"", title) + 8;
+  std::istringstream in(plots[0].substr(points, plots[0].find('"', points) - points));
+  std::vector<double> x, y;
+  double px, py;
+  char comma;
+  while (in >> px >> comma >> py) {
+    x.push_back(px);
+    y.push_back(py);
+  }
+  REQUIRE(x.size() == 4);
+  for (std::size_t i = 1; i < 4; ++i) {
+    CHECK(x[i] - x[i - 1] == doctest::Approx(x[1] - x[0]));
+    CHECK(y[i] < y[i - 1]);  // higher m is higher up
+    CHECK(y[i - 1] - y[i] == doctest::Approx(y[0] - y[1]));
+  }
+  CHECK(plots[0].find("<title>B</title>") != std::string::npos);
+  // The reference's shadowed pixels reach the CSV column and the JSON.
+  CHECK(nlohmann::json::parse(toJson(rows, "series"))["rows"][6]["hard"]["referenceShadowed"] == 403);
+  // One frame per technique: nothing to draw along the frames.
+  std::vector<ReportRow> single = {hardRow("box", "A", 1.0, 0.5, 5.0), hardRow("box", "B", 1.5, 0.5, 3.0)};
+  CHECK(toHtml(single, "one frame").find("class=\"series\"") == std::string::npos);
 }
 
 TEST_CASE("measure.report: the progress bar draws percentage and ETA on one line") {

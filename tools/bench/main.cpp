@@ -9,7 +9,8 @@
 //
 // Each configuration is a label and `--set` assignments ("label: name=value name=value"), or a
 // preset. GPU and CPU ms are the median over the repeats; the error figures come from the first
-// repeat (the render is deterministic). A progress bar shows on the terminal.
+// repeat (the render is deterministic). Repeats go round-robin over the configurations, so their
+// timings share the load of a busy machine. A progress bar shows on the terminal.
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -103,9 +104,6 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-// Runs a program with its output captured to `log`; returns the exit code.
-int run(const std::vector<std::string>& args, const std::string& log) { return runProcess(args, {log}); }
-
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
@@ -144,6 +142,89 @@ measure::AliasingStats aliasingFrom(const nlohmann::json& a) {
   return s;
 }
 
+// The figures of one measured run into its report row (the first repeat's: renders are deterministic).
+void readFigures(const nlohmann::json& j, measure::ReportRow& row) {
+  if (j.contains("hard")) {
+    const auto& h = j["hard"];
+    row.hasHard = true;
+    row.hard = countsFrom(h, "facing_pixels");
+    row.hard.referenceShadowed = h.value("reference_shadowed", std::size_t(0));
+    row.hard.edgePixels = h.at("edge_pixels");
+    row.hard.leakPct = h.at("leak_pct");
+    row.hard.falseShadowPct = h.at("false_shadow_pct");
+    row.hard.edgeTolerantPct = h.at("edge_tolerant_pct");
+  }
+  if (j.contains("soft")) {
+    row.hasSoft = true;
+    row.soft.pixels = j["soft"].at("pixels");
+    row.soft.rmse = j["soft"].at("rmse");
+    row.soft.maxAbs = j["soft"].at("max_abs");
+    row.soft.umbraOverPct = j["soft"].value("umbra_over_pct", 0.0);
+    row.soft.umbraUnderPct = j["soft"].value("umbra_under_pct", 0.0);
+    row.soft.noiseFloor = j["soft"].value("reference_noise_rmse", -1.0);
+  }
+  if (j.contains("aliasing")) {
+    row.hasAliasing = true;
+    row.aliasing = aliasingFrom(j["aliasing"]);
+  }
+  if (j.contains("edge_band")) {
+    const auto& b = j["edge_band"];
+    row.hasBand = true;
+    row.band = countsFrom(b, "pixels");
+    if (b.contains("aliasing")) row.bandAliasing = aliasingFrom(b["aliasing"]);
+  }
+  for (const auto& [name, value] : j.at("counters").items()) {
+    if (name == "shadow triangles") row.shadowTriangles = leadingNumber(value.get<std::string>());
+    if (name == "shadow texels") row.shadowTexels = leadingNumber(value.get<std::string>());
+  }
+}
+
+// One (scene, configuration, path sample): its row and the timings of its repeats.
+struct Job {
+  std::string scene, id;
+  const Config* config = nullptr;
+  double pathTime = -1;
+  measure::ReportRow row;
+  std::map<std::string, std::vector<double>> gpu;
+  std::vector<double> cpu;
+};
+
+// Runs one repeat of a job; false (with the lesson's output on stderr) when it failed.
+bool runRepeat(const Options& o, const fs::path& runs, Job& job, int r) {
+  std::vector<std::string> args = {o.lesson,    "--headless",
+                                   "--size",    o.size,
+                                   "--frames",  std::to_string(o.frames),
+                                   "--measure", (runs / (job.id + ".json")).string()};
+  if (r == 0) args.insert(args.end(), {"--screenshot", (runs / (job.id + ".png")).string()});
+  if (!job.scene.empty()) args.insert(args.end(), {"--set", "scene=" + job.scene});
+  args.insert(args.end(), job.config->args.begin(), job.config->args.end());
+  if (job.pathTime >= 0) args.insert(args.end(), {"--replay", o.path + "@" + std::to_string(job.pathTime)});
+  const std::string log = (runs / (job.id + ".log")).string();
+  if (runProcess(args, {log}) != 0) {
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::cerr << "\nshadowlab_bench: " << job.row.scene << " / " << job.config->label << " failed:\n" << text.str();
+    return false;
+  }
+  std::ifstream in(runs / (job.id + ".json"));
+  const auto j = nlohmann::json::parse(in);
+  double cpuTotal = 0;
+  for (const auto& [pass, ms] : j.at("gpu_ms").items()) job.gpu[pass].push_back(ms.get<double>());
+  for (const auto& [pass, ms] : j.at("cpu_ms").items()) cpuTotal += ms.get<double>();
+  job.cpu.push_back(cpuTotal);
+  if (r == 0) {
+    std::string params;
+    for (std::size_t a = 1; a < job.config->args.size(); a += 2)
+      params += (params.empty() ? "" : " ") + job.config->args[a];
+    job.row.parameters = params + (job.pathTime >= 0 ? " path@" + std::to_string(job.pathTime) : "");
+    readFigures(j, job.row);
+    job.row.imageThumbnail = "runs/" + job.id + ".png";
+    job.row.errorThumbnail = "runs/" + job.id + "_error.png";
+  }
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -160,94 +241,34 @@ int main(int argc, char** argv) {
   }
   const fs::path runs = fs::path(o.out) / "runs";
   fs::create_directories(runs);
-
-  const std::size_t total = o.configs.size() * o.scenes.size() * pathTimes.size() * std::size_t(o.repeat);
-  measure::ProgressBar progress(total, "benchmark");
-  std::vector<measure::ReportRow> rows;
-  int failures = 0, index = 0;
+  std::vector<Job> jobs;
   for (const auto& scene : o.scenes)
     for (const auto& config : o.configs)
       for (std::size_t k = 0; k < pathTimes.size(); ++k) {
-        measure::ReportRow row;
-        row.scene = scene.empty() ? "default" : scene;
-        row.technique = config.label;
-        row.frame = int(k);
-        std::map<std::string, std::vector<double>> gpu;
-        std::vector<double> cpu;
-        const std::string id = "run" + std::to_string(index++);
-        for (int r = 0; r < o.repeat; ++r) {
-          std::vector<std::string> args = {o.lesson,    "--headless",
-                                           "--size",    o.size,
-                                           "--frames",  std::to_string(o.frames),
-                                           "--measure", (runs / (id + ".json")).string()};
-          if (r == 0) args.insert(args.end(), {"--screenshot", (runs / (id + ".png")).string()});
-          if (!scene.empty()) args.insert(args.end(), {"--set", "scene=" + scene});
-          args.insert(args.end(), config.args.begin(), config.args.end());
-          if (pathTimes[k] >= 0) args.insert(args.end(), {"--replay", o.path + "@" + std::to_string(pathTimes[k])});
-          const std::string log = (runs / (id + ".log")).string();
-          if (run(args, log) != 0) {
-            std::ifstream in(log);
-            std::stringstream text;
-            text << in.rdbuf();
-            std::cerr << "\nshadowlab_bench: " << row.scene << " / " << config.label << " failed:\n" << text.str();
-            ++failures;
-            progress.advance();
-            continue;
-          }
-          std::ifstream in(runs / (id + ".json"));
-          const auto j = nlohmann::json::parse(in);
-          double cpuTotal = 0;
-          for (const auto& [pass, ms] : j.at("gpu_ms").items()) gpu[pass].push_back(ms.get<double>());
-          for (const auto& [pass, ms] : j.at("cpu_ms").items()) cpuTotal += ms.get<double>();
-          cpu.push_back(cpuTotal);
-          if (r == 0) {
-            std::string params;
-            for (std::size_t a = 1; a < config.args.size(); a += 2)
-              params += (params.empty() ? "" : " ") + config.args[a];
-            row.parameters = params + (pathTimes[k] >= 0 ? " path@" + std::to_string(pathTimes[k]) : "");
-            if (j.contains("hard")) {
-              const auto& h = j["hard"];
-              row.hasHard = true;
-              row.hard = countsFrom(h, "facing_pixels");
-              row.hard.edgePixels = h.at("edge_pixels");
-              row.hard.leakPct = h.at("leak_pct");
-              row.hard.falseShadowPct = h.at("false_shadow_pct");
-              row.hard.edgeTolerantPct = h.at("edge_tolerant_pct");
-            }
-            if (j.contains("soft")) {
-              row.hasSoft = true;
-              row.soft.pixels = j["soft"].at("pixels");
-              row.soft.rmse = j["soft"].at("rmse");
-              row.soft.maxAbs = j["soft"].at("max_abs");
-              row.soft.umbraOverPct = j["soft"].value("umbra_over_pct", 0.0);
-              row.soft.umbraUnderPct = j["soft"].value("umbra_under_pct", 0.0);
-              row.soft.noiseFloor = j["soft"].value("reference_noise_rmse", -1.0);
-            }
-            if (j.contains("aliasing")) {
-              row.hasAliasing = true;
-              row.aliasing = aliasingFrom(j["aliasing"]);
-            }
-            if (j.contains("edge_band")) {
-              const auto& b = j["edge_band"];
-              row.hasBand = true;
-              row.band = countsFrom(b, "pixels");
-              if (b.contains("aliasing")) row.bandAliasing = aliasingFrom(b["aliasing"]);
-            }
-            for (const auto& [name, value] : j.at("counters").items()) {
-              if (name == "shadow triangles") row.shadowTriangles = leadingNumber(value.get<std::string>());
-              if (name == "shadow texels") row.shadowTexels = leadingNumber(value.get<std::string>());
-            }
-            row.imageThumbnail = "runs/" + id + ".png";
-            row.errorThumbnail = "runs/" + id + "_error.png";
-          }
-          progress.advance();
-        }
-        if (cpu.empty()) continue;
-        for (const auto& [pass, samples] : gpu) row.gpuMs[pass] = median(samples);
-        row.cpuMs = median(cpu);
-        rows.push_back(row);
+        Job job{scene, "run" + std::to_string(jobs.size()), &config, pathTimes[k]};
+        job.row.scene = scene.empty() ? "default" : scene;
+        job.row.technique = config.label;
+        job.row.frame = int(k);
+        jobs.push_back(std::move(job));
       }
+  // Repeats go round-robin over the jobs, so that every configuration's timings see the same mix
+  // of the machine's load (ratios between configurations are what the timings are good for).
+  measure::ProgressBar progress(jobs.size() * std::size_t(o.repeat), "benchmark");
+  int failures = 0;
+  for (int r = 0; r < o.repeat; ++r)
+    for (Job& job : jobs) {
+      if (r > 0 && job.cpu.empty()) continue;  // its first run failed already
+      failures += !runRepeat(o, runs, job, r);
+      progress.advance();
+    }
   progress.finish();
+  std::vector<measure::ReportRow> rows;
+  for (Job& job : jobs) {
+    if (job.cpu.empty()) continue;
+    for (const auto& [pass, samples] : job.gpu) job.row.gpuMs[pass] = median(samples);
+    job.row.cpuMs = median(job.cpu);
+    rows.push_back(job.row);
+  }
   const std::string html = measure::writeReport(o.out, "report", rows, o.title);
   std::cout << "shadowlab_bench: " << rows.size() << " row(s), " << failures
             << " failed run(s): " << fs::absolute(html).string() << '\n';

@@ -23,6 +23,14 @@ glm::dmat4 texelOffsetMatrix(const glm::dmat4& M, const glm::dvec2& size) {
   return inv * cMinusI * M;
 }
 
+TexelStep texelStepFactors(const glm::dmat4& M, const glm::dvec2& size) {
+  texelOffsetMatrix(M, size);  // the same checks (finite, invertible, at least one texel)
+  TexelStep t;
+  t.u = glm::inverse(M) * glm::dvec4(2.0 / size.x, 2.0 / size.y, 0.0, 0.0);
+  t.r = glm::dvec4(M[0][3], M[1][3], M[2][3], M[3][3]);
+  return t;
+}
+
 double texelWorldSize(const glm::dmat4& K, const glm::dvec3& p) {
   const glm::dvec4 d = K * glm::dvec4(p, 1.0);
   // w <= 0: the one-texel step crossed the camera's plane at infinity (a texel at the far end of

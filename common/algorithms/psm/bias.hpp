@@ -19,6 +19,16 @@ namespace shadowlab::psm {
 // map size below 1.
 glm::dmat4 texelOffsetMatrix(const glm::dmat4& worldToClip, const glm::dvec2& mapSize);
 
+// K is rank one: (C - I) M P = (2/Sx, 2/Sy, 0, 0) w_clip(P), so K (P, 1) = u (r . (P, 1)) with
+// u = M^-1 (2/Sx, 2/Sy, 0, 0) and r = M's last row. The depth pass's vertex shader uses these two
+// vectors (shaders/common/depth_psm.vert): one dot product instead of a matrix, and no product of
+// M^-1 and M rounded in float.
+struct TexelStep {
+  glm::dvec4 u{0.0};  // homogeneous world offset per unit of clip w
+  glm::dvec4 r{0.0};  // M's last row: clip w = dot(r, (P, 1))
+};
+TexelStep texelStepFactors(const glm::dmat4& worldToClip, const glm::dvec2& mapSize);
+
 // |P' - P| with P' = (P + d.xyz) / (1 + d.w), d = K (P, 1): the world size of one texel at P
 // (+inf when 1 + d.w <= 0: the step crossed the camera's plane at infinity).
 double texelWorldSize(const glm::dmat4& texelOffset, const glm::dvec3& p);

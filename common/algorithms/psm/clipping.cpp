@@ -79,27 +79,24 @@ std::size_t clipBoxToFrustum(const Aabb& box, const Frustum& frustum, std::vecto
   validateBox(box);
   const glm::dvec3 lo(box.min), hi(box.max);
   const std::size_t before = out.size();
-  // Quick reject: every box corner outside one frustum plane.
-  for (const Plane& p : frustum.planes) {
+  // Per plane: every corner outside (reject), every corner inside (the plane cannot cut the box),
+  // or it straddles. Only straddled planes cut: most boxes are wholly inside (their 8 corners),
+  // and a box on the frustum's edge usually straddles one or two planes.
+  int straddled[6], count = 0;
+  for (int k = 0; k < 6; ++k) {
+    const Plane& p = frustum.planes[std::size_t(k)];
     const glm::dvec3 far(p.normal.x >= 0 ? hi.x : lo.x, p.normal.y >= 0 ? hi.y : lo.y, p.normal.z >= 0 ? hi.z : lo.z);
     if (p.distance(far) < 0.0) return 0;
-  }
-  // Quick accept: a box wholly inside keeps its 8 corners (most receivers, most frames).
-  bool inside = true;
-  for (const Plane& p : frustum.planes) {
     const glm::dvec3 near(p.normal.x >= 0 ? lo.x : hi.x, p.normal.y >= 0 ? lo.y : hi.y, p.normal.z >= 0 ? lo.z : hi.z);
-    if (p.distance(near) < 0.0) {
-      inside = false;
-      break;
-    }
+    if (p.distance(near) < 0.0) straddled[count++] = k;
   }
-  if (inside) {
+  if (count == 0) {
     for (int i = 0; i < 8; ++i) out.emplace_back((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
     return 8;
   }
-  // Vertices of B ∩ F lie on a face of B or a face of F: clip B's faces by F's planes, and
-  // F's faces by B's planes (a vertex on an F face that is interior to B's faces, e.g. a
-  // frustum corner inside the box, comes from the second pass).
+  // Vertices of B ∩ F lie on a face of B or a face of F: clip B's faces by the straddled planes of
+  // F, and the straddled faces of F by B's planes (a vertex on an F face that is interior to B's
+  // faces, e.g. a frustum corner inside the box, comes from the second pass).
   glm::dvec3 bufA[kMaxPolygon], bufB[kMaxPolygon];
   std::array<std::array<glm::dvec3, 4>, 6> faces;
   boxFaces(lo, hi, faces);
@@ -108,20 +105,20 @@ std::size_t clipBoxToFrustum(const Aabb& box, const Frustum& frustum, std::vecto
     for (int k = 0; k < 4; ++k) bufA[k] = face[k];
     glm::dvec3* cur = bufA;
     glm::dvec3* nxt = bufB;
-    for (const Plane& p : frustum.planes) {
-      n = clipPolygon(cur, n, p, nxt);
+    for (int k = 0; k < count && n > 0; ++k) {
+      n = clipPolygon(cur, n, frustum.planes[std::size_t(straddled[k])], nxt);
       std::swap(cur, nxt);
-      if (n == 0) break;
     }
     out.insert(out.end(), cur, cur + n);
   }
   const Plane boxPlanes[6] = {{{1, 0, 0}, -lo.x}, {{-1, 0, 0}, hi.x}, {{0, 1, 0}, -lo.y},
                               {{0, -1, 0}, hi.y}, {{0, 0, 1}, -lo.z}, {{0, 0, -1}, hi.z}};
+  // Frustum face of each plane (left, right, bottom, top, near, far), by corner index.
   static constexpr int fidx[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
                                      {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
-  for (const auto& fi : fidx) {
+  for (int k = 0; k < count; ++k) {
     int n = 4;
-    for (int k = 0; k < 4; ++k) bufA[k] = frustum.corners[fi[k]];
+    for (int c = 0; c < 4; ++c) bufA[c] = frustum.corners[std::size_t(fidx[straddled[k]][c])];
     glm::dvec3* cur = bufA;
     glm::dvec3* nxt = bufB;
     for (const Plane& p : boxPlanes) {

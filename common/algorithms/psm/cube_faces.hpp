@@ -24,11 +24,15 @@ glm::dvec3 cubeFaceNormal(int face);  // outward; throws std::invalid_argument o
 // counts as visible: no ray from the light leaves the cube through it.
 bool cubeFaceVisible(int face, const PostProjectiveLight& light);
 unsigned hiddenFaceMask(const PostProjectiveLight& light);  // bit f set: face f carries a map
+// The same with a replaceable visibility test (a student's, impl=student); empty: cubeFaceVisible.
+unsigned hiddenFaceMask(const PostProjectiveLight& light, const PsmSteps& steps);
 int hiddenFaceCount(const PostProjectiveLight& light);
 
 // The hidden face through which the ray from the light through `point` leaves the cube (for a
 // direction: the ray through the point travelling along -direction); -1 if the point is the light.
 int cubeFaceOf(const glm::dvec3& point, const PostProjectiveLight& light);
+// The same among the faces of `hiddenMask` (as hiddenFaceMask gives it).
+int cubeFaceOf(const glm::dvec3& point, const PostProjectiveLight& light, unsigned hiddenMask);
 
 // Seeds 000 §4.2: lookup vector = point - light position; a Direction light gives -direction.
 glm::dvec3 cubeLookupVector(const glm::dvec3& point, const PostProjectiveLight& light);
@@ -44,10 +48,10 @@ struct CubeFaceSet {
   std::array<CubeFaceCamera, 6> faces{};
 };
 
-// One camera per hidden face. The far plane is the face itself; the near plane (InFront) is
-// nearFraction of the closest distance of the cube region the face serves, or of the closest
-// receiver when the light is inside the cube; Behind uses fix 1's inverse projection with a =
-// that closest distance. postReceivers may be empty.
+// One camera per hidden face (options.steps.faceVisible decides which are hidden). The far plane is the face itself;
+// the near plane (InFront) is nearFraction of the closest distance of the cube region the face serves, or of the
+// closest receiver when the light is inside the cube; Behind uses fix 1's inverse projection with a = that closest
+// distance. postReceivers may be empty.
 CubeFaceSet cubeFaceCameras(const PostProjectiveLight& light, const glm::dmat4& cameraViewProj,
                             std::span<const glm::dvec3> postReceivers, const PsmOptions& options = {});
 

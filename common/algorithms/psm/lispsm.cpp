@@ -19,7 +19,8 @@ double lispsmOptimalN(double zn, double zf, double gamma) {
 }
 
 LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirection, std::span<const glm::dvec3> pts,
-                       DepthRange range, double nOverride) {
+                       DepthRange range, double nOverride,
+                       const std::function<double(double, double, double)>& optimalN) {
   requireFinite(lightDirection, "lightDirection");
   if (!(glm::length(lightDirection) > 0.0)) throw std::invalid_argument("lightDirection is the zero vector");
   if (pts.empty()) throw std::invalid_argument("LiSPSM needs at least one world point");
@@ -58,7 +59,9 @@ LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirec
   }
   z0 = std::max(z0, camera.zNear);
   z1 = std::max(z1, z0 * (1.0 + 1e-9));
-  const double n = nOverride > 0.0 ? nOverride : lispsmOptimalN(z0, z1, out.gamma);
+  const double n = nOverride > 0.0 ? nOverride
+                   : optimalN      ? optimalN(z0, z1, out.gamma)
+                                   : lispsmOptimalN(z0, z1, out.gamma);
   const glm::dmat4 remap = depthRangeRemap(range);
   // Swizzle after the perspective: map x = x, map y = frame z, depth grows along the light (-y).
   glm::dmat4 swz(0.0);
@@ -73,7 +76,7 @@ LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirec
     frame[c][2] = zAxis[c];
   }
   const glm::dvec3 pad = glm::max(hi - lo, glm::dvec3(1e-12)) * 1e-7 + 1e-12;
-  if (degenerate || !std::isfinite(n) || n > 1e6 * depth) {
+  if (degenerate || !(n > 0.0) || !std::isfinite(n) || n > 1e6 * depth) {
     // Uniform fallback: orthographic box over the body in the frame.
     glm::dmat4 o(1.0);
     o[0][0] = 2.0 / (hi.x - lo.x + 2 * pad.x);

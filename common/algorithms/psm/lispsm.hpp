@@ -5,6 +5,7 @@
 // and an orthographic map along the light follows. Its free parameter is n, the distance from the
 // perspective's centre to the body's near side: n_opt = (zn + sqrt(zn zf)) / sin(gamma), gamma the
 // angle between view and light directions. n -> inf gives the uniform map, n = zn PSM-like.
+#include <functional>
 #include <span>
 
 #include <glm/glm.hpp>
@@ -25,9 +26,10 @@ struct LispsmCamera {
 };
 
 // worldPoints: the receiver body (e.g. receiverKeyPoints). lightDirection: where light travels.
-// nOverride > 0 replaces n_opt (for the comparison lesson's slider).
+// nOverride > 0 replaces n_opt (for the comparison lesson's slider). optimalN replaces
+// lispsmOptimalN(z0, z1, gamma) (a student's, impl=student); empty: the reference.
 LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirection,
                        std::span<const glm::dvec3> worldPoints, DepthRange range = DepthRange::MinusOneToOne,
-                       double nOverride = 0.0);
+                       double nOverride = 0.0, const std::function<double(double, double, double)>& optimalN = {});
 
 }  // namespace shadowlab::psm

@@ -69,10 +69,73 @@ glm::dmat4 reversedProjection(double fovY, double aspect, double f, DepthRange r
 
 namespace {
 
-PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts, const glm::dmat4& cameraViewProj,
-               const PsmOptions& opt, std::vector<glm::dvec3>& scratch, bool originalBehind) {
+void checkOptions(const PsmOptions& opt) {
   if (!(opt.nearFraction > 0.0 && opt.nearFraction < 1.0)) fail("nearFraction", opt.nearFraction);
   if (!(opt.maxHalfAngle > 0.0 && opt.maxHalfAngle < std::numbers::pi / 2.0)) fail("maxHalfAngle", opt.maxHalfAngle);
+}
+
+// Parallel rays in post-projective space (the light is at infinity toward +direction): an
+// orthographic box around the points, reaching toward the light over the whole unit cube.
+void fitOrthographic(const PostProjectiveLight& light, std::span<const glm::dvec3> pts, const PsmOptions& opt,
+                     LightCamera& cam) {
+  cam.kind = LightProjection::Orthographic;
+  cam.axis = -light.direction;
+  glm::dvec3 centre(0.0);
+  for (const auto& p : pts) centre += p;
+  centre /= static_cast<double>(pts.size());
+  cam.eye = centre - cam.axis * 4.0;  // outside the unit cube (radius sqrt 3)
+  cam.view = lookAlong(cam.eye, cam.axis);
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const auto& p : pts) {
+    const glm::dvec3 v(cam.view * glm::dvec4(p, 1.0));
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
+  // Casters toward the light: include the whole unit cube on that side.
+  double cubeFar = 0.0;  // largest view z (closest to the light) over the cube's corners
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 c((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0);
+    cubeFar = std::max(cubeFar, (cam.view * glm::dvec4(c, 1.0)).z);
+  }
+  const glm::dvec3 ext = glm::max(hi - lo, glm::dvec3(1e-12));
+  const glm::dvec3 pad = ext * kAngleMargin + 1e-15;
+  const double n = -std::max(hi.z, cubeFar) - pad.z;
+  const double f = -lo.z + pad.z;
+  cam.zNear = n;
+  cam.zFar = f;
+  cam.projection =
+      depthRangeRemap(opt.depthRange) * orthoGL(lo.x - pad.x, hi.x + pad.x, lo.y - pad.y, hi.y + pad.y, n, f);
+}
+
+// The projection along the cone's axis, by where the light is: in front (perspective), behind
+// (fix 1's inverse projection, or the original's reversed one after its slide).
+void setConeProjection(const PostProjectiveLight& light, double zMin, double zMax, const PsmOptions& opt,
+                       LightCamera& cam) {
+  const double fov = 2.0 * cam.halfAngle;
+  if (light.kind == PostLightKind::InFront) {
+    cam.kind = LightProjection::Perspective;
+    cam.zNear = opt.nearFraction * zMin;
+    cam.zFar = zMax * (1.0 + kDepthMargin) + std::numeric_limits<double>::min();
+    cam.projection = depthRangeRemap(opt.depthRange) * perspectiveGL(fov, 1.0, cam.zNear, cam.zFar);
+  } else if (opt.behind == BehindProjection::Inverse) {
+    cam.kind = LightProjection::Inverse;
+    const double a = zMin * (1.0 - kDepthMargin);
+    cam.zNear = -a;
+    cam.zFar = a;
+    cam.projection = opt.steps.inverseProjection
+                         ? depthRangeRemap(opt.depthRange) * opt.steps.inverseProjection(fov, 1.0, a)
+                         : inverseProjection(fov, 1.0, a, opt.depthRange);
+  } else {
+    cam.kind = LightProjection::ReversedPerspective;
+    cam.zNear = std::numeric_limits<double>::infinity();
+    cam.zFar = zMin * (1.0 - kDepthMargin);
+    cam.projection = reversedProjection(fov, 1.0, cam.zFar, opt.depthRange);
+  }
+}
+
+PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts, const glm::dmat4& cameraViewProj,
+               const PsmOptions& opt, std::vector<glm::dvec3>& scratch) {
+  checkOptions(opt);
   PsmFit fit;
   fit.light = light;
   if (pts.empty()) {
@@ -81,39 +144,11 @@ PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts
   }
   LightCamera& cam = fit.camera;
   if (light.kind == PostLightKind::Direction) {
-    // Parallel rays in post-projective space: the light is at infinity toward +direction.
-    cam.kind = LightProjection::Orthographic;
-    cam.axis = -light.direction;
-    glm::dvec3 centre(0.0);
-    for (const auto& p : pts) centre += p;
-    centre /= static_cast<double>(pts.size());
-    cam.eye = centre - cam.axis * 4.0;  // outside the unit cube (radius sqrt 3)
-    cam.view = lookAlong(cam.eye, cam.axis);
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const auto& p : pts) {
-      const glm::dvec3 v(cam.view * glm::dvec4(p, 1.0));
-      lo = glm::min(lo, v);
-      hi = glm::max(hi, v);
-    }
-    // Casters toward the light: include the whole unit cube on that side.
-    double cubeFar = 0.0;  // largest view z (closest to the light) over the cube's corners
-    for (int i = 0; i < 8; ++i) {
-      const glm::dvec3 c((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0);
-      cubeFar = std::max(cubeFar, (cam.view * glm::dvec4(c, 1.0)).z);
-    }
-    const glm::dvec3 ext = glm::max(hi - lo, glm::dvec3(1e-12));
-    const glm::dvec3 pad = ext * kAngleMargin + 1e-15;
-    const double n = -std::max(hi.z, cubeFar) - pad.z;
-    const double f = -lo.z + pad.z;
-    cam.zNear = n;
-    cam.zFar = f;
-    cam.projection =
-        depthRangeRemap(opt.depthRange) * orthoGL(lo.x - pad.x, hi.x + pad.x, lo.y - pad.y, hi.y + pad.y, n, f);
+    fitOrthographic(light, pts, opt, cam);
     finish(cam, cameraViewProj);
     fit.status = FitStatus::Ok;
     return fit;
   }
-
   // Finite light (in front or behind): smallest cone from the light over the key points.
   scratch.resize(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i) scratch[i] = pts[i] - light.position;
@@ -122,39 +157,29 @@ PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts
       fit.status = FitStatus::ConeTooWide;
       return fit;
     }
-  fit.cone = smallestEnclosingCone(scratch);
-  if (!fit.cone.valid || fit.cone.halfAngle > opt.maxHalfAngle) {
+  fit.cone = opt.steps.cone ? opt.steps.cone(scratch) : smallestEnclosingCone(scratch);
+  if (!fit.cone.valid || !(fit.cone.halfAngle <= opt.maxHalfAngle || opt.capWideCones)) {
     fit.status = FitStatus::ConeTooWide;
     return fit;
   }
   cam.eye = light.position;
   cam.axis = fit.cone.axis;
-  cam.halfAngle = fit.cone.halfAngle * (1.0 + kAngleMargin) + 1e-12;
+  cam.halfAngle = std::min(fit.cone.halfAngle, opt.maxHalfAngle) * (1.0 + kAngleMargin) + 1e-12;
   cam.view = lookAlong(cam.eye, cam.axis);
+  // Depth range over the points the map holds (all of them, unless a capped cone left some out).
+  const double cosHalf = std::cos(cam.halfAngle);
   double zMin = std::numeric_limits<double>::max(), zMax = 0.0;
   for (const auto& p : pts) {
     const double z = glm::dot(p - cam.eye, cam.axis);
+    if (fit.cone.halfAngle > opt.maxHalfAngle && z < glm::length(p - cam.eye) * cosHalf) continue;
     zMin = std::min(zMin, z);
     zMax = std::max(zMax, z);
   }
-  const double fov = 2.0 * cam.halfAngle;
-  if (light.kind == PostLightKind::InFront) {
-    cam.kind = LightProjection::Perspective;
-    cam.zNear = opt.nearFraction * zMin;
-    cam.zFar = zMax * (1.0 + kDepthMargin) + std::numeric_limits<double>::min();
-    cam.projection = depthRangeRemap(opt.depthRange) * perspectiveGL(fov, 1.0, cam.zNear, cam.zFar);
-  } else if (!originalBehind) {
-    cam.kind = LightProjection::Inverse;
-    const double a = zMin * (1.0 - kDepthMargin);
-    cam.zNear = -a;
-    cam.zFar = a;
-    cam.projection = inverseProjection(fov, 1.0, a, opt.depthRange);
-  } else {
-    cam.kind = LightProjection::ReversedPerspective;
-    cam.zNear = std::numeric_limits<double>::infinity();
-    cam.zFar = zMin * (1.0 - kDepthMargin);
-    cam.projection = reversedProjection(fov, 1.0, cam.zFar, opt.depthRange);
+  if (!(zMin > 0.0) || zMin > zMax) {  // a capped cone holding no point: nothing to aim at
+    fit.status = FitStatus::ConeTooWide;
+    return fit;
   }
+  setConeProjection(light, zMin, zMax, opt, cam);
   finish(cam, cameraViewProj);
   fit.status = FitStatus::Ok;
   return fit;
@@ -164,7 +189,7 @@ PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts
 
 PsmFit fitLightCamera(const PostProjectiveLight& light, std::span<const glm::dvec3> postPoints,
                       const glm::dmat4& cameraViewProj, const PsmOptions& options, std::vector<glm::dvec3>& scratch) {
-  return fitImpl(light, postPoints, cameraViewProj, options, scratch, false);
+  return fitImpl(light, postPoints, cameraViewProj, options, scratch);
 }
 
 const PsmFit& PsmFitter::fit(const CameraFrustum& camera, const glm::dvec4& light, std::span<const Aabb> receivers,
@@ -173,19 +198,27 @@ const PsmFit& PsmFitter::fit(const CameraFrustum& camera, const glm::dvec4& ligh
   const Frustum frustum = frustumFromViewProj(camera.viewProj, camera.invViewProj);
   receiverKeyPoints(receivers, frustum, world_);
   toPostProjectivePoints(camera.viewProj, world_, post_);
-  fit_ = fitImpl(pl, post_, camera.viewProj, options, scratch_, false);
+  fit_ = fitImpl(pl, post_, camera.viewProj, options, scratch_);
   return fit_;
+}
+
+double virtualCameraShift(const glm::dmat4& view, double zNear, std::span<const glm::dvec3> corners) {
+  double shift = 0.0;
+  for (const glm::dvec3& c : corners) {
+    const double z = (view * glm::dvec4(c, 1.0)).z;  // in front: z <= -zNear
+    shift = std::max(shift, z + zNear);
+  }
+  return shift;
 }
 
 double virtualCameraShift(const CameraFrustum& camera, std::span<const Aabb> casters) {
   double shift = 0.0;
   for (const Aabb& b : casters) {
     validateBox(b);
-    for (int i = 0; i < 8; ++i) {
-      const glm::dvec3 c((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
-      const double z = (camera.view * glm::dvec4(c, 1.0)).z;  // in front: z <= -zNear
-      shift = std::max(shift, z + camera.zNear);
-    }
+    glm::dvec3 corners[8];
+    for (int i = 0; i < 8; ++i)
+      corners[i] = glm::dvec3((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+    shift = std::max(shift, virtualCameraShift(camera.view, camera.zNear, corners));
   }
   return shift;
 }
@@ -207,7 +240,9 @@ OriginalPsm fitOriginalPsm(const CameraFrustum& camera, const glm::dvec4& light,
   receiverKeyPoints(receivers, frustum, worldScratch);
   toPostProjectivePoints(out.virtualCamera.viewProj, worldScratch, postScratch);
   const PostProjectiveLight virt = toPostProjective(out.virtualCamera.viewProj, light);
-  out.fit = fitImpl(virt, postScratch, out.virtualCamera.viewProj, options, dirScratch, true);
+  PsmOptions reversed = options;
+  reversed.behind = BehindProjection::Reversed;
+  out.fit = fitImpl(virt, postScratch, out.virtualCamera.viewProj, reversed, dirScratch);
   return out;
 }
 

@@ -6,6 +6,7 @@
 // - fix 2 (seeds 000 §4.1): the light camera aimed along the smallest cone from the light holding
 //   the receivers' key points (vertices of the union of B_i ∩ F), with near/far from them.
 // Matrices are dmat4 in the conventions of psm/conventions.hpp; worldToClip is the M of §5.
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -37,6 +38,17 @@ struct LightCamera {
   double zNear = 0.0, zFar = 0.0;   // distances along axis (Inverse: -a and +a)
 };
 
+// The steps a lesson may replace with a student's version (impl=student); empty: the reference.
+struct PsmSteps {
+  std::function<Cone(std::span<glm::dvec3>)> cone;  // fix 2: smallestEnclosingCone
+  // fix 1: inverseProjection(fovY, aspect, a) in [-1,1] depth (the depth range is applied after)
+  std::function<glm::dmat4(double, double, double)> inverseProjection;
+  std::function<bool(int, const PostProjectiveLight&)> faceVisible;  // fix 3: cubeFaceVisible
+};
+
+// What a light behind the camera gets (after the original PSM's slide, or with fix 1).
+enum class BehindProjection { Inverse, Reversed };
+
 struct PsmOptions {
   DepthRange depthRange = DepthRange::MinusOneToOne;
   // Wider cones spread the map too thin (seeds 000 §4: near 180 degrees the quality collapses);
@@ -45,6 +57,11 @@ struct PsmOptions {
   // InFront: near = nearFraction * (nearest receiver distance), leaving room for casters between
   // the light and the receivers (render casters with depth clamp to keep the ones beyond it).
   double nearFraction = 0.5;
+  // A single map that may not switch to cube faces (the original PSM): a cone wider than
+  // maxHalfAngle is narrowed to it instead of failing, and the receivers outside it go unshadowed.
+  bool capWideCones = false;
+  BehindProjection behind = BehindProjection::Inverse;
+  PsmSteps steps;
 };
 
 enum class FitStatus { Ok, NoReceivers, ConeTooWide };
@@ -66,8 +83,9 @@ glm::dmat4 inverseProjection(double fovY, double aspect, double a, DepthRange ra
 // Original PSM with the light behind: Z >= f maps to depth from +1 (Z = f) down to -1 (Z -> inf).
 glm::dmat4 reversedProjection(double fovY, double aspect, double f, DepthRange range = DepthRange::MinusOneToOne);
 
-// Fits the light camera to post-projective key points (fix 2 + fix 1). `scratch` is reused for
-// the cone's directions. cameraViewProj only fills worldToClip.
+// Fits the light camera to post-projective key points (fix 2 + fix 1, or the original's reversed
+// projection with options.behind). `scratch` is reused for the cone's directions. cameraViewProj
+// only fills worldToClip.
 PsmFit fitLightCamera(const PostProjectiveLight& light, std::span<const glm::dvec3> postPoints,
                       const glm::dmat4& cameraViewProj, const PsmOptions& options, std::vector<glm::dvec3>& scratch);
 
@@ -90,6 +108,8 @@ class PsmFitter {
 // How far to slide the camera back along its view axis so every caster corner is in front of the
 // camera plane by at least zNear: the virtual camera of Stamminger & Drettakis. 0 when already so.
 double virtualCameraShift(const CameraFrustum& camera, std::span<const Aabb> casters);
+// The same over caster corners (world): max(0, max (view * corner).z + zNear).
+double virtualCameraShift(const glm::dmat4& view, double zNear, std::span<const glm::dvec3> corners);
 
 struct OriginalPsm {
   double shift = 0.0;           // 0 unless the light is behind the real camera

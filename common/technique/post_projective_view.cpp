@@ -1,0 +1,183 @@
+#include "technique/post_projective_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "algorithms/psm/post_shapes.hpp"
+#include "app/measurement.hpp"
+#include "gl/scene_draw.hpp"
+#include "technique/scene_cache.hpp"
+
+namespace shadowlab::tech {
+namespace {
+
+const glm::vec4 kCube{0.95f, 0.95f, 0.95f, 1.0f};
+const glm::vec4 kInfinity{0.55f, 0.55f, 0.6f, 1.0f};
+const glm::vec4 kEyeRays{0.9f, 0.8f, 0.35f, 0.6f};
+const psm::PostProjectivePalette kPalette;
+
+// The plane at infinity of a camera's post-projective space: z = (f + n) / (f - n), where every
+// direction in front of the camera lands (a directional light, the far ends of view rays).
+double planeAtInfinity(const glm::dmat4& viewProj) {
+  const glm::dvec3 forward = -glm::dvec3(viewProj[0][3], viewProj[1][3], viewProj[2][3]);  // clip w grows along it
+  const glm::dvec4 h = viewProj * glm::dvec4(forward, 0.0);
+  return h.z / h.w;
+}
+
+// The frame of reference every post-projective view shares: the unit cube, the eye's rays arriving
+// parallel from z = -infinity, the plane at infinity, and the light where it lands.
+void addFrame(psm::PostProjectiveShapes& s, const glm::dmat4& camera, const glm::dvec4& worldLight) {
+  s.unitCube(kCube);
+  for (int i = 0; i < 4; ++i) {
+    const glm::dvec3 corner((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, -1.0);
+    s.line(glm::dvec4(0, 0, -1, 0), glm::dvec4(corner, 1.0), kEyeRays);  // from the eye at infinity
+  }
+  const double q = planeAtInfinity(camera);
+  if (std::isfinite(q))
+    for (int i = 0; i < 4; ++i) {
+      const double a = (i & 1) ? 1.6 : -1.6, b = (i & 2) ? 1.6 : -1.6;
+      s.segment({a, -1.6, q}, {a, 1.6, q}, kInfinity);
+      s.segment({-1.6, b, q}, {1.6, b, q}, kInfinity);
+    }
+  const psm::PostProjectiveLight l = psm::toPostProjective(camera, worldLight);
+  s.light(l, l.kind == psm::PostLightKind::Behind ? kPalette.lightBehind : kPalette.light);
+}
+
+}  // namespace
+
+void PostProjectiveView::declare(ParamRegistry& r, const std::string& n) {
+  r.addChoice(n, &mode_, {"off", "inset", "full"},
+              "the scene after the camera's projection: the unit cube, the light there, its light camera")
+      .hotkey = "P";  // Q flies the camera down (a framework key)
+  r.add(n + ".size", &size_, 0.2f, 1.0f, "the inset's width, as a fraction of the frame");
+  r.add(n + ".yaw", &yaw_, -3.2f, 3.2f, "the display camera around the cube (0: along the eye's rays)");
+  r.add(n + ".pitch", &pitch_, -1.5f, 1.5f, "the display camera above the cube's equator");
+  r.add(n + ".distance", &distance_, 1.5f, 60.0f, "the display camera's distance from the cube's centre");
+  r.add(n + ".behind", &behind_, "also draw what lies behind the camera: beyond the plane at infinity, tinted red");
+  r.add(n + ".light", &light_, 0, 3, "whose light (and light camera) the view shows");
+}
+
+void PostProjectiveView::init() {
+  scene_.build();
+  lines_.build();
+  blit_.build();
+  linesVao_ = gl::makeVertexArray("post-projective view: lines");
+  lineVertices_ = gl::makeBuffer(GL_ARRAY_BUFFER, "post-projective view: lines");
+  emptyVao_ = gl::makeVertexArray("post-projective view: composite");
+}
+
+// Post-projective space is left-handed (z grows away from the eye): the display flips z so that it
+// reads like the world, the eye's side toward +z.
+glm::mat4 PostProjectiveView::displayView() const {
+  const glm::vec3 eye =
+      distance_ * glm::vec3(std::sin(yaw_) * std::cos(pitch_), std::sin(pitch_), std::cos(yaw_) * std::cos(pitch_));
+  return glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0)) * glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, -1));
+}
+
+void PostProjectiveView::drawScene(const ShadowContext& c, const glm::mat4& camera, const glm::mat4& view) {
+  const float aspect = float(target_.width) / float(target_.height);
+  scene_.use();
+  scene_.set("uCamera", camera);
+  scene_.set("uDisplayView", view);
+  scene_.set("uDisplay", glm::perspective(0.7f, aspect, 0.05f, 500.0f) * view);
+  scene_.set("uBox", glm::vec2(1.35f, 3.5f));
+  gl::SceneDrawOptions options;
+  options.textures = false;
+  options.beforeDraw = [](std::size_t) { glDisable(GL_CULL_FACE); };  // seen from outside: both sides
+  for (const float sign : {1.0f, -1.0f}) {
+    if (sign < 0.0f && !behind_) break;
+    scene_.set("uSign", sign);
+    gl::drawScene(scene_, c.scene.scene(), c.scene.gpu(), options);
+  }
+  glEnable(GL_CULL_FACE);
+}
+
+void PostProjectiveView::drawLines(const ShadowContext& c, const ShadowTechnique& t, int light,
+                                   const glm::dmat4& camera, const glm::mat4& view) {
+  psm::PostProjectiveShapes shapes;
+  addFrame(shapes, camera, psm::homogeneousLight(c.lights[std::size_t(light)]));
+  t.describePostProjective(c, light, shapes);
+  struct V {
+    glm::vec4 p, c;
+  };
+  std::vector<V> v;
+  v.reserve(shapes.lines().size() * 2);
+  for (const auto& l : shapes.lines()) {
+    // Scaled to a common length first: a far point's huge coordinates would lose float digits.
+    const double sa = std::max(glm::length(l.a), 1e-300), sb = std::max(glm::length(l.b), 1e-300);
+    v.push_back({glm::vec4(l.a / sa), l.colour});
+    v.push_back({glm::vec4(l.b / sb), l.colour});
+  }
+  glBindVertexArray(linesVao_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, lineVertices_.id());
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(V)), v.data(), GL_STREAM_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(V), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(V), reinterpret_cast<void*>(sizeof(glm::vec4)));
+  const float aspect = float(target_.width) / float(target_.height);
+  lines_.use();
+  lines_.set("uDisplay", glm::perspective(0.7f, aspect, 0.05f, 500.0f) * view);
+  glDepthFunc(GL_LEQUAL);
+  for (const float sign : {1.0f, -1.0f}) {
+    lines_.set("uSign", sign);
+    glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
+  }
+  glDepthFunc(GL_LESS);
+  glBindVertexArray(0);
+}
+
+void PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, int light) {
+  if (mode_ == Mode::Off || c.frame.godView || c.lights.empty()) return;
+  if (light < 0) light = std::min(light_, int(c.lights.size()) - 1);
+  const bool full = mode_ == Mode::Full;
+  const int w = full ? c.frame.width : std::max(16, int(float(c.frame.width) * size_));
+  const int h = full ? c.frame.height : std::max(16, w * c.frame.height / std::max(c.frame.width, 1));
+  if (target_.width != w || target_.height != h) target_ = gl::makeRenderTarget(w, h, "post-projective view");
+  const glm::dmat4 camera = t.postProjectiveCamera(c, light);
+  const glm::mat4 view = displayView();
+
+  glBindFramebuffer(GL_FRAMEBUFFER, target_.fbo.id());
+  glViewport(0, 0, w, h);
+  glClearColor(0.09f, 0.1f, 0.14f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  for (int k = 0; k < 7; ++k) glEnable(GLenum(GL_CLIP_DISTANCE0 + k));
+  drawScene(c, glm::mat4(camera), view);
+  for (int k = 1; k < 7; ++k) glDisable(GLenum(GL_CLIP_DISTANCE0 + k));
+  drawLines(c, t, light, camera, view);
+  glDisable(GL_CLIP_DISTANCE0);
+  composite(c, full ? 0 : 8, full ? 0 : 8, w, h);
+}
+
+// Into the frame without touching a measurement's attachments: the surfaces under the inset stay
+// measured (app/measurement.hpp).
+void PostProjectiveView::composite(const ShadowContext& c, int x, int y, int w, int h) {
+  glBindFramebuffer(GL_FRAMEBUFFER, c.frame.framebuffer);
+  glDisable(GL_DEPTH_TEST);
+  withoutMeasurement([&] {
+    if (x > 0) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(x - 2, y - 2, w + 4, h + 4);
+      glClearColor(0.9f, 0.9f, 0.9f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      glDisable(GL_SCISSOR_TEST);
+    }
+    glViewport(x, y, w, h);
+    blit_.use();
+    blit_.set("uOverlay", 0);
+    blit_.set("uOpacity", 1.0f);
+    blit_.set("uFlip", 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, target_.color.id());
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  });
+  glBindVertexArray(0);
+  glViewport(0, 0, c.frame.width, c.frame.height);
+  glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace shadowlab::tech

@@ -1,0 +1,198 @@
+// Lesson 09: Perspective Shadow Maps with every fix of Kozlov et al., "Perspective Shadow Maps: Care
+// and Feeding" (GPU Gems 1 ch. 14; the same paper in Russian from IAE SB RAS), each a switch of the
+// PSM technique (common/technique/psm.cpp, shaders/common/shadow_psm.frag), and LiSPSM and the
+// uniform map beside it at equal texels:
+//   fix.inverse  §3    a light behind the camera gets the inverse projection (Zn = -a, Zf = +a):
+//                      a light ray is ordered through infinity, no virtual camera slides back
+//   format             16, 24 or 32F bits of depth (the paper: 24 suffice)
+//   fix.clip     §4.1  the receivers' rough volumes (a coarse height map, the city's blocks, the
+//                      room's walls) clipped by the view frustum: the key points, the smallest cone
+//                      from the light holding them, the light camera along it
+//   fix.faces    §4.2  the faces of the unit cube the light cannot see, a map each (3 to 5 for a
+//                      light outside, 6 inside), when the cone is too wide or always
+//   bias=world   §5    a + b L_texel in world space, per caster vertex, against bias=constant
+//   technique          lispsm (Wimmer et al. 2004, n_opt) and uniform (lesson 03) on the same controls
+// Views: the post-projective view (P: inset, full) with the light, its cone, key points and maps;
+// the god view (O) with the receiver volumes, key points and light frusta; view=maps.
+//
+// Controls: orbit/pan/zoom with the mouse; I fix 1, C fix 2, F cycles fix 3, B the bias, T the
+// technique, V the view, P the post-projective view, O the god view, M ground truth, 1 2 the
+// lights; F1 help. Exercises (exercises.hpp): the inverse projection, the smallest cone, the face
+// test, the texel-size bias, LiSPSM's n_opt; `--set impl=student` runs yours in the lesson.
+#include <numbers>
+
+#include "algorithms/psm/post_shapes.hpp"
+#include "app/lesson.hpp"
+#include "exercises.hpp"
+#include "technique/lispsm.hpp"
+#include "technique/lit_pass.hpp"
+#include "technique/post_projective_view.hpp"
+#include "technique/psm.hpp"
+#include "technique/scene_cache.hpp"
+#include "technique/uniform_maps.hpp"
+
+using namespace shadowlab;
+
+namespace {
+
+enum class Technique { Psm, Lispsm, Uniform };
+enum class View { Lit, Visibility, Maps };
+constexpr int kLights = 2;
+
+struct Params {
+  tech::SceneChoice scene{1, 60000};     // the city: boxes for receivers, sharp shadows near and far
+  Technique technique = Technique::Psm;  // PSM with the fixes, LiSPSM, or the uniform map
+  View view = View::Lit;
+  Impl impl = Impl::Reference;  // student: your inverse projection, cone, face test, bias and n_opt
+  bool equalTexels = true;      // LiSPSM and the uniform map get PSM's texels (map_size)
+  float ambient = 0.1f;
+  Light lights[kLights];  // a sun behind the camera, and a point light (off)
+};
+
+const char* const kSummary =
+    "Perspective shadow maps with the paper's four fixes: inverse projection, unit-cube clipping with the "
+    "smallest cone, cube-map faces of the unit cube, world-space texel-size bias; against LiSPSM.";
+const char* const kHelp = R"(I: fix 1, the inverse projection for a light behind the camera (off: the virtual slide).
+C: fix 2, unit-cube clipping: rough receiver volumes, key points, smallest cone.
+F: fix 3, never / auto / always the hidden faces of the unit cube. B: constant or world bias.
+format 16 / 24 / 32f. T: PSM, LiSPSM, uniform (equal texels). P: post-projective view.
+O: god view (volumes, key points, frusta). M: ground truth. V: lit, visibility, maps.)";
+
+// The lesson's exercises as the technique's replaceable steps (impl=student).
+psm::Cone studentCone(std::span<glm::dvec3> directions) {
+  const glm::dvec4 c = ex09::smallestEnclosingCone({directions.begin(), directions.end()});
+  psm::Cone cone;
+  const double len = glm::length(glm::dvec3(c));
+  cone.valid = len > 0.0 && std::isfinite(len) && c.w >= 0.0 && c.w < std::numbers::pi / 2.0;
+  if (cone.valid) cone.axis = glm::dvec3(c) / len;
+  cone.halfAngle = c.w;
+  return cone;
+}
+
+bool studentFaceVisible(int face, const psm::PostProjectiveLight& l) {
+  const double w = l.kind == psm::PostLightKind::Direction ? 0.0 : l.kind == psm::PostLightKind::InFront ? 1.0 : -1.0;
+  return ex09::cubeFaceVisible(face, w == 0.0 ? glm::dvec4(l.direction, 0.0) : glm::dvec4(l.position, w));
+}
+
+}  // namespace
+
+class PsmFixesLesson : public Lesson {
+ public:
+  void declare(ParamRegistry& r) override {
+    camera.aim({0, 2, 0}, 45.0f, 0.5f);  // a city block from above, the sun behind the camera
+    camera.nearZ = 1.0f;                 // Zf/Zn = 200: the post-projective cube is not all far face
+    tech::SceneCache::declare(r, &p_.scene, "procedural scene", "scene size: what the shadow passes draw");
+    r.addChoice("technique", &p_.technique, {"psm", "lispsm", "uniform"},
+                "PSM with the fixes (this lesson), LiSPSM, or lesson 03's uniform map, at equal texels")
+        .hotkey = "T";
+    r.addChoice("view", &p_.view, {"lit", "visibility", "maps"}, "lit, V of the measured light, or light 0's maps")
+        .hotkey = "V";
+    declareImpl(r, &p_.impl, "whose inverse projection, cone, face test, bias and n_opt the techniques run");
+    r.add("equal_texels", &p_.equalTexels,
+          "LiSPSM and the uniform map get the PSM's map_size (a light's total texels)");
+    r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
+    psm_.declare(r, "");  // this lesson's subject: bare names
+    for (const auto& [name, key] :
+         {std::pair{"fix.inverse", "I"}, {"fix.clip", "C"}, {"fix.faces", "F"}, {"bias", "B"}})
+      r.setHotkey(name, key);
+    lispsm_.declare(r, "lispsm.");
+    uniform_.declare(r, "uniform.");
+    postView_.declare(r);
+    declareLights(r);
+  }
+
+  LessonInfo info() const override {
+    return {"09", "09_psm_fixes", "PSM with the paper's fixes", kSummary, 5, kHelp, true};
+  }
+
+  void init() override {
+    psm_.init();
+    lispsm_.init();
+    uniform_.init();
+    postView_.init();
+  }
+
+  MeasureSource measureSource() override {
+    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}};
+  }
+
+  void applyPathLight(const glm::vec3& position, const glm::vec3& direction) override {
+    p_.lights[0].position = position;
+    p_.lights[0].direction = direction;
+  }
+
+  void update(const FrameInfo&) override {
+    scene_.update(p_.scene);
+    if (p_.equalTexels) {  // the same budget: one square map of map_size per light, or its faces
+      lispsm_.maps().params().mapSize = psm_.maps().params().mapSize;
+      uniform_.params().mapSize = psm_.maps().params().mapSize;
+      uniform_.params().cubeSize = psm_.maps().params().mapSize;
+    }
+    const bool student = p_.impl == Impl::Student;
+    psm::PsmSteps& steps = psm_.studentSteps().options.steps;
+    steps.inverseProjection = student ? decltype(steps.inverseProjection)(ex09::inverseProjection) : nullptr;
+    steps.cone = student ? decltype(steps.cone)(studentCone) : nullptr;
+    steps.faceVisible = student ? decltype(steps.faceVisible)(studentFaceVisible) : nullptr;
+    psm_.maps().studentBias = student ? decltype(psm_.maps().studentBias)(ex09::texelSizeBias) : nullptr;
+    lispsm_.optimalN = student ? decltype(lispsm_.optimalN)(ex09::lispsmOptimalN) : nullptr;
+  }
+
+  void render(const FrameInfo& f) override {
+    const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
+    tech::ShadowTechnique* const techniques[] = {&psm_, &lispsm_, &uniform_};
+    tech::ShadowTechnique& technique = *techniques[int(p_.technique)];
+
+    // ==== 1. the plan: the light in post-projective space, receivers' key points, cone or faces ====
+    // ==== 2. shadow passes: one map, or one per hidden face; casters moved by the world bias =======
+    technique.renderShadows(c);
+    if (!f.godView) counters = technique.stats().counters();
+
+    // ==== 3. the scene from the eye, every light with its map ======================================
+    {
+      auto t = scope("scene");
+      glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      lit_.draw(c, technique, {glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0});
+    }
+
+    // ==== 4. light 0's maps side by side (view=maps) ===============================================
+    if (p_.view == View::Maps && !f.godView) {
+      auto t = scope("map view");
+      const int h = f.height / 3, w = std::min(f.width, h * 6);
+      if (p_.technique == Technique::Psm) psm_.drawMaps(0, 0, f.height - h, w, h);
+      if (p_.technique == Technique::Lispsm) lispsm_.drawMaps(0, 0, f.height - h, h, h);
+    }
+
+    // ==== 5. the post-projective view: the unit cube, the light there, its cone, maps, key points ==
+    if (postView_.enabled()) {
+      auto t = scope("post-projective view");
+      postView_.draw(c, technique);
+    }
+  }
+
+ private:
+  // light0 a sun behind the camera (PSM's hard case: fix 1), light1 a point light (off).
+  void declareLights(ParamRegistry& r) {
+    Light* l = p_.lights;
+    l[0] = {LightKind::Directional};
+    l[0].direction = glm::normalize(glm::vec3(-0.5f, -0.45f, -0.7f));
+    l[0].color = {1.0f, 0.95f, 0.85f};
+    l[0].intensity = 0.9f;
+    l[1] = {LightKind::Point, {2.0f, 5.0f, -4.0f}};
+    l[1].color = {1.0f, 0.6f, 0.3f};
+    l[1].intensity = 3.0f;
+    l[1].attenuation = {1.0f, 0.05f, 0.02f};
+    l[1].enabled = false;
+    for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
+  }
+
+  Params p_;
+  tech::SceneCache scene_{"09 scene"};
+  tech::PerspectiveShadowMaps psm_;
+  tech::LightSpacePsm lispsm_;
+  tech::UniformShadowMaps uniform_;
+  tech::LitPass lit_{"09 scene"};
+  tech::PostProjectiveView postView_;
+};
+
+int main(int argc, char** argv) { return runLesson<PsmFixesLesson>(argc, argv); }
