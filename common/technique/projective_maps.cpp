@@ -4,13 +4,12 @@
 
 #include "algorithms/psm/bias.hpp"
 #include "algorithms/psm/receivers.hpp"
+#include "technique/map_settings.hpp"
 #include "technique/scene_cache.hpp"
 #include "technique/uniform_maps.hpp"
 
 namespace shadowlab::tech {
 namespace {
-
-std::uint64_t depthBytes(gl::DepthFormat f) { return f == gl::DepthFormat::Depth16 ? 2 : 4; }
 
 std::string indexed(const char* name, int i) { return std::string(name) + "[" + std::to_string(i) + "]"; }
 

@@ -217,7 +217,7 @@ void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) co
 void UniformShadowMaps::describePostProjective(const ShadowContext& c, int light,
                                                psm::PostProjectiveShapes& out) const {
   if (const shadow::LightCamera* cam = camera(light))
-    out.worldFrustum(postProjectiveCamera(c, light), glm::dmat4(cam->viewProj()), kLightColours[light % 4]);
+    out.worldFrustum(postProjectiveCamera(c, light), glm::dmat4(cam->viewProj()), lightColour(std::size_t(light)));
 }
 
 void UniformShadowMaps::unbindVisibility(int firstUnit) const {
