@@ -37,7 +37,7 @@ TEST_CASE("ex01.1: light at 60 degrees, with colour, attenuation and exponent") 
   CHECK(near(r, {0.75f, 0.25f, 0.25f}));
 }
 
-TEST_CASE("ex01.1: visibility scales the whole term; a shadowed point gets nothing") {
+TEST_CASE("ex01.1: visibility scales the whole term, a shadowed point gets nothing") {
   const glm::vec3 z(0, 0, 1);
   CHECK(near(ex01::lightContribution(z, z, z, glm::vec3(1), 1, 0.5f, glm::vec3(0.5f), 0.5f, 10), glm::vec3(0.5f)));
   CHECK(near(ex01::lightContribution(z, z, z, glm::vec3(1), 1, 0.0f, glm::vec3(0.5f), 0.5f, 10), glm::vec3(0)));

@@ -61,7 +61,7 @@ TEST_CASE("ex06.2: a rectangular chain keeps its 1-wide levels") {
 }
 
 // ---- 06.3 ----------------------------------------------------------------------------------------
-TEST_CASE("ex06.3: one texel per pixel is level 0; four is level 2") {
+TEST_CASE("ex06.3: one texel per pixel is level 0, four is level 2") {
   CHECK(ex06::lodFromDerivatives({1.0f / 256, 0}, {0, 1.0f / 256}, {256, 256}) == doctest::Approx(0.0f));
   CHECK(ex06::lodFromDerivatives({4.0f / 256, 0}, {0, 1.0f / 256}, {256, 256}) == doctest::Approx(2.0f));
 }
@@ -198,7 +198,7 @@ TEST_CASE("ex06.7: 4x2 to 2x1, each texel the mean of its 2x2 parents") {
   CHECK(out.at(1, 0) == doctest::Approx(4.5f));  // (2 + 3 + 6 + 7) / 4
 }
 
-TEST_CASE("ex06.7: a side already 1 stays 1; channels kept") {
+TEST_CASE("ex06.7: a side already 1 stays 1, channels kept") {
   ImageF col = gray(1, 4, {0, 1, 2, 3});
   const ImageF a = ex06::boxDownsample(col);
   REQUIRE((a.width == 1 && a.height == 2 && a.data.size() == 2u));

@@ -63,7 +63,7 @@ TEST_CASE("light cameras: a directional fit culls the caster behind the viewer a
 }
 
 TEST_CASE(
-    "light cameras: a scene fit holds every corner of the scene; a view fit is smaller and holds the view's "
+    "light cameras: a scene fit holds every corner of the scene, a view fit is smaller and holds the view's "
     "receivers") {
   const Boxes b;
   DirectionalFitOptions scene;

@@ -24,7 +24,7 @@ struct Rig : test::SampleRig {
 };
 }  // namespace
 
-TEST_CASE("param checks: a light direction needs a length; the last good one stays") {
+TEST_CASE("param checks: a light direction needs a length, the last good one stays") {
   Rig r;
   CHECK_NOTHROW(r.reg.validate());
   CHECK(r.error("light0.direction=0 0 0") ==
@@ -38,7 +38,7 @@ TEST_CASE("param checks: a light direction needs a length; the last good one sta
   CHECK(r.error("light0.direction=0.3 -0.2 0") == "no error");
 }
 
-TEST_CASE("param checks: attenuation 0 0 0 divides by zero; any coefficient above 0 is fine") {
+TEST_CASE("param checks: attenuation 0 0 0 divides by zero, any coefficient above 0 is fine") {
   Rig r;
   CHECK(r.error("light0.attenuation=0 0 0") ==
         "light0.attenuation = 0 0 0 divides by zero: f_att = 1 / (c0 + c1 d + c2 d^2) needs a coefficient above 0");

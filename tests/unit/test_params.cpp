@@ -217,7 +217,7 @@ TEST_CASE("params: a check refuses a change, names the values, and keeps the las
   CHECK_THROWS_AS(p.reg.addCheck({"nope"}, [](const ParamRegistry&) { return std::string(); }), ParamError);
 }
 
-TEST_CASE("params: setAll and assignAll check once at the end, so order does not matter; errors undo all") {
+TEST_CASE("params: setAll and assignAll check once at the end, so order does not matter, errors undo all") {
   Pair p;
   // Moving both above the old hi: one at a time, "lo = 5" would fail first.
   p.reg.assignAll({"lo=5", "hi=6"});

@@ -209,7 +209,7 @@ TEST_CASE("psm camera: original PSM slides the camera back only for a light behi
   CHECK(o.fit.camera.kind == LightProjection::Perspective);
 }
 
-TEST_CASE("psm camera: a light inside the receivers' hull reports ConeTooWide; none visible NoReceivers") {
+TEST_CASE("psm camera: a light inside the receivers' hull reports ConeTooWide, none visible NoReceivers") {
   const CameraFrustum c = handCamera();
   const std::vector<Aabb> recv = {box({-0.9f, -0.9f, -2.9f}, {-0.1f, 0.9f, -1.1f}),
                                   box({0.1f, -0.9f, -2.9f}, {0.9f, 0.9f, -1.1f})};
