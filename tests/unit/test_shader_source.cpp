@@ -467,7 +467,7 @@ TEST_CASE("paths: SHADOWLAB_ROOT overrides the configure-time source root") {
 }
 
 TEST_CASE(
-    "shader source: includes nest at most kMaxIncludeDepth deep; 8,000 (which overflowed the stack) is an error") {
+    "shader source: includes nest at most kMaxIncludeDepth deep, 8,000 (which overflowed the stack) is an error") {
   TempDir dir;
   // chain(n): top.frag includes f1.glsl, which includes f2.glsl, ... n files in all.
   auto chain = [&](std::size_t files) {
