@@ -231,8 +231,12 @@ async function buildPdfs(decks, opts) {
       const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
       const errors = [];
       page.on('pageerror', (e) => errors.push(e.message));
+      // Reveal.isReady() turns true before the print layout is built (reveal.js 5 lays the pages
+      // out after an animation frame, then dispatches 'pdf-ready'); printing in between gave a
+      // one-page PDF on a loaded CI machine. Wait for the event itself.
+      await page.addInitScript(() => document.addEventListener('pdf-ready', () => { window.__shadowlabPdfReady = true; }));
       await page.goto(`${pathToFileURL(d.htmlFile).href}?print-pdf`, { waitUntil: 'load' });
-      await page.waitForFunction(() => window.Reveal?.isReady?.(), null, { timeout: 30_000 });
+      await page.waitForFunction(() => window.__shadowlabPdfReady === true, null, { timeout: 60_000 });
       await page.evaluate(() => document.fonts.ready);
       if (errors.length) throw new Error(`${d.file}: page error while printing: ${errors[0]}`);
       d.pdfFile = path.join(opts.out, `${d.name}.pdf`);
