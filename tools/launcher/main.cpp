@@ -3,6 +3,9 @@
 //                          without one: the tour (below)
 //   shadowlab --tour DIR   every lesson rendered headless at its defaults and at each preset into
 //                          DIR (one PNG each) plus DIR/index.html with the lesson titles
+//   shadowlab --list       per lesson: its presets, README, slide deck and exercise status
+// In the window each lesson has a preset to start from, Start, README and Slides (opened with
+// xdg-open) and its exercise status (the public cases, `lesson --exercises`, run in the background).
 // Lessons describe themselves (`lesson --info`, `--list-presets`), so nothing here is duplicated.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -13,6 +16,7 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -20,10 +24,12 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "app/context.hpp"
 #include "core/image.hpp"
+#include "core/paths.hpp"
 #include "gl/gl.hpp"
 #include "gl/texture.hpp"
 #include "lesson_list.hpp"
@@ -38,6 +44,10 @@ struct LessonEntry {
   std::string number, name, title, summary;
   int difficulty = 1;
   std::vector<std::string> presets;
+  std::string readme, deck;  // lessons/NN_name/README.md; the deck NN_name.html (make slides)
+  std::string exercises;     // `lesson --exercises`: one line per exercise, or why there is none
+  std::string exerciseSummary = "exercises: checking...";
+  int preset = 0;  // the window's choice: 0 = defaults, else presets[preset - 1]
 };
 
 std::string capture(const std::string& command, int& status) {
@@ -51,6 +61,44 @@ std::string capture(const std::string& command, int& status) {
   while (fgets(buf.data(), int(buf.size()), pipe)) out += buf.data();
   status = pclose(pipe);
   return out;
+}
+
+std::string sourceRootPath() { return shadowlab::sourceRoot(); }
+
+// "3 of 5 pass, 2 stubs" from the lines of `lesson --exercises` ("01.1 passing  title (4 of 4 ...").
+std::string summariseExercises(const std::string& report) {
+  int total = 0, passing = 0, stubs = 0, failing = 0;
+  std::istringstream lines(report);
+  std::string line;
+  while (std::getline(lines, line)) {
+    const auto gap = line.find(' ');
+    if (line.empty() || gap == std::string::npos) continue;
+    const std::string state = line.substr(line.find_first_not_of(' ', gap));
+    ++total;
+    if (state.rfind("passing", 0) == 0) ++passing;
+    else if (state.rfind("stub", 0) == 0) ++stubs;
+    else if (state.rfind("failing", 0) == 0) ++failing;
+  }
+  if (total == 0) return "exercises: none in this lesson";
+  std::string s = "exercises: " + std::to_string(passing) + " of " + std::to_string(total) + " pass";
+  if (stubs) s += ", " + std::to_string(stubs) + " still stubs";
+  if (failing) s += ", " + std::to_string(failing) + " failing";
+  return s;
+}
+
+// The public cases of the student's exercises.cpp, as the lesson reports them.
+void checkExercises(LessonEntry& e) {
+  int status = 0;
+  const std::string out = capture("'" + e.program + "' --exercises 2>&1", status);
+  if (status != 0) {
+    e.exercises = out;
+    e.exerciseSummary =
+        "exercises: unknown (--exercises exited " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")";
+    return;
+  }
+  e.exercises = out;
+  e.exerciseSummary =
+      out.find("no exercises") != std::string::npos ? "exercises: none in this lesson" : summariseExercises(out);
 }
 
 std::vector<LessonEntry> discoverLessons(const fs::path& binDir) {
@@ -75,6 +123,11 @@ std::vector<LessonEntry> discoverLessons(const fs::path& binDir) {
     std::istringstream presets(capture("'" + e.program + "' --list-presets", status));
     while (std::getline(presets, line))
       if (!line.empty()) e.presets.push_back(line);
+    e.readme = sourceRootPath() + "/lessons/" + e.name + "/README.md";
+    // `make slides` writes out/slides; the test suite's build writes <build>/slides.
+    e.deck = sourceRootPath() + "/out/slides/" + e.name + ".html";
+    const fs::path built = binDir.parent_path() / "slides" / (e.name + ".html");
+    if (!fs::exists(e.deck) && fs::exists(built)) e.deck = built.string();
     lessons.push_back(std::move(e));
   }
   return lessons;
@@ -90,6 +143,30 @@ int runProgram(const std::vector<std::string>& args, bool wait) {
   int status = 0;
   waitpid(pid, &status, 0);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Opens a README or a deck with the desktop's viewer; the message says what happened.
+std::string openDocument(const std::string& path, const std::string& missingHint) {
+  if (!fs::exists(path)) return path + " does not exist" + missingHint;
+  std::vector<char*> argv = {const_cast<char*>("xdg-open"), const_cast<char*>(path.c_str()), nullptr};
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, "xdg-open", nullptr, nullptr, argv.data(), environ) != 0)
+    return "no xdg-open here: open " + path + " yourself";
+  return "opened " + path;
+}
+
+int list(std::vector<LessonEntry>& lessons) {
+  for (auto& l : lessons) {
+    checkExercises(l);
+    std::cout << l.number << "  " << l.title << "  (" << l.name << ", difficulty " << l.difficulty << ")\n";
+    std::string presets;
+    for (const auto& p : l.presets) presets += (presets.empty() ? "" : ", ") + p;
+    std::cout << "    presets: " << (presets.empty() ? "none" : presets) << "\n"
+              << "    README: " << l.readme << (fs::exists(l.readme) ? "" : " (missing)") << "\n"
+              << "    slides: " << l.deck << (fs::exists(l.deck) ? "" : " (not built: make slides)") << "\n"
+              << "    " << l.exerciseSummary << "\n";
+  }
+  return 0;
 }
 
 std::string htmlEscape(const std::string& s) {
@@ -138,9 +215,53 @@ int tour(const std::vector<LessonEntry>& lessons, const fs::path& dir) {
   return failures == 0 ? 0 : 1;
 }
 
+// One lesson in the window: number, title, summary and exercise status, difficulty, the preset to
+// start from, Start / README / Slides.
+void lessonRow(LessonEntry& l, std::string& status, bool exercisesKnown) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(l.number.c_str());
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(l.title.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", l.summary.c_str());
+  ImGui::TextUnformatted(exercisesKnown ? l.exerciseSummary.c_str() : "exercises: checking...");
+  ImGui::PopStyleColor();
+  if (exercisesKnown && !l.exercises.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", l.exercises.c_str());
+  ImGui::TableNextColumn();
+  ImGui::Text("%s", std::string(std::size_t(l.difficulty), '*').c_str());
+  ImGui::TableNextColumn();
+  ImGui::PushID(l.name.c_str());
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10);
+  const char* current = l.preset == 0 ? "defaults" : l.presets[std::size_t(l.preset - 1)].c_str();
+  if (ImGui::BeginCombo("##preset", current)) {
+    for (int i = 0; i <= int(l.presets.size()); ++i)
+      if (ImGui::Selectable(i == 0 ? "defaults" : l.presets[std::size_t(i - 1)].c_str(), i == l.preset)) l.preset = i;
+    ImGui::EndCombo();
+  }
+  ImGui::TableNextColumn();
+  if (ImGui::Button("Start")) {
+    std::vector<std::string> args = {l.program};
+    if (l.preset > 0) args.insert(args.end(), {"--preset", l.presets[std::size_t(l.preset - 1)]});
+    status = runProgram(args, false) == 0 ? "started " + l.name + (l.preset > 0 ? " --preset " + args.back() : "")
+                                          : "could not start " + l.program;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("README")) status = openDocument(l.readme, "");
+  ImGui::SameLine();
+  if (ImGui::Button("Slides")) status = openDocument(l.deck, ": build the decks with `make slides`");
+  ImGui::PopID();
+}
+
 // `frames` > 0 (tests): close after that many frames, saving the last one to `screenshot`.
-int launcherWindow(const std::vector<LessonEntry>& lessons, int frames, const std::string& screenshot) {
-  auto context = shadowlab::createWindowContext({900, 560, "shadowlab: lessons", false, false});
+int launcherWindow(std::vector<LessonEntry>& lessons, int frames, const std::string& screenshot) {
+  // The exercise states take a lesson run each: in the background, the window shows "checking".
+  std::atomic<bool> exercisesDone{false};
+  std::thread checker([&] {
+    for (auto& l : lessons) checkExercises(l);
+    exercisesDone = true;
+  });
+  auto context = shadowlab::createWindowContext({960, 640, "shadowlab: lessons", false, false});
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
@@ -161,30 +282,19 @@ int launcherWindow(const std::vector<LessonEntry>& lessons, int frames, const st
     ImGui::Begin("shadowlab", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove);
     ImGui::Text("shadowlab: real-time shadows and texture filtering");
     ImGui::Separator();
-    if (ImGui::BeginTable("lessons", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    // The table scrolls (nine lessons do not fit); the status line stays below it.
+    const float footer = ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y;
+    if (ImGui::BeginTable("lessons", 5,
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_ScrollY,
+                          ImVec2(0, -footer))) {
+      ImGui::TableSetupScrollFreeze(0, 1);
       ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed);
       ImGui::TableSetupColumn("lesson");
       ImGui::TableSetupColumn("difficulty", ImGuiTableColumnFlags_WidthFixed);
+      ImGui::TableSetupColumn("start from", ImGuiTableColumnFlags_WidthFixed);
       ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed);
       ImGui::TableHeadersRow();
-      for (const auto& l : lessons) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(l.number.c_str());
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(l.title.c_str());
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("%s", l.summary.c_str());
-        ImGui::PopStyleColor();
-        ImGui::TableNextColumn();
-        ImGui::Text("%s", std::string(std::size_t(l.difficulty), '*').c_str());
-        ImGui::TableNextColumn();
-        ImGui::PushID(l.name.c_str());
-        if (ImGui::Button("Start")) {
-          status = runProgram({l.program}, false) == 0 ? "started " + l.name : "could not start " + l.program;
-        }
-        ImGui::PopID();
-      }
+      for (auto& l : lessons) lessonRow(l, status, exercisesDone.load());
       ImGui::EndTable();
     }
     ImGui::Separator();
@@ -203,6 +313,7 @@ int launcherWindow(const std::vector<LessonEntry>& lessons, int frames, const st
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
+  checker.join();
   return 0;
 }
 
@@ -212,9 +323,11 @@ int main(int argc, char** argv) {
   const fs::path binDir = fs::canonical("/proc/self/exe").parent_path();
   std::string tourDir, screenshot;
   int frames = 0;
+  bool listOnly = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--tour" && i + 1 < argc) tourDir = argv[++i];
+    else if (a == "--list") listOnly = true;
     else if (a == "--frames" && i + 1 < argc) {
       const std::string n = argv[++i];
       char* end = nullptr;
@@ -226,25 +339,27 @@ int main(int argc, char** argv) {
       frames = int(v);
     } else if (a == "--screenshot" && i + 1 < argc) screenshot = argv[++i];
     else if (a == "--help") {
-      std::cout << "usage: shadowlab [--tour DIR] [--frames N] [--screenshot FILE]\n"
+      std::cout << "usage: shadowlab [--tour DIR] [--list] [--frames N] [--screenshot FILE]\n"
                    "  with a display: the lesson launcher\n"
                    "  without one, or with --tour: render every lesson and preset into DIR (default out/tour)\n"
                    "  --tour DIR         render the tour into DIR\n"
+                   "  --list             per lesson: presets, README, slide deck, exercise status\n"
                    "  --frames N         the launcher window closes after N frames (tests)\n"
                    "  --screenshot FILE  with --frames: the launcher's last frame as PNG\n"
                    "  --help             this text\n";
       return 0;
     } else {
       std::cerr << "shadowlab: unknown argument '" << a
-                << "'; valid: --tour DIR, --frames N, --screenshot FILE, --help\n";
+                << "'; valid: --tour DIR, --list, --frames N, --screenshot FILE, --help\n";
       return 2;
     }
   }
-  const auto lessons = discoverLessons(binDir);
+  auto lessons = discoverLessons(binDir);
   if (lessons.empty()) {
     std::cerr << "shadowlab: no lesson programs found beside " << binDir << '\n';
     return 1;
   }
+  if (listOnly) return list(lessons);
   if (!tourDir.empty() || !shadowlab::displayAvailable()) {
     if (tourDir.empty()) {
       tourDir = "out/tour";
