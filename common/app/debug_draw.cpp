@@ -53,7 +53,8 @@ void DebugDraw::cross(const glm::vec3& p, float s, const glm::vec4& color) {
   line(p - glm::vec3(0, 0, s), p + glm::vec3(0, 0, s), color);
 }
 
-void LineRenderer::draw(const std::vector<DebugDraw::Line>& lines, const glm::mat4& viewProj, bool depthTest) {
+void LineRenderer::draw(const std::vector<DebugDraw::Line>& lines, const glm::mat4& viewProj, bool depthTest,
+                        float widthPx) {
   build();
   struct V {
     glm::vec3 p;
@@ -84,6 +85,10 @@ void LineRenderer::draw(const std::vector<DebugDraw::Line>& lines, const glm::ma
   }
   program_.use();
   program_.set("uViewProj", viewProj);
+  GLint viewport[4];
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  program_.set("uViewport", glm::vec2(float(viewport[2]), float(viewport[3])));
+  program_.set("uWidth", widthPx);
   glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
   gl::countDraws();
   glDepthFunc(GL_LESS);

@@ -2,6 +2,7 @@
 // Shapes a lesson wants to show in the god view (a second camera outside the scene): frusta, cones,
 // boxes, lines. Lessons fill `debug` in render() each frame; the framework clears it per frame and
 // draws it, with the main camera's frustum, into the god view inset (view.god, hotkey O).
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -38,12 +39,16 @@ class DebugDraw {
 // shapes, and lessons' overlays drawn over their own frame (lesson 05's predicted penumbra edges).
 class LineRenderer {
  public:
-  explicit LineRenderer(std::string label) : program_(std::move(label), {"common/lines.vert", "common/lines.frag"}) {}
+  explicit LineRenderer(std::string label)
+      : program_(std::move(label), {"common/lines.vert", "common/lines.geom", "common/lines.frag"}) {}
   void build() {
     if (!program_.valid()) program_.build();
   }
   // depthTest: against the bound depth buffer with GL_LEQUAL (left at GL_LESS after); else over everything.
-  void draw(const std::vector<DebugDraw::Line>& lines, const glm::mat4& viewProj, bool depthTest);
+  // widthPx: the lines' width in pixels of the current viewport (quads from lines.geom).
+  void draw(const std::vector<DebugDraw::Line>& lines, const glm::mat4& viewProj, bool depthTest, float widthPx);
+  // A width that reads on a projector: 2.5 pixels at 720 lines, in proportion above.
+  static float projectorWidth(int frameHeight) { return std::max(2.0f, 2.5f * float(frameHeight) / 720.0f); }
 
  private:
   gl::Program program_;

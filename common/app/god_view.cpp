@@ -58,7 +58,7 @@ void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const Debu
   all.frustum(viewer.projection(float(frame.width) / float(frame.height)) * viewer.view(), {1, 1, 0.3f, 1});
   glBindFramebuffer(GL_FRAMEBUFFER, g.framebuffer);
   glViewport(0, 0, w, h);
-  lines_.draw(all.lines(), g.projection * g.view, true);
+  lines_.draw(all.lines(), g.projection * g.view, true, LineRenderer::projectorWidth(frame.height));
 
   // Into the bottom-right corner of the frame, with a thin frame around it.
   const int x0 = corner.x, y0 = corner.y;

@@ -133,7 +133,8 @@ class SoftShadowsLesson : public Lesson {
       auto t = scope("theory");
       const auto [a, b] = pickedEdge();
       const auto lines = tech::penumbraLines(a, b, predictedPenumbra());
-      withoutMeasurement([&] { edgeLines_.draw(lines, f.projection * f.view, false); });
+      withoutMeasurement(
+          [&] { edgeLines_.draw(lines, f.projection * f.view, false, LineRenderer::projectorWidth(f.height)); });
     }
   }
 

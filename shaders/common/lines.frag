@@ -1,8 +1,8 @@
 #version 410 core
 #include "common/measure.glsl"
-in vec4 vColor;
+in vec4 gColor;
 out vec4 fragColor;
 void main() {
-  fragColor = vColor;
+  fragColor = gColor;
   writeNoMeasurement();
 }

@@ -1,5 +1,5 @@
 #version 410 core
-// Debug lines for the god view: position and colour per vertex.
+// Debug lines for the god view: position and colour per vertex; lines.geom makes them wide.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec4 aColor;
 uniform mat4 uViewProj;

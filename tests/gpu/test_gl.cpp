@@ -1,6 +1,7 @@
 // The GL layer on a real (headless EGL) context: capabilities, error detection, hot reload that
 // keeps the last good program, render targets and read-back, timer queries.
 #include <doctest/doctest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <chrono>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <thread>
 
 #include "app/context.hpp"
+#include "app/debug_draw.hpp"
 #include "core/mesh.hpp"
 #include "gl/caps.hpp"
 #include "gl/debug.hpp"
@@ -178,4 +180,51 @@ TEST_CASE("gl: sizes past the GL limits are errors naming the limit, never a bla
                                        std::to_string(caps.maxTextureSize) + " (" + caps.renderer + ")");
   }
   CHECK(gl::errorCount() == errors);  // refused before GL saw it
+}
+
+namespace {
+// Rows of column x (of a w x h read-back) whose red channel is lit.
+int litRows(const Image8& img, int x) {
+  int n = 0;
+  for (int y = 0; y < img.height; ++y) n += img.at(x, y)[0] > 128 ? 1 : 0;
+  return n;
+}
+}  // namespace
+
+TEST_CASE("gl: debug lines are as wide as asked (projector scale), and one behind the camera does not flip") {
+  context();
+  const int errorsBefore = gl::errorCount();
+  gl::RenderTarget rt = gl::makeRenderTarget(64, 64, "line test");
+  glBindFramebuffer(GL_FRAMEBUFFER, rt.fbo.id());
+  glViewport(0, 0, 64, 64);
+  LineRenderer lines("line test");
+  const std::vector<DebugDraw::Line> across = {{{-0.5f, 0, 0}, {0.5f, 0, 0}, {1, 0, 0, 1}}};
+  for (float width : {4.0f, 8.0f}) {
+    CAPTURE(width);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    lines.draw(across, glm::mat4(1), false, width);
+    const Image8 img = gl::readPixels(rt.fbo.id(), 64, 64);
+    CHECK(litRows(img, 32) == int(width));
+    CHECK(litRows(img, 4) == 0);  // the ends stop half a width past the segment (x = +-0.5)
+  }
+  CHECK(LineRenderer::projectorWidth(720) == doctest::Approx(2.5));
+  CHECK(LineRenderer::projectorWidth(1440) == doctest::Approx(5.0));
+  CHECK(LineRenderer::projectorWidth(180) == doctest::Approx(2.0));  // never thinner than 2 pixels
+
+  // From a point in front of a perspective camera to one behind it: only the part in front is drawn,
+  // on the side of the screen where the front point lies (divided by a negative w, the far end
+  // would land on the other side).
+  const glm::mat4 viewProj = glm::perspective(1.0f, 1.0f, 0.1f, 100.0f);
+  const std::vector<DebugDraw::Line> behind = {{{0.5f, 0, -2}, {0.5f, 0, 5}, {1, 0, 0, 1}}};
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  lines.draw(behind, viewProj, false, 4.0f);
+  const Image8 img = gl::readPixels(rt.fbo.id(), 64, 64);
+  int left = 0, right = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) (x < 32 ? left : right) += img.at(x, y)[0] > 128 ? 1 : 0;
+  CHECK(right > 0);
+  CHECK(left == 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  CHECK(gl::errorCount() == errorsBefore);
 }
