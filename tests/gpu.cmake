@@ -113,6 +113,21 @@ if(TARGET lesson_01_lighting AND TARGET shadowlab_bench)
   endif()
 endif()
 
+# The insets a lesson draws (map views, the post-projective view, the god view) stay clear of the UI.
+foreach(spec "08_psm|--set;view=map;--set;view.post=inset;--set;view.god=true|3"
+             "09_psm_fixes|--set;view=maps;--set;view.post=inset|2")
+  string(REPLACE "|" ";" spec "${spec}")
+  list(GET spec 0 name)
+  list(GET spec -1 expect)
+  list(SUBLIST spec 1 -1 args)
+  list(REMOVE_AT args -1)
+  if(TARGET lesson_${name})
+    add_test(NAME gpu.${name}.ui_insets COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_${name}> -DNAME=${name}
+             "-DARGS=${args}" -DEXPECT=${expect} -DOUT_DIR=${shots} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_ui_insets.cmake)
+    set_tests_properties(gpu.${name}.ui_insets PROPERTIES LABELS gpu)
+  endif()
+endforeach()
+
 # The launcher: its window under Xvfb lists the lessons; headless it renders the tour.
 if(TARGET shadowlab)
   if(XVFB_RUN)

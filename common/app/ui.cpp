@@ -78,6 +78,12 @@ void Ui::reserve(const std::vector<Inset>& insets, int framebufferHeight) {
   }
 }
 
+float Ui::roomAbove(float left, float right, float height) const {
+  for (const Rect& r : reserved_)  // an inset under the column [left, right): stop above it
+    if (r.x < right && r.x + r.w > left) height = std::min(height, r.y - 16 * scale_);
+  return height;
+}
+
 void Ui::legends(const std::vector<Legend>& legends) {
   if (legends.empty()) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
@@ -124,9 +130,13 @@ bool Ui::wantsKeyboard() const { return initialised_ && ImGui::GetIO().WantCaptu
 void Ui::header(const HeaderData& d) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(8 * scale_, 8 * scale_), ImGuiCond_Always);
-  // At most the left 60 % and 60 % of the height: the panel takes the right, the picture the rest.
-  const float maxHeight = std::max(std::min(vp->Size.y * 0.6f, legendTop_ - 16 * scale_), 3 * ImGui::GetFrameHeight());
-  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(vp->Size.x * kHeaderShare - 16 * scale_, maxHeight));
+  // At most the left 60 % and 60 % of the height: the panel takes the right, the picture the rest;
+  // above a legend and the insets below it (the post-projective view's, at --ui-scale 2).
+  const float maxWidth = vp->Size.x * kHeaderShare - 16 * scale_;
+  const float maxHeight =
+      std::max(roomAbove(8 * scale_, 8 * scale_ + maxWidth, std::min(vp->Size.y * 0.6f, legendTop_ - 16 * scale_)),
+               3 * ImGui::GetFrameHeight());
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(maxWidth, maxHeight));
   ImGui::SetNextWindowBgAlpha(1.0f);  // opaque: a see-through panel darkens the picture like a shadow
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
@@ -275,8 +285,7 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   const float labels = ImGui::GetTextLineHeightWithSpacing() * 3.2f;
   float maxHeight = vp->Size.y - 16 * scale_ - labels;
   const float left = vp->Size.x - 8 * scale_ - width;
-  for (const Rect& r : reserved_)  // an inset under the panel's column: stop above it
-    if (r.x < vp->Size.x && r.x + r.w > left) maxHeight = std::min(maxHeight, r.y - 16 * scale_);
+  maxHeight = roomAbove(left, vp->Size.x, maxHeight);
   ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
                                       ImVec2(vp->Size.x, std::max(maxHeight, 3 * ImGui::GetFrameHeight())));
   ImGui::SetNextWindowBgAlpha(1.0f);  // opaque, as the header

@@ -63,6 +63,9 @@ class Ui {
   char presetName_[64] = "my_preset";
   int presetIndex_ = -1;
   std::vector<Rect> layout_;
+  // The height a window from the top (8 px down) may take in the column [left, right) above this
+  // frame's insets, at most `height`.
+  float roomAbove(float left, float right, float height) const;
   std::vector<Rect> reserved_;  // this frame's insets, top-left origin
   float legendTop_ = 1e9f;      // the legend's top edge this frame (none: far below)
 };

@@ -1,5 +1,7 @@
 #include "technique/post_projective_view.hpp"
 
+#include "app/debug_draw.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -120,6 +122,8 @@ void PostProjectiveView::drawLines(const ShadowContext& c, const ShadowTechnique
   const float aspect = float(target_.width) / float(target_.height);
   lines_.use();
   lines_.set("uDisplay", glm::perspective(0.7f, aspect, 0.05f, 500.0f) * view);
+  lines_.set("uViewport", glm::vec2(float(target_.width), float(target_.height)));
+  lines_.set("uWidth", LineRenderer::projectorWidth(c.frame.height));
   glDepthFunc(GL_LEQUAL);
   for (const float sign : {1.0f, -1.0f}) {
     lines_.set("uSign", sign);
@@ -132,9 +136,8 @@ void PostProjectiveView::drawLines(const ShadowContext& c, const ShadowTechnique
 void PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, int light) {
   if (mode_ == Mode::Off || c.frame.godView || c.lights.empty()) return;
   if (light < 0) light = std::min(light_, int(c.lights.size()) - 1);
-  const bool full = mode_ == Mode::Full;
-  const int w = full ? c.frame.width : std::max(16, int(float(c.frame.width) * size_));
-  const int h = full ? c.frame.height : std::max(16, w * c.frame.height / std::max(c.frame.width, 1));
+  const Inset corner = inset(c.frame.width, c.frame.height).value_or(Inset{"", 0, 0, c.frame.width, c.frame.height});
+  const int w = corner.width, h = corner.height;
   if (target_.width != w || target_.height != h) target_ = gl::makeRenderTarget(w, h, "post-projective view");
   const glm::dmat4 camera = t.postProjectiveCamera(c, light);
   const glm::mat4 view = displayView();
@@ -149,7 +152,14 @@ void PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, 
   for (int k = 1; k < 7; ++k) glDisable(GLenum(GL_CLIP_DISTANCE0 + k));
   drawLines(c, t, light, camera, view);
   glDisable(GL_CLIP_DISTANCE0);
-  composite(c, full ? 0 : 8, full ? 0 : 8, w, h);
+  composite(c, corner.x, corner.y, w, h);
+}
+
+std::optional<Inset> PostProjectiveView::inset(int frameWidth, int frameHeight) const {
+  if (mode_ != Mode::Inset) return std::nullopt;
+  const int w = std::max(16, int(float(frameWidth) * size_));
+  const int h = std::max(16, w * frameHeight / std::max(frameWidth, 1));
+  return Inset{"post-projective view inset", 8, 8, w, h};
 }
 
 // Into the frame without touching a measurement's attachments: the surfaces under the inset stay

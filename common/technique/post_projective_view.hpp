@@ -33,6 +33,14 @@ class PostProjectiveView {
   // Draws technique t's view of light `light` (-1: the one the view's parameter names) into
   // c.frame's framebuffer, after the lit frame. Nothing in a god-view frame.
   void draw(const ShadowContext& c, const ShadowTechnique& t, int light = -1);
+  // In inset mode, where the inset goes in a frameWidth x frameHeight frame (bottom-left, GL
+  // pixels): lessons report it in Lesson::insets so the UI stays clear of it.
+  std::optional<Inset> inset(int frameWidth, int frameHeight) const;
+  // The first column right of the inset (0 without one): where a lesson's own bottom-row view starts.
+  int rightOfInset(int frameWidth, int frameHeight) const {
+    const auto i = inset(frameWidth, frameHeight);
+    return i ? i->x + i->width + 8 : 0;
+  }
 
  private:
   glm::mat4 displayView() const;
@@ -50,7 +58,9 @@ class PostProjectiveView {
   int light_ = 0;          // whose light and light camera the view shows
   gl::RenderTarget target_;
   gl::Program scene_{"post-projective view: scene", {"common/post_projective.vert", "common/post_projective.frag"}};
-  gl::Program lines_{"post-projective view: lines", {"common/post_lines.vert", "common/lines.frag"}};
+  gl::Program lines_{"post-projective view: lines",
+                     {"common/post_lines.vert", "common/lines.geom", "common/lines.frag"},
+                     {"CLIP_DISTANCE0"}};
   gl::Program blit_{"post-projective view: composite", {"common/fullscreen.vert", "common/overlay.frag"}};
   gl::VertexArray linesVao_, emptyVao_;
   gl::Buffer lineVertices_;

@@ -153,14 +153,16 @@ class OriginalPsmLesson : public Lesson {
     // ==== 4. light 0's map (view=map) ===============================================================
     if (p_.view == View::Map && p_.technique == Technique::Psm && !f.godView) {
       auto t = scope("map view");
-      const int side = std::min(f.width, f.height) / 2;
-      psm_.drawMaps(0, 0, f.height - side, side, side);
+      const int side = std::min(f.width, f.height) / 2, x = postView_.rightOfInset(f.width, f.height);
+      psm_.drawMaps(0, x, 0, side, side);  // bottom left, beside the post-projective inset: the UI is at the top
+      insets.push_back({"map view", x, 0, side, side});
     }
 
     // ==== 5. the post-projective view: the unit cube, the squashed scene, the light, the slide =====
     if (postView_.enabled()) {
       auto t = scope("post-projective view");
       postView_.draw(c, technique);
+      if (auto i = postView_.inset(f.width, f.height); i && !f.godView) insets.push_back(*i);
     }
   }
 

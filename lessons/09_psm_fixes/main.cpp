@@ -158,15 +158,19 @@ class PsmFixesLesson : public Lesson {
     // ==== 4. light 0's maps side by side (view=maps) ===============================================
     if (p_.view == View::Maps && !f.godView) {
       auto t = scope("map view");
-      const int h = f.height / 3, w = std::min(f.width, h * 6);
-      if (p_.technique == Technique::Psm) psm_.drawMaps(0, 0, f.height - h, w, h);
-      if (p_.technique == Technique::Lispsm) lispsm_.drawMaps(0, 0, f.height - h, h, h);
+      // A band along the bottom, beside the post-projective inset (the UI is at the top).
+      const int x = postView_.rightOfInset(f.width, f.height), h = f.height / 3;
+      const int w = p_.technique == Technique::Psm ? std::min(f.width - x, h * 6) : h;
+      if (p_.technique == Technique::Psm) psm_.drawMaps(0, x, 0, w, h);
+      if (p_.technique == Technique::Lispsm) lispsm_.drawMaps(0, x, 0, w, h);
+      if (p_.technique != Technique::Uniform) insets.push_back({"map view", x, 0, w, h});
     }
 
     // ==== 5. the post-projective view: the unit cube, the light there, its cone, maps, key points ==
     if (postView_.enabled()) {
       auto t = scope("post-projective view");
       postView_.draw(c, technique);
+      if (auto i = postView_.inset(f.width, f.height); i && !f.godView) insets.push_back(*i);
     }
   }
 

@@ -11,8 +11,19 @@ uniform float uWidth;    // pixels
 in vec4 vColor[];
 out vec4 gColor;
 
+#ifdef CLIP_DISTANCE0
+// The post-projective view's lines (post_lines.vert) are clipped at their own w = 0 by
+// gl_ClipDistance[0]: clip the segment here first, as the rasteriser would have.
+#endif
+
 void main() {
   vec4 a = gl_in[0].gl_Position, b = gl_in[1].gl_Position;
+#ifdef CLIP_DISTANCE0
+  float ca = gl_in[0].gl_ClipDistance[0], cb = gl_in[1].gl_ClipDistance[0];
+  if (ca < 0.0 && cb < 0.0) return;
+  if (ca < 0.0) a = mix(a, b, ca / (ca - cb));
+  if (cb < 0.0) b = mix(b, a, cb / (cb - ca));
+#endif
   float da = a.z + a.w, db = b.z + b.w;  // signed distance to the near plane, in clip units
   if (da < 0.0 && db < 0.0) return;
   if (da < 0.0) a = mix(a, b, da / (da - db));
@@ -29,6 +40,9 @@ void main() {
     vec4 p = i < 2 ? a : b;
     gl_Position = vec4(p.xy + offsets[i] * h * p.w, p.zw);
     gColor = vColor[i < 2 ? 0 : 1];
+#ifdef CLIP_DISTANCE0
+    gl_ClipDistance[0] = 1.0;  // already clipped above
+#endif
     EmitVertex();
   }
   EndPrimitive();
