@@ -156,6 +156,7 @@ async function buildDeck(file, opts, figures, usedFigures) {
       if (img.href.startsWith('lesson:')) {
         let spec;
         try { spec = parseFigureUrl(img.href); } catch (e) { throw new DeckError(where, 0, e.message); }
+        if (spec.zoom) img.zoom = { ...spec.zoom, size: spec.size };
         jobs.push(figures.render(spec).then((out) => { img.href = out; usedFigures.add(out); })
           .catch((e) => { throw Object.assign(new Error(e.message), { where }); }));
       } else {

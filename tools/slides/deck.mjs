@@ -83,6 +83,17 @@ function renderMath(tex, displayMode, ctx) {
 //   ctx.figures   image tokens whose href starts with "lesson:" (href is rewritten later)
 //   ctx.images    other local images to copy next to the deck
 //   ctx.mathErrors formulas KaTeX could not parse
+// A figure's image; with zoom (figures.mjs) only its region, enlarged, in a box of the figure's
+// size and aspect that clips the rest (CSS only: the PNG stays whole, and so does its cache).
+function figureImage(t) {
+  const img = `<img src="${escapeHtml(t.href)}" alt="${escapeHtml(t.text)}">`;
+  const z = t.zoom;
+  if (!z) return img;
+  const [w, h] = z.size.split('x').map(Number);
+  const style = `width:${w}px;aspect-ratio:${w}/${h};--zx:${z.x};--zy:${z.y};--zw:${z.w}`;
+  return `<span class="zoom" style="${style}" title="enlarged ${(1 / z.w).toFixed(1)}x">${img}</span>`;
+}
+
 export function makeMarkdown() {
   const md = new Marked({ gfm: true, breaks: false });
   let ctx = null;
@@ -121,8 +132,7 @@ export function makeMarkdown() {
         if (items.length && items.every((t) => t.type === 'image')) {
           const figs = items.map((t) => {
             const caption = t.tokens?.length ? this.parser.parseInline(t.tokens) : escapeHtml(t.text);
-            return `<figure><img src="${escapeHtml(t.href)}" alt="${escapeHtml(t.text)}">` +
-              (t.text.trim() ? `<figcaption>${caption}</figcaption>` : '') + '</figure>';
+            return `<figure>${figureImage(t)}` + (t.text.trim() ? `<figcaption>${caption}</figcaption>` : '') + '</figure>';
           });
           return `<div class="figrow figrow-${figs.length}">${figs.join('')}</div>\n`;
         }

@@ -1,4 +1,4 @@
-// Figures rendered by the lessons themselves: `lesson:NN_name?preset=P&set=k=v&size=WxH&frames=N`
+// Figures rendered by the lessons themselves: `lesson:NN_name?preset=P&set=k=v&size=WxH&frames=N&zoom=X,Y,W`
 // runs build/<preset>/bin/lesson_NN_name --headless ... --screenshot FILE.png. PNGs are cached by a
 // hash of the command line and the binary's size and mtime, so an unchanged lesson is not re-run and
 // a rebuilt one always is. A failed render fails the build with the lesson's own message.
@@ -32,7 +32,17 @@ export function parseFigureUrl(url) {
     } else if (key === 'frames') {
       if (!/^[1-9]\d{0,3}$/.test(value)) throw new FigureError(`figure "${url}": frames=${value} is not a positive count`);
       spec.frames = Number(value);
-    } else throw new FigureError(`figure "${url}": unknown option "${key}" (preset, set, size, frames)`);
+    } else if (key === 'zoom') {
+      // zoom=X,Y,W: show only the region of the figure from (X, Y) (fractions of its width and
+      // height from the top left), W of its width wide and W of its height high, enlarged to the
+      // figure's size: where two pictures of a comparison differ (the lesson renders it whole).
+      const z = value.split(',').map(Number);
+      if (z.length !== 3 || z.some((v) => !Number.isFinite(v)) || z[2] <= 0 || z[2] > 1 || z[0] < 0 || z[1] < 0 ||
+          z[0] + z[2] > 1 + 1e-9 || z[1] + z[2] > 1 + 1e-9) {
+        throw new FigureError(`figure "${url}": zoom=${value} is not X,Y,W with 0 < W <= 1, X + W <= 1 and Y + W <= 1`);
+      }
+      spec.zoom = { x: z[0], y: z[1], w: z[2] };
+    } else throw new FigureError(`figure "${url}": unknown option "${key}" (preset, set, size, frames, zoom)`);
   }
   if (!spec.preset) throw new FigureError(`figure "${url}": needs preset=NAME (a figure always names a lesson preset)`);
   return spec;

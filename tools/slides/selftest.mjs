@@ -84,6 +84,14 @@ expect('builder fails on an unknown preset', preset404.build.code === 1 && /no p
 const badSet = deck('bad_set', `# Bad\n\n![x](lesson:${lesson}?preset=${preset}&set=no_such_parameter_xyz=1&size=160x90)\n`);
 expect('builder fails when the lesson rejects a --set', badSet.build.code === 1 && /failed \(exit 2\)/.test(badSet.build.output), badSet.build.output);
 
+// 6b. A zoom outside the figure: the build names the option and its valid range. A zoomed figure
+// builds and is drawn as the enlarged region (a clipping box holding the whole image).
+const badZoom = deck('bad_zoom', `# Bad\n\n![x](lesson:${lesson}?preset=${preset}&size=160x90&zoom=0.9,0,0.2)\n`);
+expect('builder fails on a zoom outside the figure', badZoom.build.code === 1 && /zoom=0\.9,0,0\.2 is not X,Y,W/.test(badZoom.build.output), badZoom.build.output);
+const zoomed = deck('zoom', `# Zoom\n\n![x](lesson:${lesson}?preset=${preset}&size=160x90&frames=1&zoom=0.5,0.25,0.5)\n`);
+const zoomHtml = zoomed.build.code === 0 ? fs.readFileSync(zoomed.html, 'utf8') : '';
+expect('a zoomed figure builds into a clipping box', /<span class="zoom" style="width:160px;aspect-ratio:160\/90;--zx:0.5;--zy:0.25;--zw:0.5"[^>]*><img /.test(zoomHtml), zoomed.build.output + zoomHtml.slice(0, 2000));
+
 // 7. A console error and a page error.
 const script = deck('console_error', `# Bad\n\n<script>console.error('selftest boom')</script>\n`);
 const scriptCheck = node(CHECK, [script.html, '--expect-slides', '1']);
