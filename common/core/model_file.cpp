@@ -1,5 +1,6 @@
 #include "core/model_file.hpp"
 
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -39,6 +40,9 @@ std::string oneLine(std::string s) {
 // meshes had no normals; Assimp generates them only on unwelded ("verbose") vertices.
 constexpr unsigned kImportSteps =
     aiProcess_SortByPType | aiProcess_FlipUVs | aiProcess_ValidateDataStructure | aiProcess_FindDegenerates;
+
+// Generated normals smooth across edges up to this angle; sharper ones (a box's corners) stay creased.
+constexpr float kCreaseDegrees = 60.0f;
 
 glm::mat4 toGlm(const aiMatrix4x4& m) {
   // Assimp's matrices are row-major with translation in the last column; glm is column-major.
@@ -171,8 +175,9 @@ void sortPrimitives(Assimp::Importer& importer, const aiScene*& in, ModelFile& o
     out.notes.push_back("skipped " + std::to_string(out.skippedPoints) + " points and " +
                         std::to_string(out.skippedLines) + " lines (only triangles cast and receive shadows)");
   if (out.meshesWithoutNormals)
-    out.notes.push_back(std::to_string(out.meshesWithoutNormals) +
-                        " meshes had no normals: generated smooth ones from the faces");
+    out.notes.push_back(std::to_string(out.meshesWithoutNormals) + " meshes had no normals: generated smooth ones " +
+                        "from the faces (creases over " + std::to_string(int(kCreaseDegrees)) + " degrees kept)");
+  importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, kCreaseDegrees);
   in = importer.ApplyPostProcessing(aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices);
   if (!in) fail(out.path, "generating normals failed: " + oneLine(importer.GetErrorString()));
 }

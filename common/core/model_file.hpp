@@ -5,7 +5,7 @@
 //
 // Real files are messy; each case gets a stated outcome, never a crash:
 //   polygons              triangulated (Assimp's ear clipping, concave ones included)
-//   missing normals       generated (smooth, from the faces) and said so in notes
+//   missing normals       generated (smooth from the faces, creases over 60 degrees kept), noted
 //   missing or unreadable textures   the material's diffuse colour is used, named in notes
 //   points and lines      skipped, counted, said so in notes
 //   embedded textures (.glb)         not read: the diffuse colour, said so in notes
@@ -49,10 +49,11 @@ ModelFile loadModelFile(const std::string& path);
 ModelFile loadModelFromMemory(const void* data, std::size_t size, const std::string& hint,
                               const std::string& name = "memory");
 
-// The model placed for a lesson: scaled so its largest side is `size` metres, centred on the origin
+// The model placed for a lesson: scaled so its largest side is `size` metres (the showcase's shapes
+// are 2 to 3 m, its circle of them 9 m across), centred on the origin
 // in x and z, standing on y = 0, on a checker ground plane `groundSize` metres wide that receives
 // shadows and casts none (as the procedural scenes' grounds): object 0, mesh 0 and material 0.
-Scene placeOnGround(const ModelFile& model, float size = 6.0f, float groundSize = 30.0f);
+Scene placeOnGround(const ModelFile& model, float size = 4.0f, float groundSize = 30.0f);
 
 // The process's current model: what scene=model draws in every lesson (technique/scene_cache). The
 // app loads it from --model or a file dropped on the window; each load bumps the generation, so

@@ -131,20 +131,29 @@ TEST_CASE("model: missing normals are generated, and said so") {
   checkInvariants(m);
   CHECK(m.meshesWithoutNormals == 1);
   CHECK(anyNote(m, "no normals: generated"));
-  // Assimp's smooth normals: the mean of the unit normals of the triangles at the position (a quad's
-  // diagonal corners count twice), so they point out of the cube's corners, tilted toward those faces.
+  // A cube's edges are 90-degree creases, over the 60 degrees smoothed: each corner keeps its face's normal.
   const Mesh all = flatten(m.scene);
-  for (std::size_t i = 0; i < all.vertexCount(); ++i) {
-    glm::vec3 sum(0.0f);
-    for (std::size_t t = 0; t < all.indices.size(); t += 3) {
-      const glm::vec3 a = all.positions[all.indices[t]], b = all.positions[all.indices[t + 1]],
-                      c = all.positions[all.indices[t + 2]];
-      if (a == all.positions[i] || b == all.positions[i] || c == all.positions[i])
-        sum += glm::normalize(glm::cross(b - a, c - a));
-    }
-    CHECK(glm::dot(all.normals[i], glm::normalize(sum)) == doctest::Approx(1.0f).epsilon(1e-4));
-    CHECK(glm::dot(all.normals[i], glm::normalize(all.positions[i])) > 0.9f);
+  for (std::size_t t = 0; t < all.indices.size(); t += 3) {
+    const glm::vec3 a = all.positions[all.indices[t]], b = all.positions[all.indices[t + 1]],
+                    c = all.positions[all.indices[t + 2]];
+    const glm::vec3 face = glm::normalize(glm::cross(b - a, c - a));
+    for (std::size_t k = 0; k < 3; ++k) CHECK(glm::dot(all.normals[all.indices[t + k]], face) == doctest::Approx(1.0f));
   }
+  // A roof bent by 20 degrees is smoothed: the ridge's normals are the mean of the two faces' (+y).
+  const std::string roof =
+      "v -1 0 -1\nv -1 0 1\nv 0 0.176327 -1\nv 0 0.176327 1\nv 1 0 -1\nv 1 0 1\n"
+      "f 1 2 4\nf 1 4 3\nf 3 4 5\nf 4 6 5\n";  // per ridge corner, as many triangles each side
+  const ModelFile bent = loadModelFromMemory(roof.data(), roof.size(), "obj", "roof.obj");
+  checkInvariants(bent);
+  CHECK(bent.meshesWithoutNormals == 1);
+  const Mesh r = flatten(bent.scene);
+  std::size_t ridge = 0;
+  for (std::size_t i = 0; i < r.vertexCount(); ++i)
+    if (r.positions[i].x == 0.0f) {
+      ++ridge;
+      CHECK(glm::dot(r.normals[i], glm::vec3(0, 1, 0)) == doctest::Approx(1.0f));
+    }
+  CHECK(ridge == 2);
   CHECK(loadModelFile(kModels + "cube.obj").meshesWithoutNormals == 0);
 }
 
@@ -219,10 +228,13 @@ TEST_CASE("model: the OBJ fixtures of the former hand-written parser load the sa
   CHECK(analyseTopology(t).closed());
   for (std::size_t i = 0; i < t.vertexCount(); ++i) {
     CHECK(t.uvs[i] == glm::vec2(0.0f));
-    // Outward: away from the tetrahedron's centroid; the origin's three faces are -x, -y, -z.
+    // Outward: away from the tetrahedron's centroid.
     CHECK(glm::dot(t.normals[i], t.positions[i] - glm::vec3(0.25f)) > 0.0f);
-    if (t.positions[i] == glm::vec3(0.0f))
-      CHECK(glm::dot(t.normals[i], -glm::normalize(glm::vec3(1))) == doctest::Approx(1.0f));
+  }
+  // Its faces meet at 90 and 125 degrees, creases all: every corner has its face's normal.
+  for (std::size_t k = 0; k < t.indices.size(); k += 3) {
+    const glm::vec3 a = t.positions[t.indices[k]], b = t.positions[t.indices[k + 1]], c = t.positions[t.indices[k + 2]];
+    CHECK(glm::dot(t.normals[t.indices[k]], glm::normalize(glm::cross(b - a, c - a))) == doctest::Approx(1.0f));
   }
 }
 
