@@ -158,7 +158,8 @@ glm::vec4 homogeneousLight(const Light& light) {
                                               : glm::vec4(light.position, 1.0f);
 }
 
-std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::vec4& light, SilhouetteTest test) {
+std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::vec4& light, SilhouetteTest test,
+                                           bool twoSided) {
   // The corner of face f that is not on edge (a, b).
   auto third = [&](std::int32_t f, std::uint32_t a, std::uint32_t b) {
     for (int k = 0; k < 3; ++k) {
@@ -172,16 +173,19 @@ std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::
     const bool lit0 = facesLight(adj.planes[std::size_t(e.face0)], light);
     if (e.face1 < 0) {
       if (lit0) out.push_back({e.a, e.b});
+      else if (twoSided) out.push_back({e.b, e.a});  // the face flipped toward the light walks b -> a
       continue;
     }
+    const std::size_t before = out.size();
     if (test) {
       if (test(adj.positions[e.a], adj.positions[e.b], third(e.face0, e.a, e.b), third(e.face1, e.a, e.b), light))
         out.push_back(lit0 ? SilhouetteEdge{e.a, e.b} : SilhouetteEdge{e.b, e.a});
-      continue;
+    } else {
+      const bool lit1 = facesLight(adj.planes[std::size_t(e.face1)], light);
+      if (lit0 && !lit1) out.push_back({e.a, e.b});
+      else if (lit1 && !lit0) out.push_back({e.b, e.a});  // face1 walks b -> a
     }
-    const bool lit1 = facesLight(adj.planes[std::size_t(e.face1)], light);
-    if (lit0 && !lit1) out.push_back({e.a, e.b});
-    else if (lit1 && !lit0) out.push_back({e.b, e.a});  // face1 walks b -> a
+    if (twoSided && out.size() > before) out.push_back(out.back());  // the flipped faces' volume's side
   }
   return out;
 }
@@ -196,9 +200,9 @@ bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, co
 }
 
 VolumeCounts buildVolume(const EdgeAdjacency& adj, const glm::vec4& light, bool caps, std::vector<glm::vec4>& out,
-                         std::vector<SilhouetteEdge>* silhouette, SilhouetteTest test) {
+                         std::vector<SilhouetteEdge>* silhouette, SilhouetteTest test, bool twoSided) {
   VolumeCounts n;
-  const std::vector<SilhouetteEdge> edges = findSilhouette(adj, light, test);
+  const std::vector<SilhouetteEdge> edges = findSilhouette(adj, light, test, twoSided);
   n.silhouetteEdges = edges.size();
   for (const SilhouetteEdge& e : edges) {
     const glm::vec3 &a = adj.positions[e.a], &b = adj.positions[e.b];
@@ -343,7 +347,8 @@ void buildSceneVolumes(const Scene& scene, const std::vector<EdgeAdjacency>& adj
     const EdgeAdjacency& adj = adjacency[obj.mesh];
     local.clear();
     // In the object's space: the model matrix goes on afterwards, vertex by vertex.
-    const VolumeCounts n = buildVolume(adj, glm::inverse(obj.model) * lightWorld, adj.closed(), local, &edges, test);
+    const VolumeCounts n =
+        buildVolume(adj, glm::inverse(obj.model) * lightWorld, adj.closed(), local, &edges, test, !adj.closed());
     out.sides.back() = int(n.sideTriangles * 3);
     out.caps.back() = int(local.size()) - out.sides.back();
     for (const glm::vec4& v : local)

@@ -69,8 +69,13 @@ using SilhouetteTest = bool (*)(const glm::vec3& a, const glm::vec3& b, const gl
 // Edges between a face toward the light and a face away from it, plus the boundary edges of faces
 // toward the light (what an open mesh's volume needs under z-pass). `light` in the mesh's space.
 // With `test`, paired edges are judged by it instead of the faces' planes.
+// `twoSided` (open meshes): an open surface shows the light its back wherever a face is turned
+// away, so those faces cast too, as if flipped: a second volume over the faces away from the
+// light, whose edges are the same silhouette edges again (flipped faces walk them the same way)
+// and the faces' boundary edges reversed. Without it an open chimney's far walls, seen from the
+// light through its top, cast nothing (the leak gpu.04_shadow_volumes.model_open_mesh found).
 std::vector<SilhouetteEdge> findSilhouette(const EdgeAdjacency& adj, const glm::vec4& light,
-                                           SilhouetteTest test = nullptr);
+                                           SilhouetteTest test = nullptr, bool twoSided = false);
 // The same test written on four points, as the exercise asks: edge (a, b) shared by the faces
 // (a, b, c) and (b, a, d) is a silhouette when exactly one of them faces the light.
 bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
@@ -89,7 +94,8 @@ struct VolumeCounts {
   std::size_t silhouetteEdges = 0, sideTriangles = 0, capTriangles = 0;
 };
 VolumeCounts buildVolume(const EdgeAdjacency& adj, const glm::vec4& light, bool caps, std::vector<glm::vec4>& out,
-                         std::vector<SilhouetteEdge>* silhouette = nullptr, SilhouetteTest test = nullptr);
+                         std::vector<SilhouetteEdge>* silhouette = nullptr, SilhouetteTest test = nullptr,
+                         bool twoSided = false);
 
 // ---- Projection ------------------------------------------------------------------------------------
 // OpenGL perspective (depth in [-1, 1]) with the far plane at infinity: a point at infinity, (x, y,

@@ -20,6 +20,7 @@
 #include "app/god_view.hpp"
 #include "app/input.hpp"
 #include "app/lesson.hpp"
+#include "app/model_choice.hpp"
 #include "app/outputs.hpp"
 #include "app/ui.hpp"
 #include "core/cli.hpp"
@@ -74,6 +75,7 @@ class Runner {
 
   int run(int argc, char** argv) {
     if (Exit e = parse(argc, argv)) return *e;
+    if (!cl_.model.empty() && !loadModelReporting(cl_.model, info_.name)) return 1;  // a bad file: exit 1
     if (Exit e = openContext()) return *e;
     if (Exit e = initLesson()) return *e;
     if (Exit e = openOutputs()) return *e;
@@ -103,7 +105,10 @@ class Runner {
       checkHotkeys();
       if (Exit e = answerQueries(argv[0])) return e;
       if (!cl_.preset.empty()) presets_.apply(cl_.preset, params_);
-      params_.assignAll(cl_.sets);       // one change: checked once, whatever the order
+      if (!cl_.model.empty()) cl_.sets.insert(cl_.sets.begin(), modelSceneAssignment(params_, info_.name));
+      params_.assignAll(cl_.sets);  // one change: checked once, whatever the order
+      if (cl_.model.empty() && sceneIsModel(params_))
+        throw CliError("scene=model draws the file given with --model FILE (OBJ + MTL, glTF 2.0); none given");
       homeCamera_ = lesson_.camera;      // Home comes back here
     } catch (const std::exception& e) {  // CliError, ParamError
       std::cerr << info_.name << ": " << e.what() << '\n';
@@ -280,6 +285,8 @@ class Runner {
       status_ = "camera reset";
     }
     if (divider != ab_.divider()) ab_.setDivider(divider);
+    if (!input_.dropped.empty()) status_ = loadDroppedModel(input_.dropped.back(), params_, info_.name);
+    input_.dropped.clear();
     if (input_.uiScaleSteps != 0) {
       ui_.setScale(ui_.scale() * std::pow(1.15f, float(input_.uiScaleSteps)));
       input_.uiScaleSteps = 0;

@@ -31,6 +31,11 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   else if (!ctrl) g_input->pressed.push_back(key);
 }
 
+void onDrop(GLFWwindow*, int count, const char** paths) {
+  if (g_input)
+    for (int i = 0; i < count; ++i) g_input->dropped.emplace_back(paths[i]);
+}
+
 // Window width in the cursor's coordinates (screen coordinates, not framebuffer pixels).
 double windowWidth(GLFWwindow* w) {
   int ww = 1, wh = 1;
@@ -45,6 +50,7 @@ void installInputCallbacks(GLFWwindow* window, Input* input) {
   if (!window) return;
   glfwSetScrollCallback(window, onScroll);
   glfwSetKeyCallback(window, onKey);
+  glfwSetDropCallback(window, onDrop);
 }
 
 void uninstallInputCallbacks() { g_input = nullptr; }

@@ -27,6 +27,7 @@ struct Input {
   bool toggleFullscreen = false;
   std::vector<int> pressed;  // plain key presses, for parameter hotkeys
   bool draggingDivider = false;
+  std::vector<std::string> dropped;  // files dropped on the window (a model to load)
 };
 
 // Routes the window's scroll and key events into `input` (one window per process). Call again

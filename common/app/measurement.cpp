@@ -198,7 +198,7 @@ Measurement::Readback Measurement::readBack(int factor) {
 void Measurement::ensureTruth(const MeasureSource& source) {
   for (const Material& m : source.scene->materials)
     if (m.alphaCutoff > 0 && !m.texture.empty() && !textures_.count(m.texture))
-      textures_[m.texture] = loadImage(textureRoot() + "/" + m.texture, 4);
+      textures_[m.texture] = loadImage(texturePath(m.texture), 4);
   if (!truth_ || truthScene_ != source.scene || truthRevision_ != source.sceneRevision) {
     truth_ = std::make_unique<measure::GroundTruth>(*source.scene, textures_);
     truthScene_ = source.scene;

@@ -19,6 +19,7 @@ constexpr Flag kFlags[] = {
     {"--screenshot", "FILE", "write the last frame as PNG"},
     {"--set", "NAME=VALUE", "set a parameter (repeatable; after --preset)"},
     {"--preset", "NAME", "start from a named preset (see --list-presets)"},
+    {"--model", "FILE", "draw a model file (OBJ + MTL, glTF 2.0 .gltf/.glb) on the ground: sets scene=model"},
     {"--bench", "FILE", "write per-pass GPU and CPU ms of every frame as CSV"},
     {"--measure", "FILE",
      "measure the last frame against ground truth: figures as JSON, heatmaps as PNG (FILE with %d: every frame)"},
@@ -93,6 +94,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
         throw CliError("--set: '" + value + "' is not NAME=VALUE");
       cl.sets.push_back(value);
     } else if (flag == "--preset") cl.preset = value;
+    else if (flag == "--model") cl.model = value;
     else if (flag == "--bench") cl.bench = value;
     else if (flag == "--measure") cl.measure = value;
     else if (flag == "--record") cl.record = value;

@@ -24,6 +24,7 @@ struct CommandLine {
   std::string screenshot;         // write the last frame here (PNG)
   std::vector<std::string> sets;  // "name=value", applied after the preset, in order
   std::string preset;
+  std::string model;      // a model file for scene=model (core/model_file)
   std::string bench;      // per-pass GPU and CPU ms over the frames, CSV
   std::string measure;    // ground-truth error figures of the last frame, JSON
   std::string record;     // record the camera/light path to this file (windowed)

@@ -22,4 +22,8 @@ std::string shaderRoot() { return sourceRoot() + "/shaders"; }
 
 std::string textureRoot() { return sourceRoot() + "/textures"; }
 
+std::string texturePath(const std::string& name) {
+  return !name.empty() && name.front() == '/' ? name : textureRoot() + "/" + name;
+}
+
 }  // namespace shadowlab

@@ -13,5 +13,8 @@ std::string sourceRoot();
 std::string shaderRoot();
 // sourceRoot() + "/textures".
 std::string textureRoot();
+// A Material::texture as a file: an absolute path (a model's own texture, core/model_file) as it
+// is, a name under textureRoot() otherwise.
+std::string texturePath(const std::string& name);
 
 }  // namespace shadowlab

@@ -21,7 +21,7 @@ Texture uploadTexture(const Image8& image, const std::string& label, bool mipmap
   glBindTexture(GL_TEXTURE_2D, tex.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   // The course's uv convention: v = 0 is the image's FIRST (top) row, so files go up unflipped.
-  // Procedural meshes are built for it, core/obj_loader flips OBJ's v, and the ground truth's alpha
+  // Procedural meshes are built for it, core/model_file flips model files' v, and the ground truth's alpha
   // test (common/measure) samples the same way: rasteriser and rays see the same holes.
   glTexImage2D(GL_TEXTURE_2D, 0, GLint(kInternal[image.channels]), image.width, image.height, 0,
                kFormats[image.channels], GL_UNSIGNED_BYTE, image.data.data());
@@ -42,7 +42,7 @@ Texture uploadTexture(const Image8& image, const std::string& label, bool mipmap
 }
 
 Texture loadTexture(const std::string& name) {
-  return uploadTexture(loadImage(textureRoot() + "/" + name, 4), "texture:" + name);
+  return uploadTexture(loadImage(texturePath(name), 4), "texture:" + name);
 }
 
 Image8 readPixels(GLuint fbo, int width, int height) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "algorithms/light_cameras.hpp"
+#include "core/model_file.hpp"
 #include "core/params.hpp"
 #include "core/scene.hpp"
 #include "gl/mesh_gpu.hpp"
@@ -16,8 +17,10 @@
 namespace shadowlab::tech {
 
 // Which procedural scene, and how big: the parameters `scene` and `triangles` every scene lesson has.
+// The last choice, "model", is the model file given with --model (or dropped on the window), placed
+// on the ground (core/model_file's placeOnGround); `triangles` does not change it.
 struct SceneChoice {
-  int scene = 0;           // index into sceneNames()
+  int scene = 0;           // index into SceneCache::choices()
   int triangles = 100000;  // target size (10k to 1M)
 };
 
@@ -28,8 +31,13 @@ class SceneCache {
   // reasons for its defaults.
   static void declare(ParamRegistry& r, SceneChoice* choice, const std::string& whyScene,
                       const std::string& whyTriangles);
-  // Builds makeScene(name, seed 1, triangles) when the choice changed. Returns true when it did.
+  // Builds makeScene(name, seed 1, triangles), or the placed model, when the choice or the model
+  // changed. Returns true when it did. Throws std::runtime_error for "model" with none loaded.
   bool update(const SceneChoice& choice);
+
+  // sceneNames(), then "model" (core/model_file's currentModel()).
+  static std::vector<std::string> choices();
+  static bool isModel(const SceneChoice& choice) { return std::size_t(choice.scene) + 1 == choices().size(); }
 
   const Scene& scene() const { return scene_; }
   const gl::GpuScene& gpu() const { return gpu_; }

@@ -145,9 +145,13 @@ void StencilVolumes::renderLit(const ShadowContext& c, const LitSettings& lit) {
   }
   pushGodViewShapes(c, shown);
   if (fi.godView) return;
-  std::size_t open = 0;
+  std::size_t open = 0, openEdges = 0;  // open edges: boundary, non-manifold and flipped ones, per object
   const Scene& scene = c.scene.scene();
-  for (std::size_t o = 0; o < scene.objects.size(); ++o) open += !adjacency_[scene.objects[o].mesh].closed();
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    const volume::EdgeAdjacency& a = adjacency_[scene.objects[o].mesh];
+    open += !a.closed();
+    openEdges += a.boundaryEdges + a.nonManifoldEdges + a.inconsistentEdges;
+  }
   stats_ = {};
   stats_.culls = false;
   stats_.triangles = volumeTriangles_;
@@ -155,6 +159,7 @@ void StencilVolumes::renderLit(const ShadowContext& c, const LitSettings& lit) {
                   {"z-fail objects", std::to_string(zFailCount_)},
                   {"open meshes", std::to_string(open) +
                                       (p_.openMeshes == P::OpenMeshes::Skip ? " (cast nothing)" : " (z-pass only)")},
+                  {"open edges", std::to_string(openEdges)},
                   {"silhouette edges", std::to_string(shown.silhouette.size() / 2)}};
   for (std::size_t i = 0; i < c.lights.size(); ++i) {
     stats_.bytes += caches_[i].triangles.size() * sizeof(glm::vec4);
@@ -295,6 +300,7 @@ void StencilVolumes::drawVolumes(const Frame& f, const VolumeCache& c, const glm
       if (!casts(o) || bool(f.zFail[o]) != zFail) continue;
       const AdjacencyMesh& g = adjacencyGpu_[scene.objects[o].mesh];
       volumeGs_.set("uModel", scene.objects[o].model);
+      volumeGs_.set("uTwoSided", !adjacency_[scene.objects[o].mesh].closed());
       glBindVertexArray(g.vao.id());
       glDrawElements(GL_TRIANGLES_ADJACENCY, g.count, GL_UNSIGNED_INT, nullptr);
       gl::countDraws();

@@ -20,6 +20,7 @@
 // Exercises (exercises.hpp): silhouettes, the infinite projection, the stencil ops, the near-plane
 // test. `--set impl=student` runs YOUR versions in the lesson.
 #include <cmath>
+#include <iostream>
 
 #include "algorithms/lighting.hpp"
 #include "app/lesson.hpp"
@@ -87,7 +88,7 @@ class ShadowVolumeLesson : public Lesson {
   }
 
   void update(const FrameInfo& f) override {
-    scene_.update(p_.scene);
+    if (scene_.update(p_.scene) && tech::SceneCache::isModel(p_.scene)) useOpenMeshPath();
     if (p_.animate) {
       const float a = float(f.time) * 0.6f;
       p_.lights[1].position = {4.0f * std::cos(a), p_.lights[1].position.y, 4.0f * std::sin(a)};
@@ -110,6 +111,27 @@ class ShadowVolumeLesson : public Lesson {
   }
 
  private:
+  // Real models are rarely closed: skipped, their open meshes would cast nothing. A loaded model
+  // with open edges switches open_meshes to z_pass_only (the panel shows it) and says so.
+  void useOpenMeshPath() {
+    // Mesh 0 is the ground (core/model_file's placeOnGround): open too, but it casts nothing either way.
+    const std::vector<Mesh>& meshes = scene_.scene().meshes;
+    std::size_t openMeshes = 0, openEdges = 0;
+    for (std::size_t i = 1; i < meshes.size(); ++i) {
+      const Topology t = analyseTopology(meshes[i]);
+      openMeshes += !t.closed();
+      openEdges += t.boundaryEdges + t.nonManifoldEdges + t.inconsistentEdges;
+    }
+    std::cerr << "04_shadow_volumes: " << scene_.scene().name << ": " << openEdges << " open edges in " << openMeshes
+              << " of " << meshes.size() - 1 << " meshes";
+    auto& open = volumes_.params().openMeshes;
+    if (openEdges > 0 && open == tech::StencilVolumeParams::OpenMeshes::Skip) {
+      open = tech::StencilVolumeParams::OpenMeshes::ZPassOnly;
+      std::cerr << ": open_meshes=z_pass_only (their volumes have holes; z-pass counts them without caps)";
+    }
+    std::cerr << '\n';
+  }
+
   Params p_;
   tech::SceneCache scene_{"04 scene"};
   tech::StencilVolumes volumes_;

@@ -5,6 +5,7 @@
 # pixels are excluded by the edge-tolerant figure (common/measure/metrics.hpp). As a control, z-pass
 # with the eye inside a volume must be badly wrong: the check can tell a right answer from a wrong one.
 # Run: cmake -DLESSON=... -DOUT_DIR=... -P this
+include(${CMAKE_CURRENT_LIST_DIR}/volume_figures.cmake)
 function(measure name expect)
   execute_process(COMMAND ${LESSON} --headless --frames 2 --size 480x270 --strict-gl ${ARGN}
                           --measure ${OUT_DIR}/04_volumes_${name}.json
@@ -12,27 +13,7 @@ function(measure name expect)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${name}: lesson exited ${rc}: ${err}")
   endif()
-  file(READ ${OUT_DIR}/04_volumes_${name}.json json)
-  string(JSON facing GET "${json}" hard facing_pixels)
-  string(JSON edge_pct GET "${json}" hard edge_tolerant_pct)
-  string(JSON all_pct GET "${json}" hard misclassified_pct)
-  if(NOT facing GREATER 10000)
-    message(FATAL_ERROR "${name}: only ${facing} pixels face the light: the read-back lost the surface")
-  endif()
-  if(expect STREQUAL "exact")
-    # 0.2 % of the ~90k facing pixels is ~180 pixels: specks along the smooth shapes' terminators
-    # (shading normal toward the light, the facet itself away from it), never a wrong region. A
-    # broken count (z-pass in a volume, a missing cap) is wrong by tens of percent.
-    if(edge_pct GREATER 0.2)
-      message(FATAL_ERROR "${name}: ${edge_pct} % misclassified away from shadow boundaries (limit 0.2 %)")
-    endif()
-    if(all_pct GREATER 0.5)
-      message(FATAL_ERROR "${name}: ${all_pct} % misclassified in all (limit 0.5 %, boundaries included)")
-    endif()
-  elseif(NOT edge_pct GREATER 20)
-    message(FATAL_ERROR "${name}: only ${edge_pct} % wrong, but z-pass with the eye in a volume must fail")
-  endif()
-  message(STATUS "${name}: ${all_pct} % misclassified, ${edge_pct} % away from boundaries, of ${facing} facing pixels")
+  check_volume_figures(${name} ${expect} ${OUT_DIR}/04_volumes_${name}.json)
 endfunction()
 
 file(MAKE_DIRECTORY ${OUT_DIR})

@@ -39,6 +39,7 @@ struct Config {
 
 struct Options {
   std::string lesson, out, path, title = "shadowlab benchmark", size = "1280x720";
+  std::string model;  // --model FILE for every run (scene=model unless --scenes says otherwise)
   std::vector<Config> configs;
   std::vector<std::string> scenes;
   int pathSamples = 1, repeat = 3, frames = 6;
@@ -48,7 +49,8 @@ struct Options {
   std::cerr
       << "shadowlab_bench: " << error << "\n"
       << "usage: shadowlab_bench LESSON_PROGRAM --out DIR [--config \"label: name=value ...\"]... [--preset NAME]...\n"
-         "       [--scenes a,b] [--path FILE [--path-samples N]] [--repeat N] [--frames N] [--size WxH] [--title T]\n";
+         "       [--scenes a,b] [--model FILE] [--path FILE [--path-samples N]] [--repeat N] [--frames N] [--size WxH] "
+         "[--title T]\n";
   std::exit(2);
 }
 
@@ -88,15 +90,17 @@ Options parse(int argc, char** argv) {
       std::istringstream in(value());
       for (std::string s; std::getline(in, s, ',');)
         if (!s.empty()) o.scenes.push_back(s);
-    } else if (a == "--path") o.path = value();
+    } else if (a == "--model") o.model = value();
+    else if (a == "--path") o.path = value();
     else if (a == "--path-samples") o.pathSamples = toInt(a, value(), 1);
     else if (a == "--repeat") o.repeat = toInt(a, value(), 1);
     else if (a == "--frames") o.frames = toInt(a, value(), 1);
     else if (a == "--size") o.size = value();
     else if (a == "--title") o.title = value();
     else
-      usage("unknown argument '" + a +
-            "'; valid: --out --config --preset --scenes --path --path-samples --repeat --frames --size --title");
+      usage(
+          "unknown argument '" + a +
+          "'; valid: --out --config --preset --scenes --model --path --path-samples --repeat --frames --size --title");
   }
   if (o.out.empty()) usage("--out DIR is required");
   if (o.configs.empty()) o.configs.push_back({"defaults", {}});
@@ -196,6 +200,7 @@ bool runRepeat(const Options& o, const fs::path& runs, Job& job, int r) {
                                    "--frames",  std::to_string(o.frames),
                                    "--measure", (runs / (job.id + ".json")).string()};
   if (r == 0) args.insert(args.end(), {"--screenshot", (runs / (job.id + ".png")).string()});
+  if (!o.model.empty()) args.insert(args.end(), {"--model", o.model});
   if (!job.scene.empty()) args.insert(args.end(), {"--set", "scene=" + job.scene});
   args.insert(args.end(), job.config->args.begin(), job.config->args.end());
   if (job.pathTime >= 0) args.insert(args.end(), {"--replay", o.path + "@" + std::to_string(job.pathTime)});

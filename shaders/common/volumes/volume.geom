@@ -5,7 +5,9 @@
 // on each edge whose neighbour is turned away (the same rule as algorithms/shadow_volume.cpp, so
 // the CPU and GPU volumes agree); a triangle turned away emits the two caps when z-fail needs them.
 // An open edge's "neighbour" is the triangle's own third vertex, which makes it a silhouette edge
-// of a lit face, like the CPU path.
+// of a lit face, like the CPU path. uTwoSided (open meshes): a face turned away casts as if flipped,
+// emitting the reversed quad on each edge whose neighbour is toward the light (or open), as
+// findSilhouette(..., twoSided) does.
 layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 18) out;
 
@@ -13,6 +15,7 @@ in vec3 vWorld[];
 uniform mat4 uViewProj;
 uniform vec4 uLight;  // (position, 1) or (-direction, 0)
 uniform bool uCaps;
+uniform bool uTwoSided;
 
 bool facesLight(vec3 a, vec3 b, vec3 c) {
   return dot(cross(b - a, c - a), uLight.xyz - a * uLight.w) > 0.0;
@@ -32,6 +35,17 @@ void main() {
       gl_Position = onCaster(a); EmitVertex();
       gl_Position = atInfinity(b); EmitVertex();
       gl_Position = atInfinity(a); EmitVertex();
+      EndPrimitive();
+    }
+  } else if (uTwoSided) {
+    for (int k = 0; k < 3; ++k) {
+      vec3 a = v[2 * k], b = v[(2 * k + 2) % 6], d = v[2 * k + 1];
+      if (!facesLight(b, a, d)) continue;
+      // The flipped face walks b -> a: the quad (a, b, b_inf, a_inf) as a strip.
+      gl_Position = onCaster(a); EmitVertex();
+      gl_Position = onCaster(b); EmitVertex();
+      gl_Position = atInfinity(a); EmitVertex();
+      gl_Position = atInfinity(b); EmitVertex();
       EndPrimitive();
     }
   } else if (uCaps) {

@@ -1,0 +1,300 @@
+#include "core/model_file.hpp"
+
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <system_error>
+
+#include "core/image.hpp"
+#include "core/mesh_gen.hpp"
+#include "core/polygon.hpp"
+
+namespace shadowlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const std::string& name, const std::string& reason) {
+  throw ModelError("model '" + name + "': " + reason);
+}
+
+// Assimp's messages sometimes span lines; ours are one.
+std::string oneLine(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  std::replace(s.begin(), s.end(), '\r', ' ');
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s.empty() ? std::string("Assimp could not read it") : s;
+}
+
+// Degenerate faces and primitive types sorted out (points and lines end up in meshes of their own,
+// which we count and skip), uv v flipped to the toolkit's top-row origin, the structure validated.
+// Polygons are triangulated here (core/polygon), not by aiProcess_Triangulate, which in Assimp 5.2.5
+// covered a concave pentagon's notch. Normals and welding come after (sortPrimitives), so we can say which
+// meshes had no normals; Assimp generates them only on unwelded ("verbose") vertices.
+constexpr unsigned kImportSteps =
+    aiProcess_SortByPType | aiProcess_FlipUVs | aiProcess_ValidateDataStructure | aiProcess_FindDegenerates;
+
+// Generated normals smooth across edges up to this angle; sharper ones (a box's corners) stay creased.
+constexpr float kCreaseDegrees = 60.0f;
+
+glm::mat4 toGlm(const aiMatrix4x4& m) {
+  // Assimp's matrices are row-major with translation in the last column; glm is column-major.
+  glm::mat4 out;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) out[c][r] = m[r][c];
+  return out;
+}
+
+bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// A unit normal; a degenerate or non-finite one (a face of no area) becomes +y.
+glm::vec3 unitNormal(const aiVector3D& n) {
+  const glm::vec3 v(n.x, n.y, n.z);
+  const float length = glm::length(v);
+  if (!std::isfinite(length) || length < 1e-12f) return glm::vec3(0, 1, 0);
+  return v / length;
+}
+
+Mesh convertMesh(const aiMesh& in, const std::string& name) {
+  Mesh m;
+  m.positions.reserve(in.mNumVertices);
+  for (unsigned i = 0; i < in.mNumVertices; ++i) {
+    if (!finite(in.mVertices[i])) fail(name, "mesh '" + std::string(in.mName.C_Str()) + "' has a non-finite vertex");
+    m.positions.emplace_back(in.mVertices[i].x, in.mVertices[i].y, in.mVertices[i].z);
+    m.normals.push_back(in.mNormals ? unitNormal(in.mNormals[i]) : glm::vec3(0, 1, 0));
+    const aiVector3D uv = in.mTextureCoords[0] ? in.mTextureCoords[0][i] : aiVector3D(0, 0, 0);
+    m.uvs.emplace_back(std::isfinite(uv.x) ? uv.x : 0.0f, std::isfinite(uv.y) ? uv.y : 0.0f);
+  }
+  m.indices.reserve(std::size_t(in.mNumFaces) * 3);
+  std::vector<glm::vec3> corners;
+  for (unsigned f = 0; f < in.mNumFaces; ++f) {
+    const aiFace& face = in.mFaces[f];
+    if (face.mNumIndices < 3) continue;  // SortByPType put points and lines elsewhere; be sure
+    corners.clear();
+    for (unsigned k = 0; k < face.mNumIndices; ++k) {
+      if (face.mIndices[k] >= in.mNumVertices) fail(name, "a face indexes past its mesh's vertices");
+      corners.push_back(m.positions[face.mIndices[k]]);
+    }
+    try {
+      for (const auto& t : triangulatePolygon(corners))
+        for (std::uint32_t k : t) m.indices.push_back(face.mIndices[k]);
+    } catch (const std::invalid_argument& e) {
+      fail(name, "mesh '" + std::string(in.mName.C_Str()) + "': " + e.what());
+    }
+  }
+  return m;
+}
+
+std::string colourText(const glm::vec3& c) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "(%.2f, %.2f, %.2f)", c.x, c.y, c.z);
+  return buffer;
+}
+
+// The diffuse texture of `in`, resolved against `folder` and decoded once; "" with a note when it
+// is missing, unreadable or embedded (the diffuse colour stands in).
+std::string resolveTexture(const aiMaterial& in, const Material& m, const fs::path& folder, ModelFile& out) {
+  aiString file;
+  if (in.GetTextureCount(aiTextureType_DIFFUSE) == 0 || in.GetTexture(aiTextureType_DIFFUSE, 0, &file) != AI_SUCCESS)
+    return {};
+  const std::string name = file.C_Str();
+  auto missing = [&](const std::string& what) {
+    ++out.missingTextures;
+    out.notes.push_back(what + "; material '" + m.name + "' uses its diffuse colour " + colourText(m.albedo));
+    return std::string();
+  };
+  if (name.empty()) return {};
+  if (name[0] == '*') return missing("texture " + name + " is embedded in the file, which this loader does not read");
+  if (folder.empty()) return missing("texture '" + name + "' not looked for (model read from memory)");
+  std::string relative = name;
+  std::replace(relative.begin(), relative.end(), '\\', '/');  // OBJ files written on Windows
+  const fs::path resolved =
+      (fs::path(relative).is_absolute() ? fs::path(relative) : folder / relative).lexically_normal();
+  std::error_code ec;
+  if (!fs::is_regular_file(resolved, ec)) return missing("texture '" + resolved.string() + "' not found");
+  try {
+    loadImage(resolved.string(), 4);
+  } catch (const std::exception& e) {
+    return missing("texture '" + resolved.string() + "' unreadable (" + e.what() + ")");
+  }
+  return fs::absolute(resolved).lexically_normal().string();
+}
+
+Material convertMaterial(const aiMaterial& in, std::size_t index, const fs::path& folder, ModelFile& out) {
+  Material m;
+  aiString name;
+  m.name = in.Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0 ? name.C_Str()
+                                                                         : "material " + std::to_string(index);
+  aiColor4D colour;
+  if (in.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS || in.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
+    m.albedo = glm::clamp(glm::vec3(colour.r, colour.g, colour.b), glm::vec3(0.0f), glm::vec3(1.0f));
+  if (!std::isfinite(m.albedo.x + m.albedo.y + m.albedo.z)) m.albedo = glm::vec3(0.8f);
+  float shininess = 0;
+  if (in.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && std::isfinite(shininess) && shininess >= 1.0f)
+    m.shininess = std::min(shininess, 1024.0f);
+  int twoSided = 0;
+  if (in.Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) m.twoSided = twoSided != 0;
+  m.texture = resolveTexture(in, m, folder, out);
+  return m;
+}
+
+void addNode(const aiNode& node, const glm::mat4& parent, const std::vector<int>& meshIndex, const aiScene& in,
+             Scene& scene, int depth) {
+  if (depth > 256) return;  // a cycle or an absurd hierarchy: Assimp validates, this is a backstop
+  const glm::mat4 model = parent * toGlm(node.mTransformation);
+  for (unsigned k = 0; k < node.mNumMeshes; ++k) {
+    const unsigned i = node.mMeshes[k];
+    if (i >= meshIndex.size() || meshIndex[i] < 0) continue;  // a point or line mesh: skipped
+    SceneObject o;
+    o.name = node.mName.length > 0 ? node.mName.C_Str() : "mesh " + std::to_string(i);
+    o.mesh = std::uint32_t(meshIndex[i]);
+    o.material = std::min<std::uint32_t>(in.mMeshes[i]->mMaterialIndex, std::uint32_t(scene.materials.size() - 1));
+    o.model = model;
+    scene.addObject(std::move(o));
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c)
+    if (node.mChildren[c]) addNode(*node.mChildren[c], model, meshIndex, in, scene, depth + 1);
+}
+
+// Counts the point and line meshes, says which meshes need normals, and generates those.
+void sortPrimitives(Assimp::Importer& importer, const aiScene*& in, ModelFile& out) {
+  for (unsigned i = 0; i < in->mNumMeshes; ++i) {
+    const aiMesh& mesh = *in->mMeshes[i];
+    if (mesh.mPrimitiveTypes & aiPrimitiveType_POINT) out.skippedPoints += mesh.mNumFaces;
+    else if (mesh.mPrimitiveTypes & aiPrimitiveType_LINE) out.skippedLines += mesh.mNumFaces;
+    else if (!mesh.HasNormals()) ++out.meshesWithoutNormals;
+  }
+  if (out.skippedPoints || out.skippedLines)
+    out.notes.push_back("skipped " + std::to_string(out.skippedPoints) + " points and " +
+                        std::to_string(out.skippedLines) + " lines (only triangles cast and receive shadows)");
+  if (out.meshesWithoutNormals)
+    out.notes.push_back(std::to_string(out.meshesWithoutNormals) + " meshes had no normals: generated smooth ones " +
+                        "from the faces (creases over " + std::to_string(int(kCreaseDegrees)) + " degrees kept)");
+  importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, kCreaseDegrees);
+  in = importer.ApplyPostProcessing(aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices);
+  if (!in) fail(out.path, "generating normals failed: " + oneLine(importer.GetErrorString()));
+}
+
+ModelFile convertScene(Assimp::Importer& importer, const aiScene* in, const std::string& name, const fs::path& folder) {
+  ModelFile out;
+  out.path = name;
+  if (!in) fail(name, "not a readable model file: " + oneLine(importer.GetErrorString()));
+  if ((in->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !in->mRootNode) fail(name, "the file holds no complete scene");
+  sortPrimitives(importer, in, out);
+  for (unsigned i = 0; i < in->mNumMaterials; ++i)
+    out.scene.addMaterial(convertMaterial(*in->mMaterials[i], i, folder, out));
+  if (out.scene.materials.empty()) out.scene.addMaterial(Material{"default"});
+  std::vector<int> meshIndex(in->mNumMeshes, -1);
+  std::size_t triangles = 0;
+  for (unsigned i = 0; i < in->mNumMeshes; ++i) {
+    const aiMesh& mesh = *in->mMeshes[i];
+    if (!(mesh.mPrimitiveTypes & (aiPrimitiveType_TRIANGLE | aiPrimitiveType_POLYGON))) continue;
+    triangles += mesh.mNumFaces;
+    if (triangles > kMaxModelTriangles)
+      fail(name, "more than " + std::to_string(kMaxModelTriangles) + " triangles: too large to draw at class speed");
+    Mesh converted = convertMesh(mesh, name);
+    if (converted.indices.empty()) continue;
+    meshIndex[i] = int(out.scene.addMesh(std::move(converted)));
+  }
+  addNode(*in->mRootNode, glm::mat4(1.0f), meshIndex, *in, out.scene, 0);
+  if (out.scene.objects.empty() || out.scene.bounds().empty())
+    fail(name, "no triangles to draw (" + std::to_string(out.skippedPoints) + " points and " +
+                   std::to_string(out.skippedLines) + " lines skipped)");
+  const Aabb box = out.scene.bounds();
+  if (!std::isfinite(glm::length(box.extent()))) fail(name, "its node transforms take it to infinity");
+  out.scene.name = fs::path(name).filename().string();
+  return out;
+}
+
+}  // namespace
+
+ModelFile loadModelFile(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) fail(path, "no such file");
+  if (!fs::is_regular_file(status)) fail(path, "not a regular file");
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if (ec) fail(path, "cannot read its size: " + ec.message());
+  if (bytes == 0) fail(path, "the file is empty");
+  if (bytes > kMaxModelBytes)
+    fail(path, std::to_string(bytes >> 20) + " MiB is over the " + std::to_string(kMaxModelBytes >> 20) + " MiB limit");
+  Assimp::Importer importer;
+  const aiScene* in = importer.ReadFile(path, kImportSteps);
+  fs::path folder = fs::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  return convertScene(importer, in, path, folder);
+}
+
+ModelFile loadModelFromMemory(const void* data, std::size_t size, const std::string& hint, const std::string& name) {
+  if (size == 0) fail(name, "the file is empty");
+  if (size > kMaxModelBytes) fail(name, "over the " + std::to_string(kMaxModelBytes >> 20) + " MiB limit");
+  Assimp::Importer importer;
+  const aiScene* in = importer.ReadFileFromMemory(data, size, kImportSteps, hint.c_str());
+  return convertScene(importer, in, name, fs::path());
+}
+
+Scene placeOnGround(const ModelFile& model, float size, float groundSize) {
+  Scene scene;
+  scene.name = "model " + model.scene.name;
+  const Aabb box = model.scene.bounds();
+  const glm::vec3 extent = box.extent();
+  const float largest = std::max({extent.x, extent.y, extent.z, 1e-6f});
+  const float scale = size / largest;
+  // Scale about the box's bottom centre, which lands on the origin.
+  const glm::vec3 base(box.center().x, box.min.y, box.center().z);
+  const glm::mat4 place = glm::scale(glm::mat4(1.0f), glm::vec3(scale)) * glm::translate(glm::mat4(1.0f), -base);
+  Material ground;
+  ground.name = "checker ground";
+  ground.albedo = glm::vec3(0.85f);
+  ground.texture = "checker.png";
+  ground.specular = 0.1f;
+  ground.shininess = 16.0f;
+  const std::uint32_t groundMaterial = scene.addMaterial(ground);
+  SceneObject plane;
+  plane.name = "ground";
+  plane.mesh = scene.addMesh(makePlane(groundSize, 32, groundSize / 3.0f));
+  plane.material = groundMaterial;
+  plane.castsShadow = false;
+  scene.addObject(plane);
+  const std::uint32_t meshBase = std::uint32_t(scene.meshes.size()),
+                      materialBase = std::uint32_t(scene.materials.size());
+  for (const Mesh& m : model.scene.meshes) scene.addMesh(m);
+  for (const Material& m : model.scene.materials) scene.addMaterial(m);
+  for (SceneObject o : model.scene.objects) {
+    o.mesh += meshBase;
+    o.material += materialBase;
+    o.model = place * o.model;
+    scene.addObject(std::move(o));
+  }
+  return scene;
+}
+
+namespace {
+struct Current {
+  std::unique_ptr<ModelFile> file;
+  std::uint64_t generation = 0;
+};
+Current& current() {
+  static Current c;
+  return c;
+}
+}  // namespace
+
+const ModelFile& loadCurrentModel(const std::string& path) {
+  auto file = std::make_unique<ModelFile>(loadModelFile(path));
+  current().file = std::move(file);
+  ++current().generation;
+  return *current().file;
+}
+
+const ModelFile* currentModel() { return current().file.get(); }
+std::uint64_t currentModelGeneration() { return current().generation; }
+
+}  // namespace shadowlab

@@ -1,0 +1,65 @@
+#pragma once
+// Model files (the lecturer's own models) into a Scene, through Assimp: Wavefront OBJ with its MTL,
+// glTF 2.0 (.gltf and .glb), and whatever else the Assimp build reads. The one loading path for
+// model files in the toolkit (the hand-written OBJ parser it replaces is gone).
+//
+// Real files are messy; each case gets a stated outcome, never a crash:
+//   polygons              triangulated (Assimp's ear clipping, concave ones included)
+//   missing normals       generated (smooth from the faces, creases over 60 degrees kept), noted
+//   missing or unreadable textures   the material's diffuse colour is used, named in notes
+//   points and lines      skipped, counted, said so in notes
+//   embedded textures (.glb)         not read: the diffuse colour, said so in notes
+//   empty, missing, too large, corrupt, no triangles, non-finite numbers   ModelError
+// Conventions match core/mesh.hpp: the file's axes (OBJ and glTF are both y up), uv v = 0 at the
+// image's top row (Assimp's v is flipped), unit normals.
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/scene.hpp"
+
+namespace shadowlab {
+
+// One line: "model 'FILE': reason".
+struct ModelError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Files above this many bytes, or scenes above this many triangles, are refused before the GPU
+// sees them (llvmpipe draws about 1M triangles a frame at class speed; 20M would take minutes).
+inline constexpr std::uintmax_t kMaxModelBytes = 512ull << 20;
+inline constexpr std::size_t kMaxModelTriangles = 20'000'000;
+
+struct ModelFile {
+  std::string path;
+  Scene scene;                     // the file's meshes, materials and node transforms, as authored
+  std::vector<std::string> notes;  // one line each: what was generated, skipped or substituted
+  std::size_t skippedPoints = 0, skippedLines = 0;
+  std::size_t meshesWithoutNormals = 0;
+  std::size_t missingTextures = 0;
+};
+
+// Throws ModelError. Textures are resolved relative to the model's folder and decoded once to check
+// them; Material::texture then holds the absolute path (gl::loadTexture accepts both).
+ModelFile loadModelFile(const std::string& path);
+// The same from memory (tests, the fuzz target): `hint` is the extension ("obj", "gltf", "glb");
+// `name` stands for the file in messages. Textures are not looked for.
+ModelFile loadModelFromMemory(const void* data, std::size_t size, const std::string& hint,
+                              const std::string& name = "memory");
+
+// The model placed for a lesson: scaled so its largest side is `size` metres (the showcase's shapes
+// are 2 to 3 m, its circle of them 9 m across), centred on the origin
+// in x and z, standing on y = 0, on a checker ground plane `groundSize` metres wide that receives
+// shadows and casts none (as the procedural scenes' grounds): object 0, mesh 0 and material 0.
+Scene placeOnGround(const ModelFile& model, float size = 4.0f, float groundSize = 30.0f);
+
+// The process's current model: what scene=model draws in every lesson (technique/scene_cache). The
+// app loads it from --model or a file dropped on the window; each load bumps the generation, so
+// scene caches rebuild. A failed load throws ModelError and keeps the previous model.
+const ModelFile& loadCurrentModel(const std::string& path);
+const ModelFile* currentModel();  // nullptr before the first load
+std::uint64_t currentModelGeneration();
+
+}  // namespace shadowlab

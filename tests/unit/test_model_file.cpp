@@ -1,0 +1,331 @@
+// Model files through Assimp (core/model_file): the committed models in tests/data/models (a
+// textured OBJ + MTL, glTF 2.0 as .gltf and .glb, and broken ones), the OBJ fixtures the
+// hand-written parser was tested on (tests/data/obj), the libFuzzer regressions, and garbage that
+// must end in a ModelError naming the file, never a crash.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/mesh_gen.hpp"
+#include "core/model_file.hpp"
+#include "test_support.hpp"
+
+using namespace shadowlab;
+
+namespace {
+
+const std::string kModels = SHADOWLAB_TEST_DATA "/models/";
+const std::string kObj = SHADOWLAB_TEST_DATA "/obj/";
+
+// The message of the ModelError loading `path` raises, or "" when it loads.
+std::string loadError(const std::string& path) {
+  try {
+    loadModelFile(path);
+  } catch (const ModelError& e) { return e.what(); }
+  return {};
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+bool anyNote(const ModelFile& m, const std::string& part) {
+  for (const std::string& note : m.notes)
+    if (contains(note, part)) return true;
+  return false;
+}
+
+// All the file's triangles in one mesh, in world space (node transforms applied).
+Mesh flatten(const Scene& scene) {
+  Mesh all;
+  for (const SceneObject& o : scene.objects) all.append(scene.meshes[o.mesh], o.model);
+  return all;
+}
+
+double area(const Mesh& m) {
+  double sum = 0;
+  for (std::size_t t = 0; t < m.indices.size(); t += 3)
+    sum += 0.5 * glm::length(glm::cross(m.positions[m.indices[t + 1]] - m.positions[m.indices[t]],
+                                        m.positions[m.indices[t + 2]] - m.positions[m.indices[t]]));
+  return sum;
+}
+
+// What every loaded model promises (the fuzz target checks the same).
+void checkInvariants(const ModelFile& model) {
+  REQUIRE_FALSE(model.scene.objects.empty());
+  for (const SceneObject& o : model.scene.objects) {
+    REQUIRE(o.mesh < model.scene.meshes.size());
+    REQUIRE(o.material < model.scene.materials.size());
+  }
+  for (const Mesh& m : model.scene.meshes) {
+    CHECK(m.indices.size() % 3 == 0);
+    CHECK(m.normals.size() == m.positions.size());
+    CHECK(m.uvs.size() == m.positions.size());
+    for (std::uint32_t i : m.indices) CHECK(i < m.vertexCount());
+    for (std::size_t i = 0; i < m.vertexCount(); ++i) {
+      CHECK(std::isfinite(m.positions[i].x + m.positions[i].y + m.positions[i].z));
+      CHECK(glm::length(m.normals[i]) == doctest::Approx(1.0f).epsilon(1e-3));
+      CHECK(std::isfinite(m.uvs[i].x + m.uvs[i].y));
+    }
+  }
+}
+
+std::string fileText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("model: an OBJ cube with its MTL: the diffuse colour, and the texture found beside the model") {
+  const ModelFile m = loadModelFile(kModels + "cube.obj");
+  checkInvariants(m);
+  CHECK(m.notes.empty());
+  const Mesh all = flatten(m.scene);
+  CHECK(all.triangleCount() == 12);
+  CHECK(analyseTopology(all).closed());
+  CHECK(m.scene.bounds().min == glm::vec3(-0.5f));
+  CHECK(m.scene.bounds().max == glm::vec3(0.5f));
+  const Material& crate = m.scene.materials.at(m.scene.objects.at(0).material);
+  CHECK(crate.name == "crate");
+  CHECK(crate.albedo == glm::vec3(0.9f, 0.5f, 0.2f));
+  CHECK(crate.shininess == 32.0f);
+  CHECK(std::filesystem::path(crate.texture).is_absolute());
+  CHECK(std::filesystem::equivalent(crate.texture, kModels + "crate.png"));
+}
+
+TEST_CASE("model: glTF 2.0, as .gltf with a data URI and as .glb, gives the same tetrahedron and material") {
+  for (const char* file : {"tetrahedron.gltf", "tetrahedron.glb"}) {
+    INFO(file);
+    const ModelFile m = loadModelFile(kModels + file);
+    checkInvariants(m);
+    CHECK(m.notes.empty());
+    const Mesh all = flatten(m.scene);
+    CHECK(all.triangleCount() == 4);
+    CHECK(analyseTopology(all).closed());
+    CHECK(m.scene.bounds().min == glm::vec3(0, 0, -1));
+    CHECK(m.scene.bounds().max == glm::vec3(1, 1, 0));
+    const Material& blue = m.scene.materials.at(m.scene.objects.at(0).material);
+    CHECK(blue.name == "blue");
+    CHECK(blue.albedo.x == doctest::Approx(0.2f));
+    CHECK(blue.albedo.y == doctest::Approx(0.3f));
+    CHECK(blue.albedo.z == doctest::Approx(0.9f));
+    CHECK(blue.texture.empty());
+  }
+}
+
+TEST_CASE("model: quads and a concave pentagon are triangulated, covering their area exactly") {
+  const ModelFile m = loadModelFile(kModels + "quads.obj");
+  checkInvariants(m);
+  const Mesh all = flatten(m.scene);
+  CHECK(all.triangleCount() == 6 * 2 + 3);  // six quads, and a pentagon's n - 2
+  INFO("area " << area(all));
+  CHECK(area(all) == doctest::Approx(6.0 + 3.0));  // the cube's faces; the arrow is 4 - 1
+}
+
+TEST_CASE("model: missing normals are generated, and said so") {
+  const ModelFile m = loadModelFile(kModels + "no_normals.obj");
+  checkInvariants(m);
+  CHECK(m.meshesWithoutNormals == 1);
+  CHECK(anyNote(m, "no normals: generated"));
+  // A cube's edges are 90-degree creases, over the 60 degrees smoothed: each corner keeps its face's normal.
+  const Mesh all = flatten(m.scene);
+  for (std::size_t t = 0; t < all.indices.size(); t += 3) {
+    const glm::vec3 a = all.positions[all.indices[t]], b = all.positions[all.indices[t + 1]],
+                    c = all.positions[all.indices[t + 2]];
+    const glm::vec3 face = glm::normalize(glm::cross(b - a, c - a));
+    for (std::size_t k = 0; k < 3; ++k) CHECK(glm::dot(all.normals[all.indices[t + k]], face) == doctest::Approx(1.0f));
+  }
+  // A roof bent by 20 degrees is smoothed: the ridge's normals are the mean of the two faces' (+y).
+  const std::string roof =
+      "v -1 0 -1\nv -1 0 1\nv 0 0.176327 -1\nv 0 0.176327 1\nv 1 0 -1\nv 1 0 1\n"
+      "f 1 2 4\nf 1 4 3\nf 3 4 5\nf 4 6 5\n";  // per ridge corner, as many triangles each side
+  const ModelFile bent = loadModelFromMemory(roof.data(), roof.size(), "obj", "roof.obj");
+  checkInvariants(bent);
+  CHECK(bent.meshesWithoutNormals == 1);
+  const Mesh r = flatten(bent.scene);
+  std::size_t ridge = 0;
+  for (std::size_t i = 0; i < r.vertexCount(); ++i)
+    if (r.positions[i].x == 0.0f) {
+      ++ridge;
+      CHECK(glm::dot(r.normals[i], glm::vec3(0, 1, 0)) == doctest::Approx(1.0f));
+    }
+  CHECK(ridge == 2);
+  CHECK(loadModelFile(kModels + "cube.obj").meshesWithoutNormals == 0);
+}
+
+TEST_CASE("model: a missing texture names the file and the diffuse colour used instead") {
+  const ModelFile m = loadModelFile(kModels + "missing_texture.obj");
+  checkInvariants(m);
+  CHECK(m.missingTextures == 1);
+  REQUIRE(m.notes.size() == 1);
+  CHECK(contains(m.notes[0], "no_such_texture.png' not found"));
+  CHECK(contains(m.notes[0], "material 'painted' uses its diffuse colour (0.20, 0.70, 0.30)"));
+  const Material& painted = m.scene.materials.at(m.scene.objects.at(0).material);
+  CHECK(painted.texture.empty());
+  CHECK(painted.albedo == glm::vec3(0.2f, 0.7f, 0.3f));
+}
+
+TEST_CASE("model: points and lines are skipped and counted; a file of nothing else is an error") {
+  const ModelFile m = loadModelFile(kModels + "mixed_primitives.obj");
+  checkInvariants(m);
+  CHECK(flatten(m.scene).triangleCount() == 1);
+  CHECK(m.skippedPoints == 2);
+  CHECK(m.skippedLines == 1);
+  CHECK(anyNote(m, "skipped 2 points and 1 lines"));
+  const std::string lines = loadError(kModels + "lines_only.obj");
+  CHECK(contains(lines, "lines_only.obj"));
+  CHECK(contains(lines, "no triangles to draw"));
+}
+
+TEST_CASE("model: missing, empty, truncated, corrupt and oversized files are one-line errors naming the file") {
+  const std::string cases[][2] = {{kModels + "no_such_model.obj", "no such file"},
+                                  {kModels, "not a regular file"},
+                                  {kModels + "empty.obj", "the file is empty"},
+                                  {kModels + "truncated.glb", "not a readable model file"},
+                                  {kModels + "corrupt.gltf", "not a readable model file"},
+                                  {kObj + "out_of_range.obj", "out of range"},
+                                  {kObj + "malformed.obj", "out of range"}};  // the garbled vertex is dropped
+  for (const auto& [path, reason] : cases) {
+    INFO(path);
+    const std::string message = loadError(path);
+    CHECK(message.rfind("model '" + path + "': ", 0) == 0);
+    CHECK(contains(message, reason));
+    CHECK_FALSE(contains(message, "\n"));
+  }
+  // A sparse file just over the limit: refused by its size, before Assimp reads a byte.
+  const std::string huge = (std::filesystem::temp_directory_path() / "shadowlab_huge_model.obj").string();
+  std::ofstream(huge).put('v');
+  std::filesystem::resize_file(huge, kMaxModelBytes + 1);
+  CHECK(contains(loadError(huge), "MiB is over the 512 MiB limit"));
+  std::filesystem::remove(huge);
+}
+
+TEST_CASE("model: the OBJ fixtures of the former hand-written parser load the same through Assimp") {
+  const ModelFile good = loadModelFile(kObj + "good.obj");
+  checkInvariants(good);
+  const Mesh m = flatten(good.scene);
+  CHECK(m.triangleCount() == 12);
+  CHECK(m.vertexCount() == 24);  // each face has its own normal: 6 x 4 distinct corners
+  CHECK(analyseTopology(m).closed());
+  for (std::size_t t = 0; t < m.indices.size(); t += 3) {
+    const glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]], c = m.positions[m.indices[t + 2]];
+    CHECK(glm::dot(glm::normalize(glm::cross(b - a, c - a)), m.normals[m.indices[t]]) == doctest::Approx(1.0f));
+  }
+  // OBJ's v = 0 is the image's bottom row: it arrives as 1.
+  std::size_t flipped = 0;
+  for (std::size_t i = 0; i < m.vertexCount(); ++i) flipped += m.uvs[i] == glm::vec2(0.0f, 1.0f);
+  CHECK(flipped == 6);  // vt 1 = (0,0) is one corner of every face
+
+  const ModelFile tetra = loadModelFile(kObj + "missing_normals.obj");
+  checkInvariants(tetra);
+  CHECK(tetra.meshesWithoutNormals == 1);
+  const Mesh t = flatten(tetra.scene);
+  CHECK(t.triangleCount() == 4);
+  CHECK(analyseTopology(t).closed());
+  for (std::size_t i = 0; i < t.vertexCount(); ++i) {
+    CHECK(t.uvs[i] == glm::vec2(0.0f));
+    // Outward: away from the tetrahedron's centroid.
+    CHECK(glm::dot(t.normals[i], t.positions[i] - glm::vec3(0.25f)) > 0.0f);
+  }
+  // Its faces meet at 90 and 125 degrees, creases all: every corner has its face's normal.
+  for (std::size_t k = 0; k < t.indices.size(); k += 3) {
+    const glm::vec3 a = t.positions[t.indices[k]], b = t.positions[t.indices[k + 1]], c = t.positions[t.indices[k + 2]];
+    CHECK(glm::dot(t.normals[t.indices[k]], glm::normalize(glm::cross(b - a, c - a))) == doctest::Approx(1.0f));
+  }
+}
+
+TEST_CASE("model: the libFuzzer regressions of the OBJ parser load with finite numbers or are refused") {
+  const std::string dir = SHADOWLAB_SOURCE_ROOT "/tests/fuzz/obj/regressions/";
+  const char* refused[] = {"exponent_nan.obj", "float_overflow_inf.obj", "sign_sign.obj"};
+  const char* loaded[] = {"concave_pentagon.obj", "quad_without_area.obj", "trailing_comment.obj", "uv_nan.obj"};
+  for (const char* file : refused) {
+    INFO(file);
+    CHECK(contains(loadError(dir + file), file));
+  }
+  for (const char* file : loaded) {
+    INFO(file);
+    checkInvariants(loadModelFile(dir + file));
+  }
+  CHECK(contains(loadError(dir + "exponent_nan.obj"), "non-finite vertex"));
+  const Mesh pentagon = flatten(loadModelFile(dir + "concave_pentagon.obj").scene);
+  CHECK(pentagon.triangleCount() == 3);
+  CHECK(area(pentagon) == doctest::Approx(3.0));  // Assimp's own triangulation covered the notch: 4
+}
+
+TEST_CASE("model: a face that crosses itself is an error naming the file") {
+  std::string star;
+  for (int i = 0; i < 5; ++i) {
+    const double a = 2 * 3.14159265358979 * (2 * i) / 5;
+    star += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+  }
+  star += "f 1 2 3 4 5\n";
+  try {
+    loadModelFromMemory(star.data(), star.size(), "obj", "star.obj");
+    FAIL("a pentagram loaded");
+  } catch (const ModelError& e) {
+    CHECK(contains(e.what(), "model 'star.obj': "));
+    CHECK(contains(e.what(), "a face with 5 corners crosses itself"));
+  }
+}
+
+TEST_CASE("model: garbage from memory never crashes: it loads with the invariants or throws ModelError") {
+  SplitMix64 rng(test::seedFor("model garbage"));
+  const std::string alphabet = "vtnfpl/ -0123456789.e#\n\n\tgos";
+  std::size_t rejected = 0;
+  for (int round = 0; round < 300; ++round) {
+    std::string text;
+    const int length = 1 + rng.below(200);
+    for (int i = 0; i < length; ++i)
+      text.push_back(round % 3 == 0 ? char(rng.below(256)) : alphabet[rng.below(int(alphabet.size()))]);
+    if (round % 5 == 0) text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n" + text;
+    try {
+      checkInvariants(loadModelFromMemory(text.data(), text.size(), "obj", "garbage.obj"));
+    } catch (const ModelError& e) {
+      ++rejected;
+      CHECK(contains(e.what(), "model 'garbage.obj': "));
+    }
+  }
+  CHECK(rejected > 0);
+  // The glTF readers on the committed files cut short at every 64th byte.
+  const std::string glb = fileText(kModels + "tetrahedron.glb");
+  for (std::size_t cut = 1; cut < glb.size(); cut += 64) {
+    try {
+      checkInvariants(loadModelFromMemory(glb.data(), cut, "glb", "cut.glb"));
+    } catch (const ModelError& e) { CHECK(contains(e.what(), "model 'cut.glb': ")); }
+  }
+}
+
+TEST_CASE("model: placed on the ground: the largest side the given size, centred, standing on y = 0") {
+  const ModelFile cube = loadModelFile(kModels + "cube.obj");
+  const Scene scene = placeOnGround(cube, 6.0f, 30.0f);
+  REQUIRE(scene.objects.size() == 2);
+  CHECK(scene.objects[0].name == "ground");
+  CHECK_FALSE(scene.objects[0].castsShadow);
+  CHECK(scene.objectBounds(0).extent().x == doctest::Approx(30.0f));
+  const Aabb box = scene.objectBounds(1);
+  CHECK(box.extent().x == doctest::Approx(6.0f));
+  CHECK(box.min.y == doctest::Approx(0.0f));
+  CHECK(box.center().x == doctest::Approx(0.0f));
+  CHECK(box.center().z == doctest::Approx(0.0f));
+  CHECK(scene.materials[scene.objects[1].material].texture ==
+        cube.scene.materials[cube.scene.objects[0].material].texture);
+  // A tall thin model: its height is the largest side.
+  const Scene tent = placeOnGround(loadModelFile(kModels + "tent.obj"), 3.0f);
+  CHECK(tent.objectBounds(1).extent().y == doctest::Approx(3.0f * 1.5f / 2.0f));
+  CHECK(tent.objectBounds(1).extent().x == doctest::Approx(3.0f));
+}
+
+TEST_CASE("model: the current model: each load a new generation, a failed load keeps the previous one") {
+  const std::uint64_t before = currentModelGeneration();
+  loadCurrentModel(kModels + "cube.obj");
+  CHECK(currentModelGeneration() == before + 1);
+  REQUIRE(currentModel() != nullptr);
+  CHECK_THROWS_AS(loadCurrentModel(kModels + "empty.obj"), ModelError);
+  CHECK(currentModelGeneration() == before + 1);
+  CHECK(currentModel()->scene.name == "cube.obj");
+  CHECK(analyseTopology(flatten(loadModelFile(kModels + "tent.obj").scene)).boundaryEdges == 4);
+}
