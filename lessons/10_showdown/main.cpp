@@ -5,7 +5,7 @@
 //             csm (cascaded shadow maps: practical splits, blend band, texel snapping per cascade),
 //             hybrid (lesson 07's hybrid-resolution maps), volumes (lesson 04's stencil volumes)
 //   soft      lesson 05's many, pcf, pcss, parker, haines, mesh, vsm, esm (they need a spherical
-//             light: the soft_* presets make light0 one)
+//             light: the soft_* presets switch the sun off and light1, lesson 05's sphere, on)
 // all at EQUAL TOTAL TEXELS (texels: a light's budget, whatever the technique spends it on: one
 // map, a face set, four cascades). Views: one technique lit; the A/B split (X) between any two
 // (ab.preset picks B among the presets, one per technique); the four-up view, each quarter a
@@ -23,6 +23,7 @@
 #include <imgui.h>
 
 #include "app/lesson.hpp"
+#include "core/light_rig.hpp"
 #include "gl/gl.hpp"
 #include "technique/cascades.hpp"
 #include "technique/filterable_maps.hpp"
@@ -68,7 +69,7 @@ const char* const kHelp = R"(T: the technique (uniform, psm, lispsm, csm, hybrid
 texels: each light's total budget, shared by a technique's maps (U: equal texels on/off).
 V: lit, visibility, the maps, four-up (quarter.0..3 pick the four). C: cascade colours.
 X: A/B split against ab.preset (one preset per technique). O god view, P post-projective view.
-Soft methods need a spherical light: load a soft_* preset. M: ground truth.)";
+Soft methods need a spherical light: a soft_* preset turns light1 (a sphere) on. M: ground truth.)";
 
 // One quarter of the four-up view: its own target, its technique's figures, a smoothed wall time.
 struct Quarter {
@@ -249,23 +250,12 @@ class ShowdownLesson : public Lesson {
     return b;
   }
 
-  // light0: lesson 09's sun (-0.5, -0.45, -0.7) over the city; light1: lesson 05's spherical spot
-  // (off), which the soft_* presets move to light0 so that the soft methods have a sphere to serve.
+  // light0: lesson 09's sun over the city, behind the camera; light1: lesson 05's spherical spot
+  // over the showcase (off), the light the soft_* presets switch to.
   void declareLights(ParamRegistry& r) {
     Light* l = p_.lights;
-    l[0] = {LightKind::Directional};
-    l[0].direction = glm::normalize(glm::vec3(-0.5f, -0.45f, -0.7f));
-    l[0].color = {1.0f, 0.95f, 0.85f};
-    l[0].intensity = 0.9f;
-    l[1] = {LightKind::Spot, {6.0f, 7.0f, 5.0f}};
-    l[1].direction = glm::normalize(glm::vec3(-6.0f, -7.0f, -5.0f));
-    l[1].color = {0.5f, 0.7f, 1.0f};
-    l[1].intensity = 0.8f;
-    l[1].attenuation = {1.0f, 0.0f, 0.002f};
-    l[1].spotInner = 0.6f;
-    l[1].spotOuter = 0.72f;
-    l[1].area = AreaShape::Sphere;
-    l[1].radius = 0.3f;
+    l[0] = courseSun({-0.5f, -0.45f, -0.7f});
+    l[1] = showcaseSphereSpot();
     l[1].enabled = false;
     for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
   }
