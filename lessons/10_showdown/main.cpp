@@ -190,14 +190,19 @@ class ShowdownLesson : public Lesson {
     hybrid_.params().mapSize = std::stoi(tech::UniformShadowMaps::mapSizes()[std::size_t(p_.texels)]);
   }
 
-  // view=maps: light 0's map layers along the bottom (the projective techniques: PSM faces, cascades).
+  // view=maps: light 0's map layers along the bottom row (PSM's faces, LiSPSM's map, the cascades), an inset.
   void drawMaps(const FrameInfo& f) {
     auto t = scope("map view");
     const int h = f.height / 3;
     const std::string name = kNames[p_.technique];
-    if (name == "psm") psm_.drawMaps(0, 0, f.height - h, std::min(f.width, h * 6), h);
-    if (name == "lispsm") lispsm_.drawMaps(0, 0, f.height - h, h, h);
-    if (name == "csm") csm_.drawMaps(0, 0, f.height - h, std::min(f.width, h * csm_.params().count), h);
+    if (name == "psm") psm_.drawMaps(0, 0, 0, std::min(f.width, h * 6), h);
+    if (name == "lispsm") lispsm_.drawMaps(0, 0, 0, h, h);
+    if (name == "csm") csm_.drawMaps(0, 0, 0, std::min(f.width, h * csm_.params().count), h);
+    const int w = name == "psm"   ? std::min(f.width, h * 6)
+                  : name == "csm" ? std::min(f.width, h * csm_.params().count)
+                                  : h;
+    if (name == "psm" || name == "lispsm" || name == "csm")
+      insets.push_back({"maps", 0, 0, w, h});  // the UI stays clear of it
   }
 
   // ==== the four-up view: each quarter a technique on the same camera, drawn into its own target ====
