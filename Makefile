@@ -56,9 +56,9 @@ grade: build
 	  status=$$?; cat out/grades/ex$(LESSON).json; echo "JUnit: out/grades/ex$(LESSON).xml"; exit $$status
 
 # Benchmarks, apart from the tests: every lesson's frame time against its floor (out/bench/frames.{csv,html}),
-# the PSM light-camera set-up against receiver count, and lesson 01 over its presets against ground
-# truth (report in out/bench/). Lessons add their own sweeps:
-# tools/shadow_bench.sh, tools/volume_bench.sh, filter_sweep (see the README).
+# the PSM light-camera set-up against receiver count, lesson 01 over its presets against ground
+# truth (report in out/bench/), and lesson 10's showdown (tools/showdown_bench.sh, out/bench/showdown).
+# Lessons add their own sweeps: tools/shadow_bench.sh, tools/volume_bench.sh, filter_sweep (see the README).
 bench: build
 	@mkdir -p out/bench
 	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then $(BUILD)/bin/frame_bench --bin $(BUILD)/bin --out out/bench --window; \
@@ -66,6 +66,7 @@ bench: build
 	@$(BUILD)/bin/bench_psm_setup out/bench/psm_setup.csv
 	@$(BUILD)/bin/shadowlab_bench $(BUILD)/bin/lesson_01_lighting --out out/bench/01_lighting \
 	  --preset default --preset three_lights --preset spot_only --repeat 3 --frames 6
+	@bash tools/showdown_bench.sh $(BUILD) out/bench/showdown
 
 soak: build
 	@cmake --build --preset $(PRESET) --target stress_soak

@@ -21,6 +21,7 @@
 #include <imgui.h>
 
 #include "app/lesson.hpp"
+#include "core/light_rig.hpp"
 #include "exercises.hpp"
 #include "technique/filterable_maps.hpp"
 #include "technique/light_mesh.hpp"
@@ -189,26 +190,8 @@ class SoftShadowsLesson : public Lesson {
   // light1: a second sphere (off), to show that every technique serves several lights.
   void declareLights(ParamRegistry& r) {
     Light* l = p_.lights;
-    l[0] = {LightKind::Spot,
-            {0.96f, 7.0f, -1.62f}};  // across the plane of the test edge 11 (tests/unit/test_soft_truth)
-    l[0].direction = glm::normalize(glm::vec3(-2.46f, -7.0f, 0.62f));
-    l[0].color = {1.0f, 0.95f, 0.85f};
-    l[0].intensity = 1.3f;
-    l[0].attenuation = {1.0f, 0.0f, 0.002f};
-    l[0].spotInner = 0.9f;  // the cone holds every shape and its shadow: the maps' fov is 2.05 rad
-    l[0].spotOuter = 1.0f;
-    l[0].area = AreaShape::Sphere;
-    l[0].radius = 0.5f;
-    l[1] = {LightKind::Spot, {6.0f, 7.0f, 5.0f}};
-    l[1].direction = glm::normalize(glm::vec3(-6.0f, -7.0f, -5.0f));
-    l[1].color = {0.5f, 0.7f, 1.0f};
-    l[1].intensity = 0.8f;
-    l[1].attenuation = {1.0f, 0.0f, 0.002f};
-    l[1].spotInner = 0.6f;
-    l[1].spotOuter = 0.72f;
-    l[1].area = AreaShape::Sphere;
-    l[1].radius = 0.3f;
-    l[1].enabled = false;
+    l[0] = showcaseSphereSpot();
+    l[1] = secondSphereSpot();
     for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
   }
 

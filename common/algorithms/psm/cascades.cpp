@@ -1,5 +1,6 @@
 #include "algorithms/psm/cascades.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -27,6 +28,26 @@ std::vector<double> cascadeSplits(double zn, double zf, int count, double lambda
   std::vector<double> out;
   cascadeSplits(zn, zf, count, lambda, out);
   return out;
+}
+
+CascadeBlend cascadeAt(std::span<const double> splits, double depth, double band) {
+  CascadeBlend b;
+  if (splits.size() < 2 || !(depth >= splits.front()) || depth > splits.back()) return b;
+  const int last = int(splits.size()) - 2;
+  b.cascade = 0;
+  while (b.cascade < last && depth > splits[std::size_t(b.cascade) + 1]) ++b.cascade;
+  if (b.cascade == last || band <= 0.0) return b;
+  const double zFar = splits[std::size_t(b.cascade) + 1];
+  const double width = band * (zFar - splits[std::size_t(b.cascade)]);
+  const double start = zFar - width;
+  if (depth > start) b.nextWeight = std::min((depth - start) / width, 1.0);
+  return b;
+}
+
+int cascadeSide(int totalSide, int count) {
+  if (count < 1) throw std::invalid_argument("cascade count = " + std::to_string(count) + " must be >= 1");
+  if (totalSide < 1) throw std::invalid_argument("total side = " + std::to_string(totalSide) + " must be >= 1");
+  return std::max(1, int(std::floor(double(totalSide) / std::sqrt(double(count)) + 1e-9)));
 }
 
 }  // namespace shadowlab::psm

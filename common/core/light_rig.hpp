@@ -1,0 +1,17 @@
+#pragma once
+// The course's recurring lights, defined once for the lessons that share them.
+#include <glm/glm.hpp>
+
+#include "core/light.hpp"
+
+namespace shadowlab {
+
+// A sun travelling along `direction` (normalised here), warm white at 0.9.
+Light courseSun(const glm::vec3& direction);
+// Lesson 05's spherical light: a spot of radius 0.5 m 7 m over the showcase, its cone holding every
+// shape and its shadow, placed across the plane of the box's edge 11 (tests/unit/test_soft_truth).
+Light showcaseSphereSpot();
+// Lesson 05's second, smaller sphere (blue, radius 0.3 m, off): every soft technique serves several.
+Light secondSphereSpot();
+
+}  // namespace shadowlab

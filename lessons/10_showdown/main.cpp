@@ -1,0 +1,291 @@
+// Lesson 10: the showdown. Every shadow technique of the course in one program, on the same scene,
+// camera and lights, each a module of the technique layer (common/technique), so that the question
+// of the course can be asked with figures: which technique when?
+//   hard      uniform (lesson 03's fitted maps), psm (lesson 09: PSM with the fixes), lispsm,
+//             csm (cascaded shadow maps: practical splits, blend band, texel snapping per cascade),
+//             hybrid (lesson 07's hybrid-resolution maps), volumes (lesson 04's stencil volumes)
+//   soft      lesson 05's many, pcf, pcss, parker, haines, mesh, vsm, esm (they need a spherical
+//             light: the soft_* presets switch the sun off and light1, lesson 05's sphere, on)
+// all at EQUAL TOTAL TEXELS (texels: a light's budget, whatever the technique spends it on: one
+// map, a face set, four cascades). Views: one technique lit; the A/B split (X) between any two
+// (ab.preset picks B among the presets, one per technique); the four-up view, each quarter a
+// technique on the same camera with its figures; the god view (O) and the post-projective view (P)
+// of the selected one; csm.colours (C) colours each point by its cascade.
+// tools/showdown_bench.sh measures them all over camera paths and light directions: time against
+// error per scene, the Pareto front, and the "which technique when" summary (README).
+//
+// Controls: left drag orbit, right drag pan, wheel zoom; T cycles the technique, V the view (lit,
+// visibility, maps, four-up), C the cascade colours, U equal texels, X the A/B split, O the god
+// view, P the post-projective view, M the ground-truth overlays, 1 2 the lights; F1 help.
+#include <chrono>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "app/lesson.hpp"
+#include "core/light_rig.hpp"
+#include "gl/gl.hpp"
+#include "technique/cascades.hpp"
+#include "technique/filterable_maps.hpp"
+#include "technique/hybrid_maps.hpp"
+#include "technique/light_mesh.hpp"
+#include "technique/lispsm.hpp"
+#include "technique/lit_pass.hpp"
+#include "technique/many_lights.hpp"
+#include "technique/no_shadows.hpp"
+#include "technique/pcss.hpp"
+#include "technique/post_projective_view.hpp"
+#include "technique/psm.hpp"
+#include "technique/scene_cache.hpp"
+#include "technique/single_sample.hpp"
+#include "technique/stencil_volumes.hpp"
+#include "technique/uniform_maps.hpp"
+
+using namespace shadowlab;
+
+namespace {
+
+enum class View { Lit, Visibility, Maps, FourUp };
+constexpr int kLights = 2;
+constexpr int kTechniques = 15;
+const char* const kNames[kTechniques] = {"uniform", "psm",    "lispsm", "csm",  "hybrid", "volumes", "many", "pcf",
+                                         "pcss",    "parker", "haines", "mesh", "vsm",    "esm",     "none"};
+
+struct Params {
+  tech::SceneChoice scene{1, 60000};  // the city: long straight edges near and far, the light's hard case
+  int technique = 3;                  // csm: what engines ship, the baseline of the comparison
+  View view = View::Lit;
+  bool equalTexels = true;        // every map technique gets `texels` squared per light
+  int texels = 3;                 // 2048^2 per light (index into UniformShadowMaps::mapSizes())
+  int quarter[4] = {0, 1, 2, 3};  // the four-up view: uniform, psm, lispsm, csm
+  float ambient = 0.1f;
+  Light lights[kLights];  // a sun, and a spherical spot (off) for the soft methods
+};
+
+const char* const kSummary =
+    "Every technique of the course on one scene at equal texels: uniform, PSM, LiSPSM, cascades, hybrid, "
+    "volumes and the soft methods; the A/B split, a four-up view, and the benchmark's time against error.";
+const char* const kHelp = R"(T: the technique (uniform, psm, lispsm, csm, hybrid, volumes, the soft ones, none).
+texels: each light's total budget, shared by a technique's maps (U: equal texels on/off).
+V: lit, visibility, the maps, four-up (quarter.0..3 pick the four). C: cascade colours.
+X: A/B split against ab.preset (one preset per technique). O god view, P post-projective view.
+Soft methods need a spherical light: a soft_* preset turns light1 (a sphere) on. M: ground truth.)";
+
+// One quarter of the four-up view: its own target, its technique's figures, a smoothed wall time.
+struct Quarter {
+  gl::RenderTarget target;
+  double ms = 0.0;
+  std::string label;
+};
+
+}  // namespace
+
+// The lesson holds every technique under its own prefix (uniform.map_size, csm.cascades, ...) and
+// draws with the selected one, or with four of them side by side.
+class ShowdownLesson : public Lesson {
+ public:
+  void declare(ParamRegistry& r) override {
+    camera.aim({0, 2, 0}, 45.0f, 0.5f);  // the city from above (lesson 09's view): near and far shadows
+    camera.nearZ = 1.0f;                 // Zf/Zn = 200, as lesson 09 (PSM's unit cube is not all far face)
+    tech::SceneCache::declare(r, &p_.scene, "procedural scene", "scene size: what every shadow pass draws");
+    const std::vector<std::string> names(std::begin(kNames), std::end(kNames));
+    r.addChoice("technique", &p_.technique, names, "which technique draws the shadows").hotkey = "T";
+    r.addChoice("view", &p_.view, {"lit", "visibility", "maps", "four_up"},
+                "lit, V of the measured light, light 0's maps, or four techniques side by side")
+        .hotkey = "V";
+    r.add("equal_texels", &p_.equalTexels, "every map technique gets `texels` squared per light").hotkey = "U";
+    r.addChoice("texels", &p_.texels, tech::UniformShadowMaps::mapSizes(),
+                "a light's total texel budget (side of the square): one map, a face set or the cascades share it");
+    for (int q = 0; q < 4; ++q)
+      r.addChoice("quarter." + std::to_string(q), &p_.quarter[q], names,
+                  "the four-up view's technique in quarter " + std::to_string(q) + " (top left, top right, ...)");
+    r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
+    for (int i = 0; i < kTechniques; ++i) techniques_[std::size_t(i)]->declare(r, std::string(kNames[i]) + ".");
+    r.setHotkey("csm.colours", "C");
+    postView_.declare(r);
+    declareLights(r);
+  }
+
+  LessonInfo info() const override {
+    return {"10", "10_showdown", "The showdown: every technique, time against error", kSummary, 5, kHelp, true};
+  }
+
+  void init() override {
+    for (tech::ShadowTechnique* t : techniques_) t->init();
+    postView_.init();
+  }
+
+  MeasureSource measureSource() override {
+    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}};
+  }
+
+  void applyPathLight(const glm::vec3& position, const glm::vec3& direction) override {
+    p_.lights[0].position = position;
+    p_.lights[0].direction = direction;
+  }
+
+  void update(const FrameInfo&) override {
+    scene_.update(p_.scene);
+    if (p_.equalTexels) equaliseTexels();
+  }
+
+  void render(const FrameInfo& f) override {
+    tech::ShadowTechnique& technique = *techniques_[std::size_t(p_.technique)];
+    if (p_.view == View::FourUp) {
+      renderFourUp(f);
+      return;
+    }
+    // ==== 1. the selected technique: its light cameras and shadow passes (or volumes) ==============
+    const tech::ShadowContext c = context(f);
+    technique.renderShadows(c);
+    if (!f.godView) counters = technique.stats().counters();
+    // ==== 2. the scene from the eye, V from the technique ==========================================
+    drawLit(c, technique);
+    // ==== 3. light 0's maps (view=maps), the post-projective view ==================================
+    if (p_.view == View::Maps && !f.godView) drawMaps(f);
+    if (postView_.enabled()) {
+      auto t = scope("post-projective view");
+      postView_.draw(c, technique);
+    }
+  }
+
+  void gui() override {
+    if (p_.view != View::FourUp) return;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    for (int q = 0; q < 4; ++q) {  // at each quarter's bottom left, clear of the header and the panel
+      const ImVec2 at((q % 2) * size.x * 0.5f + 8.0f, (q / 2 + 1) * size.y * 0.5f - line - 6.0f);
+      const char* text = quarters_[std::size_t(q)].label.c_str();
+      const ImVec2 t = ImGui::CalcTextSize(text);
+      draw->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + t.x + 4, at.y + t.y + 4), IM_COL32(0, 0, 0, 180));
+      draw->AddText(at, IM_COL32(255, 255, 255, 255), text);
+    }
+  }
+
+ private:
+  tech::ShadowContext context(const FrameInfo& f) {
+    return {f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
+  }
+
+  void drawLit(const tech::ShadowContext& c, tech::ShadowTechnique& technique) {
+    const tech::LitSettings lit{glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0};
+    if (technique.ownsLitPass()) {
+      technique.renderLit(c, lit);
+      return;
+    }
+    auto t = scope("scene");
+    glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    lit_.draw(c, technique, lit);
+  }
+
+  // The same budget for every map technique: one map of texels^2, or the faces / cascades sharing it.
+  void equaliseTexels() {
+    uniform_.params().mapSize = p_.texels;
+    uniform_.params().cubeSize = p_.texels;
+    psm_.maps().params().mapSize = p_.texels;
+    lispsm_.maps().params().mapSize = p_.texels;
+    csm_.maps().params().mapSize = p_.texels;
+    hybrid_.params().mapSize = std::stoi(tech::UniformShadowMaps::mapSizes()[std::size_t(p_.texels)]);
+  }
+
+  // view=maps: light 0's map layers along the bottom row (PSM's faces, LiSPSM's map, the cascades), an inset.
+  void drawMaps(const FrameInfo& f) {
+    auto t = scope("map view");
+    const int h = f.height / 3;
+    const std::string name = kNames[p_.technique];
+    if (name == "psm") psm_.drawMaps(0, 0, 0, std::min(f.width, h * 6), h);
+    if (name == "lispsm") lispsm_.drawMaps(0, 0, 0, h, h);
+    if (name == "csm") csm_.drawMaps(0, 0, 0, std::min(f.width, h * csm_.params().count), h);
+    const int w = name == "psm"   ? std::min(f.width, h * 6)
+                  : name == "csm" ? std::min(f.width, h * csm_.params().count)
+                                  : h;
+    if (name == "psm" || name == "lispsm" || name == "csm")
+      insets.push_back({"maps", 0, 0, w, h});  // the UI stays clear of it
+  }
+
+  // ==== the four-up view: each quarter a technique on the same camera, drawn into its own target ====
+  // at a quarter of the frame (the same aspect), then copied into place. Its wall time (glFinish at
+  // both ends) is the quarter's figure; the framework's timers and measurement see only the frame.
+  void renderFourUp(const FrameInfo& f) {
+    const int w = std::max(f.width / 2, 1), h = std::max(f.height / 2, 1);
+    counters.clear();
+    timers.setEnabled(false);
+    for (int q = 0; q < 4; ++q) {
+      Quarter& quarter = quarters_[std::size_t(q)];
+      if (quarter.target.width != w || quarter.target.height != h)
+        quarter.target = gl::makeRenderTarget(w, h, "10 four-up quarter " + std::to_string(q));
+      FrameInfo fq = f;
+      fq.width = w;
+      fq.height = h;
+      fq.framebuffer = quarter.target.fbo.id();
+      fq.measureLight = -1;
+      glBindFramebuffer(GL_FRAMEBUFFER, fq.framebuffer);
+      glViewport(0, 0, w, h);
+      tech::ShadowTechnique& t = *techniques_[std::size_t(p_.quarter[q])];
+      glFinish();
+      const auto start = std::chrono::steady_clock::now();
+      const tech::ShadowContext c = context(fq);
+      t.renderShadows(c);
+      drawLit(c, t);
+      glFinish();
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      if (!f.godView) {
+        quarter.ms = quarter.ms > 0.0 ? 0.8 * quarter.ms + 0.2 * ms : ms;
+        quarter.label = quarterLabel(q, t);
+        counters.push_back({"quarter " + std::to_string(q), quarter.label});
+      }
+      glBindFramebuffer(GL_READ_FRAMEBUFFER, fq.framebuffer);
+      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, f.framebuffer);
+      const int x0 = (q % 2) * w, y0 = (q < 2 ? h : 0);  // GL rows from the bottom: quarters 0, 1 on top
+      glBlitFramebuffer(0, 0, w, h, x0, y0, x0 + w, y0 + h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    timers.setEnabled(true);
+    glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer);
+    glViewport(0, 0, f.width, f.height);
+  }
+
+  std::string quarterLabel(int q, const tech::ShadowTechnique& t) const {
+    const tech::ShadowStats& s = t.stats();
+    char b[160];
+    std::snprintf(b, sizeof b, "%s  %.0f ms  %.2f Mtexels%s  %zuk tris  %.1f MB", kNames[p_.quarter[q]],
+                  quarters_[std::size_t(q)].ms, double(s.texels) / 1e6, s.reusedMaps ? " (maps reused)" : "",
+                  s.triangles / 1000, double(s.bytes) / (1024.0 * 1024.0));
+    return b;
+  }
+
+  // light0: lesson 09's sun over the city, behind the camera; light1: lesson 05's spherical spot
+  // over the showcase (off), the light the soft_* presets switch to.
+  void declareLights(ParamRegistry& r) {
+    Light* l = p_.lights;
+    l[0] = courseSun({-0.5f, -0.45f, -0.7f});
+    l[1] = showcaseSphereSpot();
+    l[1].enabled = false;
+    for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
+  }
+
+  Params p_;
+  tech::SceneCache scene_{"10 scene"};
+  tech::UniformShadowMaps uniform_;
+  tech::PerspectiveShadowMaps psm_;
+  tech::LightSpacePsm lispsm_;
+  tech::CascadedShadowMaps csm_;
+  tech::HybridShadowMaps hybrid_;
+  tech::StencilVolumes volumes_;
+  tech::ManyLights many_;
+  tech::PcssShadows pcf_{false}, pcss_{true};
+  tech::SingleSampleSoft parker_{tech::SingleSampleSoft::Kind::Parker};
+  tech::SingleSampleSoft haines_{tech::SingleSampleSoft::Kind::Haines};
+  tech::LightMesh mesh_;
+  tech::FilterableMaps vsm_{tech::FilterableMaps::Kind::Vsm}, esm_{tech::FilterableMaps::Kind::Esm};
+  tech::NoShadows none_;
+  std::array<tech::ShadowTechnique*, kTechniques> techniques_{&uniform_, &psm_,  &lispsm_, &csm_,  &hybrid_,
+                                                              &volumes_, &many_, &pcf_,    &pcss_, &parker_,
+                                                              &haines_,  &mesh_, &vsm_,    &esm_,  &none_};
+  tech::LitPass lit_{"10 scene"};
+  tech::PostProjectiveView postView_;
+  std::array<Quarter, 4> quarters_;
+};
+
+int main(int argc, char** argv) { return runLesson<ShowdownLesson>(argc, argv); }

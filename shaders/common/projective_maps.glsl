@@ -1,0 +1,47 @@
+// The maps of common/technique/projective_maps as the lit shader reads them (the perspective
+// shadow maps and LiSPSM, shaders/common/shadow_psm.frag; the cascades, shadow_cascades.frag): per
+// light up to six maps, the layers of one array texture, each with the matrix that takes a world
+// point to its clip space in one projective step, and the lookup with the receiver's normal offset.
+#include "common/light.glsl"
+
+const int PSM_LIGHTS = 2;  // kPsmLights in common/technique/projective_maps.hpp
+const int PSM_MAPS = 6;
+
+uniform int uPsmLayers[PSM_LIGHTS];  // 0: no map this frame (light off, nothing in view): lit
+uniform mat4 uPsmMatrix[PSM_LIGHTS * PSM_MAPS];
+uniform float uPsmSize[PSM_LIGHTS];  // texels per side of each map
+uniform sampler2DArrayShadow uPsmMaps[PSM_LIGHTS];
+uniform float uPsmConstantBias;  // window-depth units (the constant bias); 0 with the world bias
+// The receiver's side, against acne on surfaces at grazing light (a + b L_texel moves casters along
+// the light, which a grazing slope needs many texels of): the lookup point moves along N by
+// uPsmNormalOffset texels of the map's world size THERE, times sin(theta), as lesson 03's normal
+// offset does with a uniform map's one texel size. The texel size as in depth_psm.vert. Compiled in
+// with PSM_NORMAL_OFFSET (bias.normal_offset > 0).
+uniform vec4 uPsmTexelStep[PSM_LIGHTS * PSM_MAPS];
+uniform vec4 uPsmClipW[PSM_LIGHTS * PSM_MAPS];
+uniform float uPsmNormalOffset;
+uniform Light uLights[MAX_LIGHTS];
+
+// V of light `light` from its map `layer` at the surface point; texelCoords: the point's texel
+// coordinates in that map (vec2(0) outside it).
+float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, out vec2 texelCoords) {
+  texelCoords = vec2(0.0);
+  int map = light * PSM_MAPS + layer;
+  vec3 q = worldPos;
+#ifdef PSM_NORMAL_OFFSET
+  {
+    vec3 L = uLights[light].kind == LIGHT_DIRECTIONAL ? -uLights[light].direction : normalize(uLights[light].position - worldPos);
+    float c = clamp(dot(N, L), 0.0, 1.0);
+    vec4 d = uPsmTexelStep[map] * dot(uPsmClipW[map], vec4(worldPos, 1.0));
+    float w = 1.0 + d.w;
+    float texel = w > 0.0 ? length((worldPos + d.xyz) / w - worldPos) : 0.0;
+    q += N * uPsmNormalOffset * texel * sqrt(1.0 - c * c);
+  }
+#endif
+  vec4 h = uPsmMatrix[map] * vec4(q, 1.0);
+  if (!(h.w > 0.0)) return 1.0;  // outside every light frustum: nothing known, lit
+  vec3 p = h.xyz / h.w * 0.5 + 0.5;
+  texelCoords = p.xy * uPsmSize[light];
+  if (p.z > 1.0) return 1.0;
+  return texture(uPsmMaps[light], vec4(p.xy, float(layer), p.z - uPsmConstantBias));
+}

@@ -1,0 +1,49 @@
+#version 410 core
+// Cascaded shadow maps' visibility (common/technique/cascades), linked into every lit program that
+// serves them (shaders/common/scene.frag declares the function). The view's depth range is cut into
+// 1 to 4 slices by the practical split scheme; slice k has its own orthographic map, layer k of the
+// light's array texture (the projective maps' storage and lookup, common/projective_maps.glsl). A
+// point takes the cascade its view depth falls in; within the blend band at a cascade's far end the
+// next cascade's lookup is mixed in (psm::cascadeAt in common/algorithms/psm/cascades.cpp mirrors
+// cascadeAt below: keep the two in step).
+#include "common/projective_maps.glsl"
+
+uniform vec4 uCsmViewZ;            // the viewer's view-matrix row of z: view depth = -dot(row, (p, 1))
+uniform float uCsmNear;            // where cascade 0 starts
+uniform vec4 uCsmFar[PSM_LIGHTS];  // where cascades 0..3 end (uPsmLayers[light] of them)
+uniform float uCsmBand;            // the blend band: this fraction of a cascade's depth range at its far end
+
+// The cascade that shades view depth `depth` of light `light` (-1: none), and the weight of the next.
+int cascadeAt(int light, float depth, out float nextWeight) {
+  nextWeight = 0.0;
+  int count = uPsmLayers[light];
+  if (count == 0 || depth < uCsmNear || depth > uCsmFar[light][count - 1]) return -1;
+  int k = 0;
+  while (k < count - 1 && depth > uCsmFar[light][k]) ++k;
+  if (k == count - 1 || uCsmBand <= 0.0) return k;
+  float zNear = k == 0 ? uCsmNear : uCsmFar[light][k - 1];
+  float width = uCsmBand * (uCsmFar[light][k] - zNear);
+  float start = uCsmFar[light][k] - width;
+  if (depth > start) nextWeight = min((depth - start) / width, 1.0);
+  return k;
+}
+
+// The cascade of a surface point (for the cascade-colouring view, shaders/common/cascade_colours.frag).
+int cascadeOf(int light, vec3 worldPos, out float nextWeight) {
+  nextWeight = 0.0;
+  if (light >= PSM_LIGHTS) return -1;
+  return cascadeAt(light, -dot(uCsmViewZ, vec4(worldPos, 1.0)), nextWeight);
+}
+
+float shadowVisibility(int light, vec3 worldPos, vec3 N, out vec2 texelCoords) {
+  texelCoords = vec2(0.0);
+  float w;
+  int k = cascadeOf(light, worldPos, w);
+  if (k < 0) return 1.0;  // no cascade covers the point (light off, or beyond the last): lit
+  float v = projectiveLookup(light, k, worldPos, N, texelCoords);
+  if (w > 0.0) {
+    vec2 unused;
+    v = mix(v, projectiveLookup(light, k + 1, worldPos, N, unused), w);
+  }
+  return v;
+}

@@ -1,0 +1,32 @@
+# Lesson 10 holds a technique exactly as the lesson whose subject it is: the same light, view and
+# scene through both programs give the same ground-truth figures (misclassified, leaked and false
+# pixels each within 2 % + 20 pixels of the other's: the two frames differ only in what the
+# driver rounds). Run: cmake -DSHOWDOWN=... -DSHOWDOWN_ARGS=a;b -DLESSON=... -DLESSON_ARGS=a;b -DOUT_DIR=... -DNAME=... -P this
+foreach(side SHOWDOWN LESSON)
+  execute_process(COMMAND ${${side}} --headless --frames 2 --size 480x270 --strict-gl ${${side}_ARGS}
+                          --measure ${OUT_DIR}/${NAME}_${side}.json RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${NAME} (${side}): exited ${rc}: ${err}")
+  endif()
+  file(READ ${OUT_DIR}/${NAME}_${side}.json json)
+  foreach(k misclassified leaks false_shadows facing_pixels)
+    string(JSON ${side}_${k} GET "${json}" hard ${k})
+  endforeach()
+endforeach()
+if(NOT SHOWDOWN_facing_pixels EQUAL LESSON_facing_pixels)
+  message(FATAL_ERROR "${NAME}: ${SHOWDOWN_facing_pixels} facing pixels against ${LESSON_facing_pixels}: not the same view")
+endif()
+foreach(k misclassified leaks false_shadows)
+  set(a ${SHOWDOWN_${k}})
+  set(b ${LESSON_${k}})
+  math(EXPR diff "${a} - ${b}")
+  if(diff LESS 0)
+    math(EXPR diff "-${diff}")
+  endif()
+  math(EXPR allowed "${b} / 50 + 20")
+  if(diff GREATER allowed)
+    message(FATAL_ERROR "${NAME}: ${k} ${a} in lesson 10 against ${b} in its own lesson (at most ${allowed} apart)")
+  endif()
+  string(APPEND figures " ${k} ${a} / ${b}")
+endforeach()
+message(STATUS "${NAME}: lesson 10 / own lesson:${figures}")

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# Lesson 10's benchmark (issue 15): every hard-shadow technique at EQUAL TOTAL TEXELS per light
+# (uniform, PSM with the fixes, LiSPSM, cascades; the hybrid maps render the same full map before
+# merging; the stencil volumes have no texels), through lesson 10's parameters, over the committed
+# camera paths (bench/paths: the city and terrain orbits put the light behind, along, beside and
+# facing the view; the forest walk) and a sweep of sun directions over the sphere
+# (psm_light_sweep). Each run is measured against Embree's ground truth (misclassified %: leaks and
+# false shadows; aliasing m: mean, p95, max) and timed (shadow-pass and frame GPU ms, on a software
+# renderer the synchronous timers' wall time). shadowlab_bench writes per path a report
+# (report.{csv,json,html}: the time-against-error scatter with its Pareto front, tables,
+# thumbnails); then OUT_DIR/summary.md and OUT_DIR/index.html: per scene and budget the Pareto front
+# and the "which technique when" lines, generated from the figures, and the error against the light
+# direction per technique. Usage:
+#   tools/showdown_bench.sh [--quick] [BUILD_DIR (build/default)] [OUT_DIR (out/bench/showdown)]
+# --quick (CI's smoke test, a few minutes): 2048^2 only, 2 samples per orbit, 6 sweep directions,
+# 240x135. The full run: 1024^2, 2048^2 and 4096^2, 8 samples per orbit, the forest, a
+# 1M-triangle city, all 26 sweep directions, 320x180. Environment: SIZE, SAMPLES, SWEEP, REPEATS.
+# Figures from a software renderer (llvmpipe) on a shared machine rank techniques; they do not
+# predict a GPU's milliseconds. The error figures are deterministic; the timings are noisy.
+set -euo pipefail
+quick=0
+if [[ ${1:-} == --quick ]]; then
+  quick=1
+  shift
+fi
+build=${1:-build/default}
+out=${2:-out/bench/showdown}
+root=$(cd "$(dirname "$0")/.." && pwd)
+lesson=$build/bin/lesson_10_showdown
+bench=$build/bin/shadowlab_bench
+for b in "$lesson" "$bench"; do
+  [[ -x $b ]] || { echo "showdown_bench: $b not built (cmake --build $build)" >&2; exit 2; }
+done
+command -v python3 >/dev/null || { echo "showdown_bench: needs python3" >&2; exit 2; }
+if ((quick)); then
+  budgets=${BUDGETS:-2048}
+  size=${SIZE:-240x135}
+  samples=${SAMPLES:-2}
+  sweep=${SWEEP:-6}
+  triangles=${TRIANGLES:-30000}
+else
+  budgets=${BUDGETS:-1024 2048 4096}
+  size=${SIZE:-320x180}
+  samples=${SAMPLES:-8}
+  sweep=${SWEEP:-26}
+  triangles=${TRIANGLES:-60000}
+fi
+repeats=${REPEATS:-1}
+[[ $size =~ ^[0-9]+x[0-9]+$ ]] || { echo "showdown_bench: SIZE '$size' is not WxH" >&2; exit 2; }
+mkdir -p "$out"
+
+# The configurations: each hard technique at each budget (texels: the side of a light's total),
+# the volumes once; with --quick also LiSPSM at 4096^2 against the cascades at 2048^2 (the
+# comparison of Lloyd et al. 2006).
+configs=()
+for b in $budgets; do
+  for t in uniform psm lispsm csm hybrid; do
+    # (the uniform map redrawn every frame, as on a moving path: its reuse would time nothing)
+    extra=""
+    [[ $t == uniform ]] && extra=" uniform.reuse_maps=false"
+    configs+=(--config "$t $b: technique=$t texels=$b triangles=$triangles$extra")
+  done
+done
+configs+=(--config "volumes -: technique=volumes triangles=$triangles")
+if ((quick)); then configs+=(--config "lispsm 4096: technique=lispsm texels=4096 triangles=$triangles"); fi
+
+run() {  # run NAME SCENE PATH SAMPLES [EXTRA CONFIG ARGS...]
+  local name=$1 scene=$2 path=$3 n=$4
+  shift 4
+  echo "showdown_bench: $name ($scene, $path, $n samples)" >&2
+  "$bench" "$lesson" --out "$out/$name" --scenes "$scene" --path "$root/bench/paths/$path" --path-samples "$n" \
+    --repeat "$repeats" --frames 2 --size "$size" --title "Lesson 10: $name, equal texels" "$@"
+}
+run city city psm_city_orbit.path "$samples" "${configs[@]}"
+run terrain terrain psm_terrain_orbit.path "$samples" "${configs[@]}"
+run sweep city psm_light_sweep.path "$sweep" "${configs[@]}"
+if ((!quick)); then
+  run forest forest soft_forest.path "$samples" "${configs[@]}"
+  big=()
+  for c in "${configs[@]}"; do big+=("${c/triangles=$triangles/triangles=1000000}"); done
+  run city_1m city psm_city_orbit.path 2 "${big[@]}"
+fi
+python3 "$root/tools/showdown_summary.py" "$out" "$size" "$repeats"
+echo "showdown_bench: $out/index.html, $out/summary.md" >&2

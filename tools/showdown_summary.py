@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""Lesson 10's "which technique when", generated from the measured figures (tools/showdown_bench.sh).
+
+Reads OUT/<path>/report.json (shadowlab_bench's rows: one per configuration and path sample) and
+writes OUT/summary.md and OUT/index.html: per path and texel budget the mean figures of every
+technique, the Pareto front of shadow-pass time against misclassified pixels, the technique with
+the least error and its margin over the next, the fastest; the error against the light direction
+per technique (the sweep); the comparison of Lloyd et al. (EGSR 2006). No verdict is written by
+hand: every sentence is a comparison of two figures from the reports. Usage:
+    showdown_summary.py OUT_DIR SIZE REPEATS
+"""
+import html
+import json
+import os
+import statistics
+import sys
+
+
+def load(path):
+    rows = json.load(open(path))["rows"]
+    by = {}
+    for r in rows:
+        if "hard" not in r:  # a run the ground truth could not judge (no hard figures)
+            continue
+        by.setdefault(r["technique"], []).append(r)
+    for v in by.values():
+        v.sort(key=lambda r: r["frame"])
+    return by
+
+
+def shadow_ms(r):
+    """Every pass but the lit scene: the maps' depth passes (and the hybrid maps' merge and index), or
+    the stencil volumes' whole frame (their shadows are drawn with the lit passes)."""
+    return sum(v for k, v in r["gpuMs"].items() if k != "scene" and v is not None)
+
+
+def mean(xs):
+    xs = [x for x in xs if x is not None]
+    return sum(xs) / len(xs) if xs else float("nan")
+
+
+def figures(rows):
+    a = [r.get("aliasing") or {} for r in rows]
+    return {
+        "mis": mean([r["hard"]["misclassifiedPct"] for r in rows]),
+        "leak": mean([r["hard"]["leakPct"] for r in rows]),
+        "false": mean([r["hard"]["falseShadowPct"] for r in rows]),
+        "m": mean([x.get("mean") for x in a]),
+        "p95": mean([x.get("p95") for x in a]),
+        "max": max([x.get("max") or 0.0 for x in a]),
+        "shadow": statistics.median([shadow_ms(r) for r in rows]),
+        "frame": statistics.median([r["gpuTotalMs"] or 0.0 for r in rows]),
+        "texels": rows[0]["shadowTexels"],
+        "tris": rows[0]["shadowTriangles"],
+    }
+
+
+def budget(label):
+    parts = label.split()
+    return parts[1] if len(parts) > 1 else "-"
+
+
+def pareto(items):
+    """Labels not dominated in (frame ms, misclassified %): nothing else is as fast and as right."""
+    front = []
+    for a, fa in items:
+        if not any(fb["frame"] <= fa["frame"] and fb["mis"] <= fa["mis"] and
+                   (fb["frame"] < fa["frame"] or fb["mis"] < fa["mis"]) for b, fb in items if b != a):
+            front.append(a)
+    return sorted(front, key=lambda a: dict(items)[a]["frame"])
+
+
+def verdicts(name, table):
+    """The generated lines of one path: per budget the least error, its margin, the fastest, the front."""
+    lines = []
+    budgets = sorted({budget(t) for t in table if budget(t) != "-"}, key=int)
+    for b in budgets:
+        items = [(t, f) for t, f in table.items() if budget(t) in (b, "-")]
+        by_err = sorted(items, key=lambda x: x[1]["mis"])
+        best, second = by_err[0], by_err[1] if len(by_err) > 1 else None
+        margin = (f"{second[1]['mis'] - best[1]['mis']:.3f} points less than {second[0]} "
+                  f"({second[1]['mis']:.3f} %)") if second else "alone"
+        fastest = min(items, key=lambda x: x[1]["frame"])
+        by_m = min((x for x in items if x[1]["m"] == x[1]["m"]), key=lambda x: x[1]["m"], default=None)
+        lines.append(f"- **{name}, {b}^2 texels per light**: least misclassified **{best[0]}** "
+                     f"({best[1]['mis']:.3f} %), {margin}; lowest mean aliasing m "
+                     f"{by_m[0] + ' (' + format(by_m[1]['m'], '.3g') + ')' if by_m else 'n/a'}; fastest frame "
+                     f"{fastest[0]} ({fastest[1]['frame']:.1f} ms); Pareto front (frame time against error): "
+                     f"{', '.join(pareto(items))}.")
+    return lines
+
+
+def svg_sweep(sweep):
+    """Misclassified % against the sweep's direction index, one polyline per technique."""
+    w, h, pad = 640, 260, 40
+    series = {t: [r["hard"]["misclassifiedPct"] for r in rs] for t, rs in sweep.items()}
+    n = max(len(v) for v in series.values())
+    top = max(max(v) for v in series.values()) or 1.0
+    colours = ["#e41a1c", "#377eb8", "#4daf4a", "#984ea3", "#ff7f00", "#a65628", "#f781bf", "#999999"]
+    out = [f'<svg width="{w}" height="{h}" xmlns="http://www.w3.org/2000/svg" style="background:#fff">',
+           f'<text x="{pad}" y="14" font-size="12">misclassified % against sun direction (0..{n - 1}, '
+           f'bench/paths/psm_light_sweep.path)</text>']
+    for i, (t, v) in enumerate(sorted(series.items())):
+        pts = " ".join(f"{pad + (w - 2 * pad) * k / max(n - 1, 1):.1f},{h - pad - (h - 2 * pad) * y / top:.1f}"
+                       for k, y in enumerate(v))
+        c = colours[i % len(colours)]
+        out.append(f'<polyline fill="none" stroke="{c}" stroke-width="2" points="{pts}"/>')
+        out.append(f'<text x="{w - pad - 120}" y="{30 + 14 * i}" font-size="11" fill="{c}">{html.escape(t)}</text>')
+    out.append(f'<text x="4" y="{pad}" font-size="10">{top:.2f} %</text>'
+               f'<text x="4" y="{h - pad}" font-size="10">0 %</text></svg>')
+    return "\n".join(out)
+
+
+def main():
+    out, size, repeats = sys.argv[1:4]
+    paths = [p for p in ("city", "terrain", "forest", "city_1m", "sweep") if os.path.exists(f"{out}/{p}/report.json")]
+    data = {p: load(f"{out}/{p}/report.json") for p in paths}
+    tables = {p: {t: figures(rs) for t, rs in by.items()} for p, by in data.items()}
+    md = [f"# Lesson 10: which technique when (measured, {size}, llvmpipe on a shared 2-core machine; "
+          f"shadow ms: every pass but the lit scene (the volumes: their whole frame), frame ms: the GPU total, "
+          f"both the median over the path's samples, {repeats} repeat(s): noisy, for ratios only; "
+          "the error figures are deterministic)\n",
+          "Generated by tools/showdown_summary.py from the reports beside it; nothing here is written by hand.\n",
+          "| path | technique | texels | misclassified % | leaks % | false % | m mean | m p95 | m max | "
+          "shadow ms | frame ms | shadow tris |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for p, table in tables.items():
+        for t, f in table.items():
+            md.append(f"| {p} | {t} | {f['texels']} | {f['mis']:.3f} | {f['leak']:.3f} | {f['false']:.3f} | "
+                      f"{f['m']:.3g} | {f['p95']:.3g} | {f['max']:.3g} | {f['shadow']:.1f} | {f['frame']:.1f} | "
+                      f"{f['tris']} |")
+    md.append("\n## Which technique when\n")
+    for p, table in tables.items():
+        md.extend(verdicts(p, table))
+    md.append("\n## Lloyd et al. (EGSR 2006): z-partitions at 2048^2 total against one LiSPSM map at 4096^2\n")
+    md.append("(Our cascades have no warp inside a cascade: this compares plain z-partitioning, not the paper's "
+              "warping plus partitioning.)\n")
+    for p, table in tables.items():
+        c, l4 = table.get("csm 2048"), table.get("lispsm 4096")
+        if c and l4:
+            md.append(f"- {p}: max m cascades 2048 {c['max']:.3g} against LiSPSM 4096 {l4['max']:.3g} "
+                      f"({'lower' if c['max'] < l4['max'] else 'not lower'}), p95 {c['p95']:.3g} against "
+                      f"{l4['p95']:.3g} ({'lower' if c['p95'] < l4['p95'] else 'not lower'}); shadow time ratio "
+                      f"{c['shadow'] / l4['shadow'] if l4['shadow'] else float('nan'):.2f}.")
+    open(f"{out}/summary.md", "w").write("\n".join(md) + "\n")
+    page = ["<!doctype html><meta charset='utf-8'><title>Lesson 10: the showdown</title>",
+            "<body style='font-family:sans-serif;max-width:1100px;margin:auto'>",
+            "<h1>Lesson 10: the showdown, time against error</h1>",
+            "<p>Per path, shadowlab_bench's report: the time-against-error scatter with its Pareto front, "
+            "tables and thumbnails.</p><ul>"]
+    page += [f"<li><a href='{p}/report.html'>{p}</a></li>" for p in paths]
+    page.append("</ul>")
+    if "sweep" in data:
+        page.append("<h2>Error against the light direction</h2>" + svg_sweep(data["sweep"]))
+    page.append("<h2>Summary</h2><pre style='white-space:pre-wrap'>" + html.escape("\n".join(md)) + "</pre>")
+    open(f"{out}/index.html", "w").write("\n".join(page) + "\n")
+    print("\n".join(md))
+
+
+if __name__ == "__main__":
+    main()
