@@ -52,8 +52,10 @@ slides: web build
 LESSON ?= 01
 grade: build
 	@mkdir -p out/grades
-	@$(BUILD)/bin/grade_ex$(LESSON) --reporters=junit --out=out/grades/ex$(LESSON).xml --score-json=out/grades/ex$(LESSON).json >/dev/null; \
-	  status=$$?; cat out/grades/ex$(LESSON).json; echo "JUnit: out/grades/ex$(LESSON).xml"; exit $$status
+	@$(BUILD)/bin/grade_ex$(LESSON) --score-json=out/grades/ex$(LESSON).json --junit=out/grades/ex$(LESSON).xml \
+	  --gradescope=out/grades/ex$(LESSON)_results.json >/dev/null; \
+	  status=$$?; cat out/grades/ex$(LESSON).json; \
+	  echo "JUnit: out/grades/ex$(LESSON).xml  Gradescope: out/grades/ex$(LESSON)_results.json"; exit $$status
 
 # Benchmarks, apart from the tests: every lesson's frame time against its floor (out/bench/frames.{csv,html}),
 # the PSM light-camera set-up against receiver count, lesson 01 over its presets against ground

@@ -4,6 +4,7 @@
 // and see yours live with  lesson_01_lighting --set impl=student
 // (the lesson then shades every vertex on the CPU with YOUR functions).
 #include <glm/glm.hpp>
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex01 {
 

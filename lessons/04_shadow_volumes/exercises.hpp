@@ -8,6 +8,7 @@
 
 #include "core/mesh.hpp"
 #include "algorithms/shadow_volume.hpp"
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex04 {
 

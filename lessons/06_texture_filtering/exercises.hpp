@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "core/image.hpp"
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex06 {
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex08 {
 
