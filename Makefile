@@ -50,12 +50,16 @@ slides: web build
 	@node tools/slides/build.mjs --bin $(BUILD)/bin --out out/slides
 
 LESSON ?= 01
+# Grades lesson LESSON's exercises.cpp (and exercises.glsl, where the lesson has GLSL exercises):
+# out/grades/exLESSON/{score.json, junit.xml, results.json (Gradescope)}.
 grade: build
-	@mkdir -p out/grades
-	@$(BUILD)/bin/grade_ex$(LESSON) --score-json=out/grades/ex$(LESSON).json --junit=out/grades/ex$(LESSON).xml \
-	  --gradescope=out/grades/ex$(LESSON)_results.json >/dev/null; \
-	  status=$$?; cat out/grades/ex$(LESSON).json; \
-	  echo "JUnit: out/grades/ex$(LESSON).xml  Gradescope: out/grades/ex$(LESSON)_results.json"; exit $$status
+	@rm -rf out/grades/ex$(LESSON) && mkdir -p out/grades/ex$(LESSON); bin=$(BUILD)/bin; \
+	  $$bin/grade_ex$(LESSON) --results-json=out/grades/ex$(LESSON)/cpp.json >/dev/null; \
+	  glsl=$$(ls $$bin/glsl_lesson_$(LESSON)_* 2>/dev/null | head -1); \
+	  if [ -x $$bin/grade_ex$(LESSON)_glsl ] && [ -n "$$glsl" ]; then \
+	    $$bin/grade_ex$(LESSON)_glsl --lesson-binary=$$glsl --images=out/grades/ex$(LESSON)/images \
+	      --results-json=out/grades/ex$(LESSON)/glsl.json >/dev/null; fi; \
+	  $$bin/grade_report --out out/grades/ex$(LESSON) out/grades/ex$(LESSON)/*.json
 
 # Benchmarks, apart from the tests: every lesson's frame time against its floor (out/bench/frames.{csv,html}),
 # the PSM light-camera set-up against receiver count, lesson 01 over its presets against ground
@@ -74,7 +78,7 @@ soak: build
 	@cmake --build --preset $(PRESET) --target stress_soak
 
 stub-hashes:
-	@sha256sum lessons/*/exercises.cpp > tests/grading/pristine.sha256 && cat tests/grading/pristine.sha256
+	@sha256sum lessons/*/exercises.cpp shaders/*/exercises.glsl > tests/grading/pristine.sha256 && cat tests/grading/pristine.sha256
 
 # Applies .clang-format to every C++ file (the ctest format.check fails on any that does not conform).
 format:

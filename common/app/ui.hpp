@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/context.hpp"
+#include "app/exercises.hpp"
 #include "app/lesson.hpp"
 #include "core/params.hpp"
 
@@ -46,6 +47,10 @@ class Ui {
   void legends(const std::vector<Legend>& legends);
   // Returns true when a parameter changed.
   bool paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status);
+  // The lesson's exercises with their states (bottom left); true when "run the cases again" was pressed.
+  bool exercisesPanel(const Exercises& exercises);
+  // A banner across the top of the frame: the stub banner while impl=student.
+  void banner(const std::string& text);
 
   // Where this frame's UI sits, in framebuffer pixels (windows by title; the A/B labels as
   // "A label" / "B label"): --ui-layout writes it, tests check nothing overlaps.

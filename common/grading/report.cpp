@@ -196,3 +196,53 @@ bool writeFile(const std::string& path, const std::string& text) {
 }
 
 }  // namespace shadowlab::grading
+
+namespace shadowlab::grading {
+
+Json resultsJson(const std::vector<RunResult>& runs) {
+  Json all = Json::array();
+  for (const RunResult& r : runs) all.push_back(resultsJson(r));
+  return Json{{"runs", all}};
+}
+
+std::vector<RunResult> runsFromJson(const Json& j) {
+  std::vector<RunResult> runs;
+  for (const auto& r : j.at("runs")) runs.push_back(runFromJson(r));
+  return runs;
+}
+
+bool writeReports(const ReportFiles& files, const std::vector<RunResult>& runs, std::ostream& err) {
+  const Grade g = grade(runs);
+  const std::pair<const std::string*, std::string> texts[] = {
+      {&files.results, resultsJson(runs).dump(2) + "\n"},
+      {&files.score, scoreJson(runs, g).dump(2) + "\n"},
+      {&files.junit, junitXml(runs, g)},
+      {&files.gradescope, gradescopeJson(runs, g).dump(2) + "\n"}};
+  for (const auto& [path, text] : texts) {
+    if (path->empty() || writeFile(*path, text)) continue;
+    err << "cannot write " << *path << "\n";
+    return false;
+  }
+  return true;
+}
+
+bool stubsScoreZero(const std::vector<RunResult>& runs, std::ostream& out, std::ostream& err) {
+  const Grade g = grade(runs);
+  if (g.exercises.empty()) {
+    err << "validity: no exercise cases (named \"exNN.k: ...\") ran\n";
+    return false;
+  }
+  int bad = 0;
+  for (const RunResult& run : runs)
+    for (const CaseResult& c : run.cases)
+      if (!c.exercise.empty() && c.passed) {
+        err << "validity: \"" << c.name << "\" PASSES on the untouched stub: the stub would earn points\n";
+        ++bad;
+      }
+  for (const ExerciseGrade& e : g.exercises)
+    if (e.points == 0)
+      out << "validity: " << e.id << " scores 0 on the stub, as it must (" << e.cases() << " cases fail)\n";
+  return bad == 0;
+}
+
+}  // namespace shadowlab::grading

@@ -12,6 +12,7 @@
 // Scoring: every exercise is worth kPointsPerExercise, shared equally by its cases (public and
 // hidden alike); a case earns its share only when it passes. An untouched stub fails every case
 // (validity.exNN.stubs proves it), so it scores 0.
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,9 @@ Grade grade(const std::vector<RunResult>& runs);
 
 Json resultsJson(const RunResult& run);
 RunResult runFromJson(const Json& j);  // throws nlohmann::json::exception on a malformed file
+// A results file: {"runs": [run, ...]}.
+Json resultsJson(const std::vector<RunResult>& runs);
+std::vector<RunResult> runsFromJson(const Json& j);
 
 Json scoreJson(const std::vector<RunResult>& runs, const Grade& g);
 std::string junitXml(const std::vector<RunResult>& runs, const Grade& g);
@@ -53,5 +57,16 @@ Json gradescopeJson(const std::vector<RunResult>& runs, const Grade& g);
 
 // Writes `text` to `path` (creating its folder); false when it cannot.
 bool writeFile(const std::string& path, const std::string& text);
+
+// The files a grader writes; an empty path is not written.
+struct ReportFiles {
+  std::string results, score, junit, gradescope;
+};
+// Writes every file named; prints the one that cannot be written to `err` and returns false.
+bool writeReports(const ReportFiles& files, const std::vector<RunResult>& runs, std::ostream& err);
+
+// Grader validity on untouched stubs: every exercise case must fail (a stub scores 0). Prints each
+// exercise's verdict to `out` and each case that passes anyway to `err`; true when none does.
+bool stubsScoreZero(const std::vector<RunResult>& runs, std::ostream& out, std::ostream& err);
 
 }  // namespace shadowlab::grading

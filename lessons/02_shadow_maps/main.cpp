@@ -15,6 +15,7 @@
 // Exercises (exercises.hpp): the texture matrix, the depth comparison, a CPU shadow-map lookup.
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/exercise_program.hpp"
 #include "app/lesson.hpp"
 #include "core/mesh_gen.hpp"
 #include "core/scene_gen.hpp"
@@ -93,6 +94,11 @@ class ShadowMapLesson : public Lesson {
         .hotkey = "V";
     r.add("inset", &p_.inset, "show the shadow map in a corner").hotkey = "I";
     declareImpl(r, &p_.impl, "whose exercise code: your texture matrix and CPU lookup");
+    exercises.add("02.1", "shadowTextureMatrix", "the texture matrix is the identity: the shadows are wrong or gone");
+    exercises.add("02.2", "depthCompare", "compare=cpu_vertex lights every vertex: no shadows");
+    exercises.add("02.3", "shadowLookup (CPU)", "compare=cpu_vertex lights every vertex: no shadows");
+    exercises.addGlsl("02.4", "shadowCompare", "compare=manual lights every pixel: no shadows");
+    exercises.addGlsl("02.5", "shadowLookup", "compare=manual lights every pixel: no shadows");
     r.add("shadow.near", &p_.lightNear, 0.05f, 50,
           "the light frustum's near plane: depth precision depends on far/near");
     r.add("shadow.far", &p_.lightFar, 1, 500, "the light frustum's far plane");
@@ -285,7 +291,8 @@ class ShadowMapLesson : public Lesson {
   gl::Sampler compareNearest_, rawDepth_;
   tech::CasterPass casters_{"02 depth"};
   tech::DepthPrepass prepass_{"02 depth pre-pass", "02_shadow_maps/scene.vert"};
-  gl::ProgramVariants sceneVariants_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"}};
+  ExerciseProgram sceneVariants_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"},
+                                 [this] { return p_.impl == Impl::Student; }};  // GLSL exercises 02.4, 02.5
   tech::DepthMapView mapView_;
   gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};
   gl::GpuMesh gizmo_;

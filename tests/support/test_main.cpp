@@ -77,41 +77,6 @@ int parse(int argc, char** argv, Options& o) {
   return 0;
 }
 
-int writeReports(const Options& o, const grading::RunResult& run) {
-  const std::vector<grading::RunResult> runs{run};
-  const grading::Grade g = grading::grade(runs);
-  const std::pair<const std::string*, std::string> files[] = {
-      {&o.resultsJson, grading::resultsJson(run).dump(2) + "\n"},
-      {&o.scoreJson, grading::scoreJson(runs, g).dump(2) + "\n"},
-      {&o.junit, grading::junitXml(runs, g)},
-      {&o.gradescope, grading::gradescopeJson(runs, g).dump(2) + "\n"}};
-  for (const auto& [path, text] : files) {
-    if (path->empty() || grading::writeFile(*path, text)) continue;
-    std::cerr << "cannot write " << *path << "\n";
-    return 1;
-  }
-  return 0;
-}
-
-// Validity on the untouched stubs: each exercise's score must be 0, i.e. every case fails.
-int checkStubsScoreZero(const grading::RunResult& run) {
-  const grading::Grade g = grading::grade({run});
-  if (g.exercises.empty()) {
-    std::cerr << "validity: no exercise test cases (named \"exNN.k: ...\") ran\n";
-    return 1;
-  }
-  int bad = 0;
-  for (const grading::CaseResult& c : run.cases)
-    if (!c.exercise.empty() && c.passed) {
-      std::cerr << "validity: \"" << c.name << "\" PASSES on the untouched stub: the stub would earn points\n";
-      ++bad;
-    }
-  for (const grading::ExerciseGrade& e : g.exercises)
-    if (e.points == 0)
-      std::cout << "validity: " << e.id << " scores 0 on the stub, as it must (" << e.cases() << " cases fail)\n";
-  return bad ? 1 : 0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -131,12 +96,12 @@ int main(int argc, char** argv) {
   grading::RunResult run = grading::lastRun();
   run.suite = std::filesystem::path(argv[0]).filename().string();
   run.seed = grading::seed();
-  if (int e = writeReports(o, run)) return e;
+  if (!grading::writeReports({o.resultsJson, o.scoreJson, o.junit, o.gradescope}, {run}, std::cerr)) return 1;
   if (run.testCasesRun == 0) {
     std::cerr << "[shadowlab] no test case ran: the filter matches none of this binary's cases "
                  "(a ctest entry that runs nothing must not pass)\n";
     return 1;
   }
-  if (o.expectStubsScoreZero) return checkStubsScoreZero(run);
+  if (o.expectStubsScoreZero) return grading::stubsScoreZero({run}, std::cout, std::cerr) ? 0 : 1;
   return result;
 }
