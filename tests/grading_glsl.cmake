@@ -25,7 +25,8 @@ foreach(cases IN LISTS GLSL_CASE_FILES)
   set(grading_lesson glsl_lesson_${lesson})
   add_executable(${grading_lesson} ${lesson_dir}/main.cpp ${CMAKE_CURRENT_SOURCE_DIR}/grading/ex${nn}_tests.cpp ${cases})
   target_include_directories(${grading_lesson} PRIVATE ${lesson_dir} ${CMAKE_CURRENT_SOURCE_DIR}/support)
-  target_link_libraries(${grading_lesson} PRIVATE shadowlab_app shadowlab_ex${nn}_reference)
+  get_target_property(lesson_libraries lesson_${lesson} LINK_LIBRARIES)  # whatever the lesson links
+  target_link_libraries(${grading_lesson} PRIVATE ${lesson_libraries} shadowlab_ex${nn}_reference)
 
   set(sources ${CMAKE_CURRENT_SOURCE_DIR}/grading/glsl_grader.cpp ${cases})
   if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/grading/hidden/ex${nn}_glsl_hidden.cpp)

@@ -44,7 +44,7 @@ shadowlab::HiddenGlsl hidden() {
     auto v3 = [](const glm::vec3& v) { return glslFloat(v.x) + " " + glslFloat(v.y) + " " + glslFloat(v.z); };
     h.renders.push_back(
         {"ex02.5: hidden render " + std::to_string(i) + ": a random spot and camera (compare=manual)",
-         {"--set", "compare=manual", "--set", "light.position=" + v3(light), "--set", "light.direction=" + v3(dir),
+         {"--set", "compare=manual", "--set", "light0.position=" + v3(light), "--set", "light0.direction=" + v3(dir),
           "--set", "camera.yaw=" + glslFloat(6.2832f * u(rng)), "--set", "bias=" + glslFloat(0.002f * u(rng))},
          8,
          0.001,
