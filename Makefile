@@ -1,13 +1,14 @@
 # shadowlab: two commands do everything (each installs what is missing first).
 #   make run    the course: a launcher window, or without a display every lesson rendered into out/tour/
 #   make test   every test through ctest, headless
-# Also: make build, make slides, make grade LESSON=01, make bench, make soak, make fuzz, make stub-hashes, make format, make clean.
+# Also: make build, make slides, make grade LESSON=01, make bench, make soak, make fuzz, make stub-hashes, make format, make clean;
+# instructors: make handout (the student tree), make grade-submission SUBMISSION=DIR (public + hidden cases).
 PRESET ?= default
 BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: run test build deps configure web slides grade bench soak fuzz fuzz-build stub-hashes clean tour format
+.PHONY: run test build deps configure web slides grade bench soak fuzz fuzz-build stub-hashes clean tour format handout grade-submission
 
 deps:
 	@bash tools/install-deps.sh
@@ -60,6 +61,20 @@ grade: build
 	    $$bin/grade_ex$(LESSON)_glsl --lesson-binary=$$glsl --images=out/grades/ex$(LESSON)/images \
 	      --results-json=out/grades/ex$(LESSON)/glsl.json >/dev/null; fi; \
 	  $$bin/grade_report --out out/grades/ex$(LESSON) out/grades/ex$(LESSON)/*.json
+
+# The student handout: out/handout/shadowlab and out/handout/shadowlab-student.tar.gz (tools/handout).
+HANDOUT ?= out/handout
+handout: configure
+	@bash tools/handout/make_handout.sh $(HANDOUT)
+
+# Grades a student's files against this tree with the hidden cases and a seed it chooses (SEED=N
+# to fix it): out/grades/submission/{score.json, junit.xml, results.json}.
+SUBMISSION ?=
+GRADES ?= out/grades/submission
+grade-submission: configure
+	@if [ -z "$(SUBMISSION)" ]; then echo "usage: make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT]"; exit 2; fi
+	@if [ ! -f tools/grading/grade_submission.sh ]; then echo "grade-submission: the instructor's tree only (the handout has no hidden cases)"; exit 2; fi
+	@SEED=$(SEED) bash tools/grading/grade_submission.sh $(SUBMISSION) $(GRADES)
 
 # Benchmarks, apart from the tests: every lesson's frame time against its floor (out/bench/frames.{csv,html}),
 # the PSM light-camera set-up against receiver count, lesson 01 over its presets against ground

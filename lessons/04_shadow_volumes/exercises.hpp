@@ -12,7 +12,7 @@
 
 namespace shadowlab::ex04 {
 
-// EXERCISE 04.1: silhouette detection from adjacency (seeds 004, shadow volumes: "an edge between a
+// EXERCISE 04.1: silhouette detection from adjacency ([Tarantsev-L12], shadow volumes: "an edge between a
 // lit and an unlit face"). The edge (a, b) is shared by the triangle (a, b, c) and its neighbour
 // (b, a, d), both counter-clockwise. A triangle faces the light when the light is on the front
 // side of its plane: with n = (p1 - p0) x (p2 - p0), dot(n, light.xyz - p0 * light.w) > 0 (exactly

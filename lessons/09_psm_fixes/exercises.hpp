@@ -1,5 +1,5 @@
 #pragma once
-// Lesson 09 exercises: the paper's fixes to PSM (seeds 000 §3-5). Pure functions; GLM column
+// Lesson 09 exercises: the paper's fixes to PSM ([Kozlov2004] §3-5). Pure functions; GLM column
 // vectors; right-handed view spaces looking down -z; clip depth in [-1,1] (OpenGL).
 // Post-projective light encoding as in exercise 08.1: (p, +1) finite in front, (p, -1) finite
 // behind the camera, (D, 0) a direction (light at infinity toward +D, rays travel along -D).
@@ -12,7 +12,7 @@
 namespace shadowlab::ex09 {
 
 // EXERCISE 09.1: the inverse projection matrix
-// For a light behind the camera, seeds 000 §3 gives the light camera a NEGATIVE near distance and
+// For a light behind the camera, [Kozlov2004] §3 gives the light camera a NEGATIVE near distance and
 // a positive far one, Zn = -a, Zf = +a, so Q = Zf / (Zf - Zn) = 1/2 and the stored depth is
 //   Z_psm = Q (1 - Zn / Z) = 1/2 (1 + a / Z)          (Direct3D, depth in [0,1]),
 // Z the distance along the light camera's axis. In OpenGL conventions (view looks down -z, so

@@ -131,7 +131,7 @@ void main() {
   float spec = diffuse > 0.0 ? 0.25 * pow(max(dot(N, H), 0.0), 32.0) : 0.0;
   vec3 lit = uMaterial * (0.45 + 0.55 * diffuse) + vec3(spec);
 
-  // ---- combination with the material (seeds 004, interaction with the material) ----
+  // ---- combination with the material ([Tarantsev-L12], interaction with the material) ----
   vec3 ct = tex.rgb;
   float at = tex.a;
   if (uChannels == 1) ct = vec3(dot(tex.rgb, vec3(0.299, 0.587, 0.114)));
