@@ -1,4 +1,5 @@
-# Citations a student can follow (label unit): no README, deck, document or exercise statement
+# Citations a student can follow (label unit): no README, deck, document, exercise statement or
+# header of the taught algorithms (the handout ships those without their sources)
 # cites the internal "seeds NNN" names or points outside the repository (../shared), and every
 # key cited as [Key] is an entry of docs/references.md.
 add_test(NAME docs.citations COMMAND ${CMAKE_COMMAND} -DROOT=${CMAKE_SOURCE_DIR}

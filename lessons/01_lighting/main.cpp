@@ -1,4 +1,4 @@
-// Lesson 01: lighting. The lecture's illumination model with the visibility term V_i (seeds 004):
+// Lesson 01: lighting. The lecture's illumination model with the visibility term V_i ([Tarantsev-L12]):
 //
 //   I = ka Ia + sum_i V_i f_att,i I_i [kd (N.L_i) + ks (R_i.V)^pow]
 //

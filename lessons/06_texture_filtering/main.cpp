@@ -1,4 +1,4 @@
-// Lesson 06: texture filtering, from texels to anisotropy (seeds 004, textures). A ground plane to
+// Lesson 06: texture filtering, from texels to anisotropy ([Tarantsev-L12], textures). A ground plane to
 // the horizon, a tunnel and a sphere, textured with patterns that alias; every filter of the
 // lecture on a GL sampler object: wrap modes, nearest/linear magnification, the four mipmap modes,
 // trilinear, anisotropic 1x-16x, LOD bias; RIP maps filtered in the shader; texture coordinates

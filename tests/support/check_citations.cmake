@@ -12,7 +12,8 @@ if(nkeys LESS 10)
   message(FATAL_ERROR "docs/references.md lists only ${nkeys} entries")
 endif()
 file(GLOB files ${ROOT}/README.md ${ROOT}/lessons/*/README.md ${ROOT}/slides/*.md ${ROOT}/docs/*.md
-     ${ROOT}/lessons/*/exercises.hpp ${ROOT}/shaders/*/exercises.glsl)
+     ${ROOT}/lessons/*/exercises.hpp ${ROOT}/shaders/*/exercises.glsl ${ROOT}/common/algorithms/*.hpp
+     ${ROOT}/common/algorithms/psm/*.hpp)
 set(bad "")
 set(cited 0)
 foreach(f IN LISTS files)

@@ -31,15 +31,15 @@ for ref in tests/grading/ex*_reference.cpp; do
   lesson=$(basename "$(ls -d lessons/${nn}_*)")
   [ -f "$sub/lessons/$lesson/exercises.cpp" ] ||
     echo "grade: no lessons/$lesson/exercises.cpp in the submission: graded as the untouched stub"
-  if cmake --build "$build" -j "$jobs" --target "grade_ex$nn" >"$out/logs/build_ex$nn.log" 2>&1; then
+  if cmake --build "$build" -j "$jobs" --target "grade_ex$nn" "shadowlab_ex${nn}_reference" >"$out/logs/build_ex$nn.log" 2>&1; then
     "$build/bin/grade_ex$nn" --seed="$seed" --results-json="$out/runs/ex$nn.json" >"$out/logs/ex$nn.log" 2>&1 || true
     reports+=("$out/runs/ex$nn.json")
     # Calls from the student's file into what the reference calls: the answer borrowed, perhaps.
-    mine=$(find "$build/tests/CMakeFiles/grade_ex$nn.dir" -name 'exercises.cpp.o' | head -1)
+    mine=$(find "$build/tests/CMakeFiles/grade_ex$nn.dir" -path "*$sub/lessons/$lesson/exercises.cpp.o" | head -1)
     theirs=$(find "$build" -path "*shadowlab_ex${nn}_reference.dir*" -name "ex${nn}_reference.cpp.o" | head -1)
     if [ -n "$mine" ] && [ -n "$theirs" ]; then
-      comm -12 <(nm -C -u "$mine" | grep -o 'shadowlab::[a-z]*::[A-Za-z_]*' | grep -v '::grading::' | sort -u) \
-               <(nm -C -u "$theirs" | grep -o 'shadowlab::[a-z]*::[A-Za-z_]*' | sort -u) |
+      comm -12 <(nm -C -u "$mine" | grep -o 'shadowlab::[a-z]*::[a-z][A-Za-z_]*' | grep -v '::grading::' | sort -u) \
+               <(nm -C -u "$theirs" | grep -o 'shadowlab::[a-z]*::[a-z][A-Za-z_]*' | sort -u) |
         sed "s|^|ex$nn: exercises.cpp calls the reference library's |" >>"$out/logs/reference_calls.txt" || true
     fi
   else

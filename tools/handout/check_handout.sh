@@ -85,7 +85,7 @@ build() {
     exit 1
   fi
   local bin=$tree/build/default/bin n=0
-  for lesson in "$bin"/lesson_*; do
+  for lesson in "$bin"/lesson_[0-9]*; do
     env -u SHADOWLAB_ROOT SHADOWLAB_STRICT_GL=1 "$lesson" --headless --frames 2 --size 320x180 \
       --set impl=reference --screenshot "$work/$(basename "$lesson").png" >/dev/null ||
       { echo "FAIL: $(basename "$lesson") does not run in the handout"; exit 1; }

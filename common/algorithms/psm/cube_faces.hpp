@@ -1,5 +1,5 @@
 #pragma once
-// Fix 3 (seeds 000 §4.2): depth maps on the faces of the post-projective unit cube that the light
+// Fix 3 ([Kozlov2004] §4.2): depth maps on the faces of the post-projective unit cube that the light
 // does NOT see, one off-centre projection per face from the light's post-projective position
 // ("a cube map with a shifted centre": lookup vector = point - light position). 3 to 5 faces for
 // a light outside the cube, all 6 for a point light inside it.

@@ -12,15 +12,7 @@
 
 using namespace shadowlab;
 
-namespace {
-glm::vec3 randomUnit(std::mt19937_64& rng) {
-  std::normal_distribution<float> n;
-  glm::vec3 v;
-  do v = {n(rng), n(rng), n(rng)};
-  while (glm::length(v) < 1e-3f);
-  return glm::normalize(v);
-}
-}  // namespace
+using test::randomUnit;
 
 TEST_SUITE("hidden") {
   TEST_CASE("ex01.1: random configurations against the lecture's formula") {
