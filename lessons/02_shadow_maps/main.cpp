@@ -1,4 +1,4 @@
-// Lesson 02: shadow maps (Williams 1978, as Boreskov's tutorial builds them: seeds 002; seeds 004).
+// Lesson 02: shadow maps ([Williams1978], as [Boreskov2005] builds them; [Tarantsev-L12]).
 //
 //   pass 1: render depth from the light into a depth texture (no colour, polygon offset on)
 //   pass 2: render from the eye; T = translate(0.5) * scale(0.5) * P_light * V_light takes each
@@ -141,7 +141,7 @@ class ShadowMapLesson : public Lesson {
   }
 
   void render(const FrameInfo& f) override {
-    // The light camera: a perspective frustum around the spot's cone (seeds 002: good for spots).
+    // The light camera: a perspective frustum around the spot's cone ([Boreskov2005]: good for spots).
     const shadow::LightCamera light =
         shadow::spotCamera(p_.light, p_.lightNear, p_.lightFar, scene_.casterBoxes(), false);
     const bool student = p_.impl == Impl::Student;
@@ -162,7 +162,7 @@ class ShadowMapLesson : public Lesson {
       rendered_ = std::move(key);
       auto t = scope("shadow map");
       gl::beginShadowPass(map_);
-      glEnable(GL_POLYGON_OFFSET_FILL);  // seeds 002: glPolygonOffset(4, 4) against self-shadowing
+      glEnable(GL_POLYGON_OFFSET_FILL);  // [Boreskov2005]: glPolygonOffset(4, 4) against self-shadowing
       glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
       shadowTriangles_ = casters_.draw(scene_, light.viewProj(), {}, {p_.alphaTest, false});
       glDisable(GL_POLYGON_OFFSET_FILL);
@@ -291,8 +291,10 @@ class ShadowMapLesson : public Lesson {
   gl::Sampler compareNearest_, rawDepth_;
   tech::CasterPass casters_{"02 depth"};
   tech::DepthPrepass prepass_{"02 depth pre-pass", "02_shadow_maps/scene.vert"};
-  ExerciseProgram sceneVariants_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"},
-                                 [this] { return p_.impl == Impl::Student; }};  // GLSL exercises 02.4, 02.5
+  // GLSL exercises 02.4, 02.5: the student's build of the scene shader with impl=student.
+  ExerciseProgram sceneVariants_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"}, [this] {
+                                   return p_.impl == Impl::Student;
+                                 }};
   tech::DepthMapView mapView_;
   gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};
   gl::GpuMesh gizmo_;

@@ -1,6 +1,7 @@
-// Lesson 03: shadow-map quality (seeds 000 §2, 002, 004). Everything that makes lesson 02's maps
-// good, each a switch, in the uniform shadow-map technique (common/technique/uniform_maps.cpp and
-// shaders/common/shadow_uniform.frag, which this lesson is about):
+// Lesson 03: shadow-map quality ([Kozlov2004] §2, [Boreskov2005], [Tarantsev-L12]). Everything
+// that makes lesson 02's maps good, each a switch, in the uniform shadow-map technique
+// (common/technique/uniform_maps.cpp and shaders/common/shadow_uniform.frag, which this lesson is
+// about):
 //   bias      constant, slope-scaled (polygon offset and in the shader), normal offset, receiver
 //             plane, front-face culling in the depth pass
 //   texels    resolution 256..8192; filtering nearest, hardware 2x2 PCF, N x N PCF, Poisson disk

@@ -20,7 +20,7 @@ namespace shadowlab::ex04 {
 bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
                   const glm::vec4& light);
 
-// EXERCISE 04.2: the infinite projection matrix (Everitt and Kilgard 2002): glm::perspective's
+// EXERCISE 04.2: the infinite projection matrix ([Everitt2002]): glm::perspective's
 // matrix with the far plane at infinity, so the volume's points at infinity (w = 0) are not clipped:
 //   [ f/aspect 0  0          0              ]
 //   [ 0        f  0          0              ]     f = 1 / tan(fovY / 2)

@@ -1,7 +1,7 @@
-// Lesson 04: stencil shadow volumes, done right. The lecture's passes (seeds 004, shadow volumes)
-// made robust after Everitt and Kilgard, "Practical and Robust Stenciled Shadow Volumes" (2002),
-// in the stencil-volume technique (common/technique/stencil_volumes.cpp, whose numbered passes are
-// this lesson's; shaders in shaders/common/volumes/):
+// Lesson 04: stencil shadow volumes, done right. The lecture's passes ([Tarantsev-L12], shadow
+// volumes) made robust after Everitt and Kilgard, "Practical and Robust Stenciled Shadow Volumes"
+// ([Everitt2002]), in the stencil-volume technique (common/technique/stencil_volumes.cpp, whose
+// numbered passes are this lesson's; shaders in shaders/common/volumes/):
 //   0. edge adjacency           once per mesh: silhouettes later, open meshes found now
 //   1. depth and ambient        the scene once: depth, ka Ia, and V = 0 for the measurement
 //   per light (scissored to its reach):

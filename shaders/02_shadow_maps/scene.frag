@@ -1,5 +1,5 @@
 #version 410 core
-// Pass 2, fragment: the lecture's model with V from the shadow map (seeds 002, 004).
+// Pass 2, fragment: the lecture's model with V from the shadow map ([Boreskov2005], [Tarantsev-L12]).
 #include "common/lighting.glsl"
 #include "common/measure.glsl"
 

@@ -11,18 +11,22 @@ list(LENGTH keys nkeys)
 if(nkeys LESS 10)
   message(FATAL_ERROR "docs/references.md lists only ${nkeys} entries")
 endif()
-file(GLOB files ${ROOT}/README.md ${ROOT}/lessons/*/README.md ${ROOT}/slides/*.md ${ROOT}/docs/*.md
-     ${ROOT}/lessons/*/exercises.hpp ${ROOT}/shaders/*/exercises.glsl ${ROOT}/common/algorithms/*.hpp
-     ${ROOT}/common/algorithms/psm/*.hpp)
+# Everything a student reads: the documents, and the sources the handout ships (lessons, shaders,
+# the framework's headers and sources), plus the taught algorithms' headers. ROOT_EXTRA: more
+# files (the test that proves this check fails).
+file(GLOB_RECURSE files ${ROOT}/README.md ${ROOT}/lessons/*.md ${ROOT}/lessons/*.cpp ${ROOT}/lessons/*.hpp
+     ${ROOT}/slides/*.md ${ROOT}/docs/*.md ${ROOT}/shaders/*.glsl ${ROOT}/shaders/*.vert ${ROOT}/shaders/*.frag
+     ${ROOT}/shaders/*.geom ${ROOT}/common/*.hpp ${ROOT}/common/*.cpp)
+list(APPEND files ${ROOT_EXTRA})
 set(bad "")
 set(cited 0)
 foreach(f IN LISTS files)
   file(RELATIVE_PATH rel ${ROOT} ${f})
-  file(STRINGS ${f} lines)
+  file(STRINGS ${f} lines ENCODING UTF-8)
   set(n 0)
   foreach(line IN LISTS lines)
     math(EXPR n "${n} + 1")
-    if(line MATCHES "seeds [0-9][0-9][0-9]|seeds'|\\.\\./shared")
+    if(line MATCHES "[Ss]eeds [0-9][0-9][0-9]|[Ss]eeds'|\\.\\./shared")
       list(APPEND bad "${rel}:${n}: cites an internal name or points outside the repository: ${line}")
     endif()
     # [Key] as a citation: a capitalised word with a year or a document suffix, not a link text.

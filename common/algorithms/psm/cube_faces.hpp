@@ -34,7 +34,7 @@ int cubeFaceOf(const glm::dvec3& point, const PostProjectiveLight& light);
 // The same among the faces of `hiddenMask` (as hiddenFaceMask gives it).
 int cubeFaceOf(const glm::dvec3& point, const PostProjectiveLight& light, unsigned hiddenMask);
 
-// Seeds 000 §4.2: lookup vector = point - light position; a Direction light gives -direction.
+// [Kozlov2004] §4.2: lookup vector = point - light position; a Direction light gives -direction.
 glm::dvec3 cubeLookupVector(const glm::dvec3& point, const PostProjectiveLight& light);
 
 struct CubeFaceCamera {
