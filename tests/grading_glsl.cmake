@@ -81,8 +81,9 @@ endforeach()
 
 # The exercises panel and the stub banner, through the lessons (label gpu): --exercises reports
 # each exercise's state from the public cases (stubs here; the reference C++ in the grading build),
-# and impl=student on the stubs prints the banner headless.
-foreach(lesson IN ITEMS 01_lighting 02_shadow_maps 06_texture_filtering)
+# and impl=student on the stubs prints the banner headless (lesson 04's stubbed projection leaves
+# the frame black: the banner says so).
+foreach(lesson IN ITEMS 01_lighting 02_shadow_maps 03_shadow_quality 04_shadow_volumes 06_texture_filtering)
   if(TARGET lesson_${lesson})
     string(SUBSTRING ${lesson} 0 2 nn)
     add_test(NAME gpu.${lesson}.exercises_panel COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_${lesson}>
@@ -94,6 +95,13 @@ foreach(lesson IN ITEMS 01_lighting 02_shadow_maps 06_texture_filtering)
     set_tests_properties(gpu.${lesson}.exercises_panel gpu.${lesson}.stub_banner PROPERTIES LABELS gpu)
   endif()
 endforeach()
+if(TARGET lesson_04_shadow_volumes)
+  add_test(NAME gpu.04_shadow_volumes.stub_banner_black COMMAND ${CMAKE_COMMAND}
+           -DLESSON=$<TARGET_FILE:lesson_04_shadow_volumes> "-DARGS=--headless;--frames;1;--size;320x180;--set;impl=student"
+           "-DEXPECT=\n  04\\.2 infinitePerspective: [^\n]*(\n  [^\n]*)*\nThe frame is [0-9]+% black or empty: that is the stub"
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_exercises.cmake)
+  set_tests_properties(gpu.04_shadow_volumes.stub_banner_black PROPERTIES LABELS gpu)
+endif()
 foreach(lesson IN ITEMS 02_shadow_maps 06_texture_filtering)
   if(TARGET glsl_lesson_${lesson})
     string(SUBSTRING ${lesson} 0 2 nn)

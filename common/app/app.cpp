@@ -233,14 +233,15 @@ class Runner {
     bannerPrinted_ = bannerPrinted_ || !banner_.empty();
   }
 
-  // The share of (nearly) black pixels in the frame just drawn.
+  // The share of (nearly) black pixels in the frame just drawn: below 24 of 255 in every channel,
+  // so the lessons' clear colour (0.05, 0.06, 0.08) counts too, and an empty frame is "black".
   double blackShare(const FrameInfo& fi) const {
     std::vector<unsigned char> rgba(std::size_t(width_) * std::size_t(height_) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fi.framebuffer);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     std::size_t black = 0;
-    for (std::size_t i = 0; i < rgba.size(); i += 4) black += std::max({rgba[i], rgba[i + 1], rgba[i + 2]}) < 12;
+    for (std::size_t i = 0; i < rgba.size(); i += 4) black += std::max({rgba[i], rgba[i + 1], rgba[i + 2]}) < 24;
     return rgba.empty() ? 0.0 : double(black) / double(rgba.size() / 4);
   }
 

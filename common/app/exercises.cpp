@@ -97,7 +97,7 @@ std::string Exercises::stubBanner(double blackShare) const {
   if (blackShare > 0.95) {
     char pct[16];
     std::snprintf(pct, sizeof pct, "%.0f", 100 * blackShare);
-    s += "\nThe frame is " + std::string(pct) + "% black: that is the stub, not a bug in the lesson.";
+    s += "\nThe frame is " + std::string(pct) + "% black or empty: that is the stub, not a bug in the lesson.";
   }
   const std::string files = std::string(cpp ? "lessons/" + lesson_ + "/exercises.cpp" : "") +
                             (cpp && glsl ? " and " : "") + (glsl ? "shaders/" + lesson_ + "/exercises.glsl" : "");

@@ -69,6 +69,12 @@ class ShadowVolumeLesson : public Lesson {
                               "scene size: silhouette edges and volume fill grow with it");
     camera.target = {0, 0.8f, 0};
     declareImpl(r, &p_.impl, "whose exercise code runs: silhouettes, projection, stencil ops, z-fail test");
+    exercises.add("04.1", "isSilhouette", "no edge is a silhouette: no volume is drawn, nothing is shadowed");
+    exercises.add("04.2", "infinitePerspective",
+                  "the projection is the identity: the scene is out of view, the frame black");
+    exercises.add("04.3", "stencilOps", "the stencil never counts: nothing is shadowed");
+    exercises.add("04.4", "volumeMayReachNearPlane",
+                  "method=auto never picks z-fail: wrong shadows with the camera in a volume");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: the light shadows never take away");
     r.add("specular", &p_.specular, 0, 1, "ks");
     r.add("shininess", &p_.shininess, 1, 256, "the specular exponent");
