@@ -467,15 +467,15 @@ class Runner {
     if (!initError_.empty()) errors.insert(errors.begin(), initError_);
     std::vector<Legend> legends = lesson_.legends;
     if (const auto l = measurement_.legend()) legends.push_back(*l);
-    ui_.legends(legends);                  // first: the header stops above them
-    ui_.reserve(lesson_.insets, height_);  // the header and the panel stop above the insets
+    ui_.legends(legends);                  // first: the header stops above them (and above the exercises panel)
+    ui_.reserve(lesson_.insets, height_);  // the header and the panels stop above the insets
+    if (!lesson_.exercises.empty()) rerunExercises_ = ui_.exercisesPanel(lesson_.exercises) || rerunExercises_;
     ui_.header({&info_, gl::caps().summary(), frameMsAvg_, &lesson_.timers.passes(), &shown, errors, status_,
                 gl::caps().softwareRenderer, budget_.label()});
     ui_.paramPanel(params_, presets_, status_);
     const Measurement* measured = info_.measurable ? &measurement_ : nullptr;
     if (ab_.enabled()) ui_.splitLabels(ab_.divider(), ab_.labelA(measured), ab_.labelB());
     lesson_.gui();
-    if (!lesson_.exercises.empty()) rerunExercises_ = ui_.exercisesPanel(lesson_.exercises) || rerunExercises_;
     ui_.banner(banner_);
     ui_.help(info_, params_, &helpOpen_);
     input_.help = helpOpen_;

@@ -369,11 +369,23 @@ ImVec4 stateColour(ExerciseState s) {
 
 bool Ui::exercisesPanel(const Exercises& exercises) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(8 * scale_, vp->Size.y - 8 * scale_), ImGuiCond_Appearing, ImVec2(0, 1));
+  // Bottom left, above a heatmap's legend when one is drawn (legends() runs first) and above the
+  // insets the lesson reported under its column (reserve() runs first too).
+  const float maxWidth = vp->Size.x * kHeaderShare - 16 * scale_;
+  float bottom = std::min(vp->Size.y, legendTop_) - 8 * scale_;
+  bottom = std::min(bottom, roomAbove(8 * scale_, 8 * scale_ + maxWidth, bottom + 8 * scale_) + 8 * scale_);
+  ImGui::SetNextWindowPos(ImVec2(8 * scale_, bottom), ImGuiCond_Always, ImVec2(0, 1));
+  // The header's share of the width at most (even collapsed it is as wide as its rows): the
+  // parameter panel keeps the right.
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(maxWidth, vp->Size.y));
   ImGui::SetNextWindowBgAlpha(0.8f);
   ImGui::SetNextWindowCollapsed(true, ImGuiCond_Appearing);  // a title bar until opened: the picture stays visible
   bool rerun = false;
-  if (ImGui::Begin("Exercises", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
+  const bool open =
+      ImGui::Begin("Exercises", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+  recordWindow("Exercises");
+  legendTop_ = ImGui::GetWindowPos().y;  // the header stops above the bottom-left stack
+  if (open) {
     for (const Exercise& e : exercises.list()) {
       ImGui::TextColored(stateColour(e.state), "%-5s %-8s", e.id.c_str(), exerciseStateName(e.state));
       ImGui::SameLine();
@@ -400,6 +412,7 @@ void Ui::banner(const std::string& text) {
   ImGui::PushTextWrapPos(vp->Size.x * 0.6f);
   ImGui::TextUnformatted(text.c_str());
   ImGui::PopTextWrapPos();
+  recordWindow("Stub banner");
   ImGui::End();
   ImGui::PopStyleColor();
 }

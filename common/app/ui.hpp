@@ -72,7 +72,7 @@ class Ui {
   // frame's insets, at most `height`.
   float roomAbove(float left, float right, float height) const;
   std::vector<Rect> reserved_;  // this frame's insets, top-left origin
-  float legendTop_ = 1e9f;      // the legend's top edge this frame (none: far below)
+  float legendTop_ = 1e9f;      // the top of the bottom-left stack (legend, exercises) this frame
 };
 
 // --ui-layout FILE: the viewport and the UI's rectangles as JSON. Throws std::runtime_error.
