@@ -15,6 +15,7 @@ glm::dvec4 postProjectiveLight(const glm::dmat4& viewProj, const glm::dvec4& lig
 
 // EXERCISE 08.2
 double virtualCameraShift(const glm::dmat4& view, double zNear, const std::vector<glm::dvec3>& casterCorners) {
+  SHADOWLAB_STUB("08.2");  // delete this line when you write the exercise
   // TODO: the largest z_view + zNear over the corners (z_view = (view * (corner, 1)).z), or 0.
   (void)view;
   (void)zNear;

@@ -46,6 +46,7 @@ glm::dvec3 texelSizeBias(const glm::dmat4& worldToClip, const glm::dvec3& p, con
 
 // EXERCISE 09.5
 double lispsmOptimalN(double z0, double z1, double gamma) {
+  SHADOWLAB_STUB("09.5");  // delete this line when you write the exercise
   // TODO: (z0 + sqrt(z0 z1)) / |sin(gamma)|, or +infinity when sin(gamma) == 0.
   (void)z0;
   (void)z1;

@@ -25,7 +25,7 @@ normalize() { sed -E 's|//.*$||; s/^[[:space:]]+//; s/[[:space:]]+$//; s/[[:spac
 # (tests/grading/exNN_reference.cpp -> common/algorithms), those files' own bodies, and the sealed
 # shader files; every line of them long enough to be an answer rather than a brace or a loop head.
 referenceFunctions() {
-  grep -ohE '\b(lighting|shadow|volume|sampling|psm)::[A-Za-z_]+\(' tests/grading/ex*_reference.cpp |
+  grep -ohE '\b(lighting|shadow|volume|sampling|psm|soft|hybrid)::[A-Za-z_]+\(' tests/grading/ex*_reference.cpp |
     sed -E 's/.*::([A-Za-z_]+)\(/\1/' | sort -u
 }
 bodyOf() {  # bodyOf NAME FILE...: the lines inside the braces of NAME's definitions

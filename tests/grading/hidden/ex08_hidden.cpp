@@ -46,4 +46,35 @@ TEST_SUITE("hidden") {
       if (!CHECK_NEAR(postProjectiveLight(vp, light), expected, shadowlab::grading::relativeTolerance(1e-9))) break;
     }
   }
+
+  TEST_CASE("ex08.2: random cameras and corners against max(z_view + zNear, 0)") {
+    std::mt19937_64 rng(shadowlab::test::seedFor("ex08.2 hidden"));
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int i = 0; i < 300; ++i) {
+      const double a = 3.0 * u(rng), b = 1.5 * u(rng), zNear = 0.01 + 3.0 * (u(rng) + 1.0);
+      glm::dmat4 yaw(1.0), pitch(1.0);  // a rotation about y, then about x, and a translation
+      yaw[0][0] = std::cos(a);
+      yaw[2][0] = std::sin(a);
+      yaw[0][2] = -std::sin(a);
+      yaw[2][2] = std::cos(a);
+      pitch[1][1] = std::cos(b);
+      pitch[2][1] = -std::sin(b);
+      pitch[1][2] = std::sin(b);
+      pitch[2][2] = std::cos(b);
+      glm::dmat4 view = pitch * yaw;
+      view[3] = glm::dvec4(20 * u(rng), 20 * u(rng), 20 * u(rng), 1.0);
+      std::vector<glm::dvec3> corners;
+      double expected = 0.0;
+      for (int k = 0; k < i % 9; ++k) {  // now and then none
+        corners.push_back({40 * u(rng), 40 * u(rng), 40 * u(rng)});
+        expected = std::max(expected, (view * glm::dvec4(corners.back(), 1.0)).z + zNear);
+      }
+      INFO("random case ", i, " of 300 (seed ", shadowlab::test::seed(), "): zNear ", zNear, ", ", corners.size(),
+           " corners");
+      CAPTURE(view);
+      if (!CHECK_NEAR(shadowlab::ex08::virtualCameraShift(view, zNear, corners), expected,
+                      shadowlab::grading::relativeTolerance(1e-9)))
+        break;
+    }
+  }
 }

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -88,6 +89,19 @@ TEST_SUITE("hidden") {
       CAPTURE(p);
       CAPTURE(L);
       if (!CHECK_NEAR(ex09::texelSizeBias(M, p, L, a, b, S), expected, grading::relativeTolerance(1e-9))) break;
+    }
+  }
+
+  TEST_CASE("ex09.5: random ranges and angles against (z0 + sqrt(z0 z1)) / |sin gamma|") {
+    std::mt19937_64 rng(test::seedFor("ex09.5 hidden"));
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int i = 0; i < 300; ++i) {
+      const double z0 = 0.001 + 20.0 * u(rng), z1 = z0 * (1.01 + 5000.0 * u(rng));
+      const double gamma = i % 25 == 0 ? 0.0 : -3.1 + 6.2 * u(rng);  // now and then along the view
+      const double s = std::abs(std::sin(gamma));
+      const double expected = s == 0.0 ? std::numeric_limits<double>::infinity() : (z0 + std::sqrt(z0 * z1)) / s;
+      INFO("random case ", i, " of 300 (seed ", test::seed(), "): z0 ", z0, ", z1 ", z1, ", gamma ", gamma);
+      if (!CHECK_NEAR(ex09::lispsmOptimalN(z0, z1, gamma), expected, grading::relativeTolerance(1e-9))) break;
     }
   }
 }
