@@ -82,17 +82,23 @@ endforeach()
 # The exercises panel and the stub banner, through the lessons (label gpu): --exercises reports
 # each exercise's state from the public cases (stubs here; the reference C++ in the grading build),
 # and impl=student on the stubs prints the banner headless (lesson 04's stubbed projection leaves
-# the frame black: the banner says so).
-foreach(lesson IN ITEMS 01_lighting 02_shadow_maps 03_shadow_quality 04_shadow_volumes 06_texture_filtering)
+# the frame black: the banner says so). Lesson 07 has no banner run: on the stubs its sweep stops
+# the lesson with a clear error instead (gpu.hybrid.student).
+foreach(lesson IN ITEMS 01_lighting 02_shadow_maps 03_shadow_quality 04_shadow_volumes 05_soft_shadows
+                        06_texture_filtering 07_hybrid_maps 08_psm 09_psm_fixes)
   if(TARGET lesson_${lesson})
     string(SUBSTRING ${lesson} 0 2 nn)
     add_test(NAME gpu.${lesson}.exercises_panel COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_${lesson}>
              "-DEXPECT=${nn}\\.1 +stub .*\\(0 of [1-9][0-9]* public cases pass\\)"
              -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_exercises.cmake)
+    set_tests_properties(gpu.${lesson}.exercises_panel PROPERTIES LABELS gpu)
+    if(lesson STREQUAL 07_hybrid_maps)
+      continue()
+    endif()
     add_test(NAME gpu.${lesson}.stub_banner COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_${lesson}>
              "-DARGS=--headless;--frames;1;--size;320x180;--set;impl=student"
              "-DEXPECT=impl=student: your code is still a stub\n  ${nn}\\.[0-9]+ " -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_exercises.cmake)
-    set_tests_properties(gpu.${lesson}.exercises_panel gpu.${lesson}.stub_banner PROPERTIES LABELS gpu)
+    set_tests_properties(gpu.${lesson}.stub_banner PROPERTIES LABELS gpu)
   endif()
 endforeach()
 if(TARGET lesson_04_shadow_volumes)
