@@ -52,7 +52,7 @@ glm::dvec3 texelSizeBias(const glm::dmat4& worldToClip, const glm::dvec3& p, con
                          double b, double mapSize);
 
 // EXERCISE 09.5: LiSPSM's optimal n
-// Light Space Perspective Shadow Maps (Wimmer, Scherzer and Purgathofer 2004), lesson 09's third
+// Light Space Perspective Shadow Maps ([Wimmer2004]), lesson 09's third
 // technique, warp with a perspective whose centre sits n in front of the view body's near side.
 // n -> infinity is the uniform map, n = z0 the strongest (PSM-like) warp; the n that makes the
 // aliasing at the near and the far end equal is
