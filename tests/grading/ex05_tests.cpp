@@ -8,6 +8,7 @@
 #include <random>
 
 #include "algorithms/soft_shadows.hpp"
+#include "ex05_grids.hpp"
 #include "exercises.hpp"
 #include "test_support.hpp"
 
@@ -117,26 +118,11 @@ TEST_CASE("ex05.4: random taps against the reference, keeping their length") {
   }
 }
 
-namespace {
-// A 5 x 3 x 4 grid, 1 m apart from the origin, with the visibility f at its nodes.
-template <class F>
-soft::LightGrid grid(F f) {
-  soft::LightGrid g;
-  g.origin = {0, 0, 0};
-  g.step = glm::vec3(1.0f);
-  g.nodes = {5, 3, 4};
-  g.visibility.resize(g.count());
-  for (int z = 0; z < 4; ++z)
-    for (int y = 0; y < 3; ++y)
-      for (int x = 0; x < 5; ++x) g.visibility[g.index({x, y, z})] = f(float(x), float(y), float(z));
-  return g;
-}
-}  // namespace
-
 TEST_CASE("ex05.5: the light mesh's trilinear average by hand") {
   // One lit node (1, 1, 1) = 1, the rest 0. At (1.25, 1.5, 1): fractions (0.25, 0.5, 0) in the
   // cell from (1, 1, 1): its weight (1 - 0.25)(1 - 0.5)(1 - 0) = 0.375.
-  const auto single = grid([](float x, float y, float z) { return x == 1 && y == 1 && z == 1 ? 1.0f : 0.0f; });
+  const auto single =
+      test::lightGrid([](float x, float y, float z) { return x == 1 && y == 1 && z == 1 ? 1.0f : 0.0f; });
   INFO("a 5 x 3 x 4 grid of nodes 1 m apart from the origin, 1 at node (1, 1, 1), 0 elsewhere");
   CHECK_NEAR(ex05::lightMeshVisibility(single, {1.25f, 1.5f, 1.0f}), 0.375f, kApprox);
   CHECK_NEAR(ex05::lightMeshVisibility(single, {1.0f, 1.0f, 1.0f}), 1.0f, kApprox);    // on the node
@@ -146,7 +132,7 @@ TEST_CASE("ex05.5: the light mesh's trilinear average by hand") {
 
 TEST_CASE("ex05.5: outside the grid, clamped to the nearest face") {
   // Never a read past the end: the ramp x / 4 is 0 left of the grid and 1 right of it.
-  const auto ramp = grid([](float x, float, float) { return x / 4.0f; });
+  const auto ramp = test::lightGrid([](float x, float, float) { return x / 4.0f; });
   INFO("a 5 x 3 x 4 grid of nodes 1 m apart from the origin, holding x / 4");
   CHECK_NEAR(ex05::lightMeshVisibility(ramp, {-2.0f, 1.0f, 1.0f}), 0.0f, kApprox);
   CHECK_NEAR(ex05::lightMeshVisibility(ramp, {9.0f, 1.0f, 1.0f}), 1.0f, kApprox);
@@ -156,7 +142,7 @@ TEST_CASE("ex05.5: outside the grid, clamped to the nearest face") {
 TEST_CASE("ex05.5: random points and grids against the reference") {
   std::mt19937_64 rng(test::seedFor("ex05.5"));
   std::uniform_real_distribution<float> u(0, 1);
-  auto g = grid([](float, float, float) { return 0.0f; });
+  auto g = test::lightGrid([](float, float, float) { return 0.0f; });
   for (float& v : g.visibility) v = u(rng);
   g.origin = {-3, 1, 2};
   g.step = {2.0f, 0.5f, 1.5f};

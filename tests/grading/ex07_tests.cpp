@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "algorithms/hybrid_map.hpp"
+#include "ex07_maps.hpp"
 #include "exercises.hpp"
 #include "test_support.hpp"
 
@@ -111,16 +112,13 @@ TEST_CASE("ex07.2: one level of the sweep by hand") {
 
 TEST_CASE("ex07.2: random grids against the reference") {
   std::mt19937_64 rng(test::seedFor("ex07.2"));
-  std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (int trial = 0; trial < 20; ++trial) {
-    const int n = 2 + int(u(rng) * 30.0f);
-    std::vector<float> v(std::size_t(n) * std::size_t(n));
-    for (float& x : v) x = u(rng) < 0.1f ? hybrid::kInternal : 0.6f + 0.05f * u(rng);
-    const float eps0 = 0.05f * u(rng);
-    INFO("random grid ", trial, " of 20 (seed ", test::seed(), "): ", n, " x ", n, ", eps0 ", eps0);
+    const test::RandomLevel l = test::randomLevel(rng);
+    const int n = l.children.size;
+    INFO("random grid ", trial, " of 20 (seed ", test::seed(), "): ", n, " x ", n, ", eps0 ", l.eps0);
     const hybrid::MergeGrid expected =
-        hybrid::sweepLevel(grid(n, v), hybrid::MergeRule{hybrid::Criterion::Window, eps0}, 1);
-    if (!sameGrid(ex07::sweepLevel(grid(n, v), eps0), expected)) break;
+        hybrid::sweepLevel(l.children, hybrid::MergeRule{hybrid::Criterion::Window, l.eps0}, 1);
+    if (!sameGrid(ex07::sweepLevel(l.children, l.eps0), expected)) break;
   }
 }
 
@@ -150,16 +148,9 @@ TEST_CASE("ex07.3: the index descent by hand") {
 
 TEST_CASE("ex07.3: random maps against the reference") {
   std::mt19937_64 rng(test::seedFor("ex07.3"));
-  std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (int trial = 0; trial < 10; ++trial) {
     const int n = 16 + 8 * (trial % 4), levels = 1 + trial % 3;
-    std::vector<float> d(std::size_t(n) * std::size_t(n));
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x)
-        d[std::size_t(y) * n + x] = (x / 3 + y / 5) % 4 == 0 ? 0.3f : 0.7f + 0.3f * u(rng) * (u(rng) < 0.05f);
-    hybrid::MergeRule r;
-    r.eps0 = 0.01f;
-    const hybrid::HybridMap map = hybrid::buildHybrid(hybrid::mergeSweep(shadow::DepthMap(n, n, d), r, levels));
+    const hybrid::HybridMap map = hybrid::buildHybrid(test::randomSweep(rng, n, levels, {3, 5, 4}, 0.3f, 0.7f));
     bool ok = true;
     for (int y = 0; y < n && ok; ++y)
       for (int x = 0; x < n && ok; ++x) {

@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "../ex07_maps.hpp"
 #include "exercises.hpp"
 #include "test_support.hpp"
 
@@ -48,13 +49,12 @@ TEST_SUITE("hidden") {
 
   TEST_CASE("ex07.2: random grids follow the block rule, block by block") {
     std::mt19937_64 rng(test::seedFor("ex07.2 hidden"));
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
     for (int trial = 0; trial < 20; ++trial) {
-      const int n = 2 + int(u(rng) * 30.0f);
-      std::vector<float> v(std::size_t(n) * std::size_t(n));
-      for (float& x : v) x = u(rng) < 0.1f ? hybrid::kInternal : 0.6f + 0.05f * u(rng);
-      const float eps0 = 0.05f * u(rng);
-      const hybrid::MergeGrid out = ex07::sweepLevel({n, v}, eps0);
+      const test::RandomLevel l = test::randomLevel(rng);
+      const int n = l.children.size;
+      const float eps0 = l.eps0;
+      const std::vector<float>& v = l.children.value;
+      const hybrid::MergeGrid out = ex07::sweepLevel(l.children, eps0);
       INFO("random grid ", trial, " of 20 (seed ", test::seed(), "): ", n, " x ", n, ", eps0 ", eps0);
       if (!CHECK_EXACT(out.size, (n + 1) / 2)) break;
       if (!CHECK_EXACT(int(out.value.size()), out.size * out.size)) break;
@@ -76,16 +76,9 @@ TEST_SUITE("hidden") {
 
   TEST_CASE("ex07.3: random maps: every texel finds the coarsest merged texel above it") {
     std::mt19937_64 rng(test::seedFor("ex07.3 hidden"));
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
     for (int trial = 0; trial < 10; ++trial) {
       const int n = 16 + 8 * (trial % 4), levels = 1 + trial % 3;
-      std::vector<float> d(std::size_t(n) * std::size_t(n));
-      for (int y = 0; y < n; ++y)
-        for (int x = 0; x < n; ++x)
-          d[std::size_t(y) * n + x] = (x / 5 + y / 7) % 3 == 0 ? 0.4f : 0.8f + 0.3f * u(rng) * (u(rng) < 0.05f);
-      hybrid::MergeRule r;
-      r.eps0 = 0.01f;
-      const auto grids = hybrid::mergeSweep(shadow::DepthMap(n, n, d), r, levels);
+      const auto grids = test::randomSweep(rng, n, levels, {5, 7, 3}, 0.4f, 0.8f);
       const hybrid::HybridMap map = hybrid::buildHybrid(grids);
       bool ok = true;
       for (int y = 0; y < n && ok; ++y)
