@@ -35,7 +35,7 @@ TEST_CASE("cli: headless defaults to a few frames, windowed runs until closed") 
   CHECK(parse({}).width == 1280);
 }
 
-TEST_CASE("cli: --exercises runs offscreen (it only prints; the launcher calls it without a display)") {
+TEST_CASE("cli: --exercises runs offscreen (it only prints, and the launcher calls it without a display)") {
   const auto cl = parse({"--exercises"});
   CHECK(cl.exercises);
   CHECK(cl.headless);
