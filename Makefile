@@ -1,13 +1,14 @@
 # shadowlab: two commands do everything (each installs what is missing first).
 #   make run    the course: a launcher window, or without a display every lesson rendered into out/tour/
 #   make test   every test through ctest, headless
-# Also: make build, make slides, make grade LESSON=01, make bench, make soak, make fuzz, make stub-hashes, make format, make clean.
+# Also: make build, make slides, make grade LESSON=01, make bench, make soak, make fuzz, make stub-hashes, make format, make clean;
+# instructors: make handout (the student tree), make grade-submission SUBMISSION=DIR (public + hidden cases).
 PRESET ?= default
 BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: run test build deps configure web slides grade bench soak fuzz fuzz-build stub-hashes clean tour format
+.PHONY: run test build deps configure web slides grade bench soak fuzz fuzz-build stub-hashes clean tour format handout grade-submission
 
 deps:
 	@bash tools/install-deps.sh
@@ -50,10 +51,30 @@ slides: web build
 	@node tools/slides/build.mjs --bin $(BUILD)/bin --out out/slides
 
 LESSON ?= 01
+# Grades lesson LESSON's exercises.cpp (and exercises.glsl, where the lesson has GLSL exercises):
+# out/grades/exLESSON/{score.json, junit.xml, results.json (Gradescope)}.
 grade: build
-	@mkdir -p out/grades
-	@$(BUILD)/bin/grade_ex$(LESSON) --reporters=junit --out=out/grades/ex$(LESSON).xml --score-json=out/grades/ex$(LESSON).json >/dev/null; \
-	  status=$$?; cat out/grades/ex$(LESSON).json; echo "JUnit: out/grades/ex$(LESSON).xml"; exit $$status
+	@rm -rf out/grades/ex$(LESSON) && mkdir -p out/grades/ex$(LESSON); bin=$(BUILD)/bin; \
+	  $$bin/grade_ex$(LESSON) --results-json=out/grades/ex$(LESSON)/cpp.json >/dev/null; \
+	  glsl=$$(ls $$bin/glsl_lesson_$(LESSON)_* 2>/dev/null | head -1); \
+	  if [ -x $$bin/grade_ex$(LESSON)_glsl ] && [ -n "$$glsl" ]; then \
+	    $$bin/grade_ex$(LESSON)_glsl --lesson-binary=$$glsl --images=out/grades/ex$(LESSON)/images \
+	      --results-json=out/grades/ex$(LESSON)/glsl.json >/dev/null; fi; \
+	  $$bin/grade_report --out out/grades/ex$(LESSON) out/grades/ex$(LESSON)/*.json
+
+# The student handout: out/handout/shadowlab and out/handout/shadowlab-student.tar.gz (tools/handout).
+HANDOUT ?= out/handout
+handout: configure
+	@bash tools/handout/make_handout.sh $(HANDOUT)
+
+# Grades a student's files against this tree with the hidden cases and a seed it chooses (SEED=N
+# to fix it): out/grades/submission/{score.json, junit.xml, results.json}.
+SUBMISSION ?=
+GRADES ?= out/grades/submission
+grade-submission: configure
+	@if [ -z "$(SUBMISSION)" ]; then echo "usage: make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT]"; exit 2; fi
+	@if [ ! -f tools/grading/grade_submission.sh ]; then echo "grade-submission: the instructor's tree only (the handout has no hidden cases)"; exit 2; fi
+	@SEED=$(SEED) bash tools/grading/grade_submission.sh $(SUBMISSION) $(GRADES)
 
 # Benchmarks, apart from the tests: every lesson's frame time against its floor (out/bench/frames.{csv,html}),
 # the PSM light-camera set-up against receiver count, lesson 01 over its presets against ground
@@ -72,7 +93,7 @@ soak: build
 	@cmake --build --preset $(PRESET) --target stress_soak
 
 stub-hashes:
-	@sha256sum lessons/*/exercises.cpp > tests/grading/pristine.sha256 && cat tests/grading/pristine.sha256
+	@sha256sum lessons/*/exercises.cpp shaders/*/exercises.glsl > tests/grading/pristine.sha256 && cat tests/grading/pristine.sha256
 
 # Applies .clang-format to every C++ file (the ctest format.check fails on any that does not conform).
 format:

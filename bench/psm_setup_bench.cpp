@@ -1,4 +1,4 @@
-// Light-camera set-up cost of PSM fix 2 (seeds 000 §4.1): clipping N receiver boxes against the
+// Light-camera set-up cost of PSM fix 2 ([Kozlov2004] §4.1): clipping N receiver boxes against the
 // view frustum, moving the key points to post-projective space and fitting the smallest cone.
 // Usage: bench_psm_setup [out.csv]   (CSV to stdout without an argument). Median of repeats, in the
 // thread's CPU time (CLOCK_THREAD_CPUTIME_ID): on a machine shared with other builds, wall time

@@ -12,7 +12,7 @@ target_link_libraries(shadowlab_gl PUBLIC shadowlab_algorithms PkgConfig::EPOXY)
 file(GLOB APP_SOURCES CONFIGURE_DEPENDS common/app/*.cpp)
 add_library(shadowlab_app STATIC ${APP_SOURCES})
 target_compile_definitions(shadowlab_app PUBLIC GLFW_INCLUDE_NONE)  # GL comes from epoxy only
-target_link_libraries(shadowlab_app PUBLIC shadowlab_gl shadowlab_measure PkgConfig::EGL PkgConfig::IMGUI glfw ${CMAKE_DL_LIBS})
+target_link_libraries(shadowlab_app PUBLIC shadowlab_gl shadowlab_measure shadowlab_grading PkgConfig::EGL PkgConfig::IMGUI glfw ${CMAKE_DL_LIBS})
 
 # The technique layer (common/technique): every shadow technique as a module that lessons, the A/B
 # split and the showdown compose, and the pieces they share (scene cache, depth pass, lit pass).

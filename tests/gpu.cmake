@@ -8,7 +8,7 @@ endif()
 file(GLOB GPU_TEST_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/gpu/test_*.cpp)
 add_executable(gpu_tests ${GPU_TEST_SOURCES})
 target_link_libraries(gpu_tests PRIVATE shadowlab_test_main shadowlab_app)
-doctest_discover_tests(gpu_tests PROPERTIES LABELS gpu)
+shadowlab_discover_tests(gpu_tests LABELS gpu)
 
 add_executable(lesson_check ${CMAKE_CURRENT_SOURCE_DIR}/gpu/lesson_check.cpp)
 target_link_libraries(lesson_check PRIVATE shadowlab_core)

@@ -3,9 +3,14 @@
 #                         (students: ctest --test-dir build/default -L exNN; `make grade LESSON=NN`
 #                         also writes out/grades/exNN.json and exNN.xml)
 #   grade_exNN_reference  the same tests against the reference in common/ (exNN_reference.cpp)
-# and the proof that each grader is valid (label validity, part of `make test`):
-#   validity.exNN.reference  every case passes on the reference
-#   validity.exNN.stubs      every exercise has a failing case on the untouched stubs
+# The public cases are grading/exNN_tests.cpp; the hidden ones, grading/hidden/exNN_hidden.cpp
+# (doctest suite "hidden"), exist only in the instructor's tree: the student handout (make
+# handout) leaves them out, and `make grade-submission` runs them with a seed it chooses.
+# With -DSHADOWLAB_SUBMISSION=DIR, grade_exNN is built from DIR/lessons/NN_name/exercises.cpp
+# (a student's submission) instead of the tree's own file.
+# And the proof that each grader is valid (label validity, part of `make test`):
+#   validity.exNN.reference  every case (public and hidden) passes on the reference
+#   validity.exNN.stubs      every case fails on the untouched stubs: a stub scores 0
 # The stub check needs the stubs untouched: their SHA-256 is recorded in grading/pristine.sha256.
 # A student who edited exercises.cpp gets the check left out (with a message); CI configures with
 # SHADOWLAB_REQUIRE_PRISTINE_STUBS=ON so a changed stub without an updated hash fails loudly.
@@ -23,7 +28,7 @@ foreach(stub IN LISTS EXERCISE_STUBS)
   string(SUBSTRING ${lesson} 0 2 nn)
   set(tests ${CMAKE_CURRENT_SOURCE_DIR}/grading/ex${nn}_tests.cpp)
   set(reference ${CMAKE_CURRENT_SOURCE_DIR}/grading/ex${nn}_reference.cpp)
-  if(NOT EXISTS ${tests} OR NOT EXISTS ${reference})
+  if(NOT EXISTS ${tests})
     # CI (SHADOWLAB_REQUIRE_PRISTINE_STUBS) refuses exercises without a grader; a developer's build
     # in the middle of writing a lesson warns and goes on.
     if(SHADOWLAB_REQUIRE_PRISTINE_STUBS)
@@ -32,24 +37,58 @@ foreach(stub IN LISTS EXERCISE_STUBS)
     message(WARNING "lessons/${lesson}/exercises.cpp has no grader yet (tests/grading/ex${nn}_tests.cpp, ex${nn}_reference.cpp)")
     continue()
   endif()
-
-  add_executable(grade_ex${nn} ${tests} ${stub})
-  add_executable(grade_ex${nn}_reference ${tests} ${reference})
+  set(cases ${tests})
+  if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/grading/hidden/ex${nn}_hidden.cpp)
+    list(APPEND cases ${CMAKE_CURRENT_SOURCE_DIR}/grading/hidden/ex${nn}_hidden.cpp)
+  endif()
+  set(student ${stub})
+  if(SHADOWLAB_SUBMISSION AND EXISTS ${SHADOWLAB_SUBMISSION}/lessons/${lesson}/exercises.cpp)
+    set(student ${SHADOWLAB_SUBMISSION}/lessons/${lesson}/exercises.cpp)
+  endif()
+  # The reference exercises of the lesson as a library: the forwarding file here, or (student
+  # handout) prebuilt in lib/, so no reference source ships.
+  set(prebuilt ${CMAKE_SOURCE_DIR}/lib/libshadowlab_ex${nn}_reference.a)
+  if(EXISTS ${reference})
+    add_library(shadowlab_ex${nn}_reference STATIC ${reference})
+    target_include_directories(shadowlab_ex${nn}_reference PRIVATE ${lesson_dir})
+    target_link_libraries(shadowlab_ex${nn}_reference PUBLIC shadowlab_algorithms shadowlab_grading)
+  elseif(EXISTS ${prebuilt})
+    add_library(shadowlab_ex${nn}_reference STATIC IMPORTED GLOBAL)
+    set_target_properties(shadowlab_ex${nn}_reference PROPERTIES IMPORTED_LOCATION ${prebuilt})
+    target_link_libraries(shadowlab_ex${nn}_reference INTERFACE shadowlab_algorithms shadowlab_grading)
+  endif()
+  set(graders grade_ex${nn})
+  add_executable(grade_ex${nn} ${cases} ${student})
+  if(TARGET shadowlab_ex${nn}_reference)
+    add_executable(grade_ex${nn}_reference ${cases})
+    target_link_libraries(grade_ex${nn}_reference PRIVATE shadowlab_ex${nn}_reference)
+    list(APPEND graders grade_ex${nn}_reference)
+  endif()
   # Graders link only the GL-free layers: the taught algorithms (the references) and core.
-  foreach(target grade_ex${nn} grade_ex${nn}_reference)
+  foreach(target IN LISTS graders)
     target_include_directories(${target} PRIVATE ${lesson_dir})
     target_link_libraries(${target} PRIVATE shadowlab_test_main shadowlab_algorithms)
   endforeach()
-  doctest_discover_tests(grade_ex${nn} PROPERTIES LABELS ex${nn})
+  # The lesson's exercises panel runs these public cases in-process (app/exercises.hpp).
+  if(TARGET lesson_${lesson})
+    target_sources(lesson_${lesson} PRIVATE ${tests})
+    target_include_directories(lesson_${lesson} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/support)
+  endif()
+  shadowlab_discover_tests(grade_ex${nn} LABELS ex${nn})
+  if(SHADOWLAB_SUBMISSION)
+    continue()  # grading a submission: its files are not the stubs, and validity is CI's business
+  endif()
 
-  add_test(NAME validity.ex${nn}.reference COMMAND grade_ex${nn}_reference)
-  set_tests_properties(validity.ex${nn}.reference PROPERTIES LABELS validity)
+  if(TARGET grade_ex${nn}_reference)
+    add_test(NAME validity.ex${nn}.reference COMMAND grade_ex${nn}_reference)
+    set_tests_properties(validity.ex${nn}.reference PROPERTIES LABELS validity)
+  endif()
 
   file(SHA256 ${stub} stub_hash)
   file(RELATIVE_PATH stub_rel ${CMAKE_SOURCE_DIR} ${stub})
   string(FIND "${PRISTINE_TEXT}" "${stub_hash}  ${stub_rel}" found)
   if(found GREATER -1)
-    add_test(NAME validity.ex${nn}.stubs COMMAND grade_ex${nn} --expect-every-exercise-fails)
+    add_test(NAME validity.ex${nn}.stubs COMMAND grade_ex${nn} --expect-stub-scores-zero)
     set_tests_properties(validity.ex${nn}.stubs PROPERTIES LABELS validity)
   elseif(SHADOWLAB_REQUIRE_PRISTINE_STUBS)
     message(FATAL_ERROR "${stub_rel} differs from its recorded pristine hash; if the stubs changed on purpose, run `make stub-hashes`")

@@ -4,7 +4,7 @@ file(GLOB STRESS_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/stress/*.
 if(STRESS_SOURCES)
   add_executable(stress_tests ${STRESS_SOURCES})
   target_link_libraries(stress_tests PRIVATE shadowlab_test_main shadowlab_algorithms)
-  doctest_discover_tests(stress_tests PROPERTIES LABELS stress)
+  shadowlab_discover_tests(stress_tests LABELS stress)
   add_custom_target(stress_soak
     COMMAND ${CMAKE_COMMAND} -E env SHADOWLAB_STRESS_CONFIGS=10000000 $<TARGET_FILE:stress_tests>
     DEPENDS stress_tests USES_TERMINAL

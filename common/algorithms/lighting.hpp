@@ -1,5 +1,5 @@
 #pragma once
-// The lecture's illumination model with the visibility term (seeds 004, "illumination with
+// The lecture's illumination model with the visibility term ([Tarantsev-L12], "illumination with
 // visibility"):
 //   I = ka Ia + sum_i V_i f_att,i I_i [kd (N.L_i) + ks (R_i.V)^pow]
 // V_i in {0,1} (or [0,1] for soft shadows) is what the rest of the course computes. These are the
@@ -32,7 +32,7 @@ glm::vec3 lightContributionBlinn(const glm::vec3& N, const glm::vec3& L, const g
                                  float ks, float shininess);
 
 // translate(0.5) * scale(0.5): maps [-1,1]^3 (NDC) onto [0,1]^3 (texture coordinates and depth),
-// the last step of every shadow-map lookup (seeds 002).
+// the last step of every shadow-map lookup ([Boreskov2005]).
 glm::mat4 ndcToTexture();
 
 // The course's standard rig, so lessons start from the same lights: a sun (directional), a warm

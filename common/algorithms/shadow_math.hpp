@@ -4,7 +4,7 @@
 // these functions; keep the two in step.
 //
 // Conventions: GLM column vectors, right-handed, GL clip space ([-1,1]^3 after the divide).
-// Shadow-map texture space is [0,1]^3 (seeds 002: translate(0.5) * scale(0.5) * P_light * V_light).
+// Shadow-map texture space is [0,1]^3 ([Boreskov2005]: translate(0.5) * scale(0.5) * P_light * V_light).
 // A depth map's row 0 is v = 0, the way GL stores a depth texture rendered from the light (its
 // bottom row, NDC y = -1, is row 0).
 #include <array>
@@ -19,7 +19,7 @@ namespace shadowlab::shadow {
 
 // ---- lesson 02: the texture matrix and the depth comparison ---------------------------------------
 
-// translate(0.5) * scale(0.5) * P_light * V_light (seeds 002): world -> shadow-map [0,1]^3.
+// translate(0.5) * scale(0.5) * P_light * V_light ([Boreskov2005]): world -> shadow-map [0,1]^3.
 glm::mat4 textureMatrix(const glm::mat4& lightProjection, const glm::mat4& lightView);
 // The shadow-map coordinates (u, v, depth) of a world point: textureMatrix * (p, 1), divided by w.
 glm::vec3 shadowCoord(const glm::mat4& textureMatrix, const glm::vec3& worldPoint);

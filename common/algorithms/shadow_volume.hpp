@@ -1,5 +1,5 @@
 #pragma once
-// Stencil shadow volumes as GL-free maths (lesson 04; seeds 004, shadow volumes; Everitt and
+// Stencil shadow volumes as GL-free maths (lesson 04; [Tarantsev-L12], shadow volumes; Everitt and
 // Kilgard, "Practical and Robust Stenciled Shadow Volumes", 2002):
 //   - the edge adjacency of a mesh, built once, with a closedness report (volumes need closed
 //     meshes: an open edge leaves a hole in the volume and the stencil count goes wrong),

@@ -1,5 +1,5 @@
 #pragma once
-// Texture sampling on the CPU, GL-free: the maths of lesson 06 (seeds 004, textures) written out
+// Texture sampling on the CPU, GL-free: the maths of lesson 06 ([Tarantsev-L12], textures) written out
 // so it can be unit-tested and compared with what the GPU does.
 //
 //   mip chains     sizes, level count, memory (4/3 of the base, not the lecture slide's 1.5)
@@ -105,7 +105,7 @@ glm::vec4 sampleLod(const std::vector<ImageF>& chain, const glm::vec2& uv, float
 glm::vec4 sample(const std::vector<ImageF>& chain, const glm::vec2& uv, const glm::vec2& dUVdx, const glm::vec2& dUVdy,
                  const SamplerState& s);
 
-// ---- Texture-coordinate projections (seeds 004, projecting texture coordinates) ---------------
+// ---- Texture-coordinate projections ([Tarantsev-L12], projecting texture coordinates) ---------------
 // Plane: (x, y) of the point in the projection's frame; here the xz ground plane: (x, z).
 glm::vec2 planarUv(const glm::vec3& p);
 // Cylinder around +y: (phi / 2pi, y), phi = atan2(x, z) in [0, 2pi).

@@ -7,6 +7,7 @@
 // verdict, the lesson released before its context).
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -53,16 +54,17 @@ std::string jsonEscape(const std::string& s) {
   return out;
 }
 
-std::vector<std::string> shaderErrors() {
+// Every program's error (shown in the header), or only those of programs in use (fatal headless).
+std::vector<std::string> shaderErrors(bool requiredOnly = false) {
   std::vector<std::string> errors;
   for (const gl::Program* p : gl::livePrograms())
-    if (!p->error().empty()) errors.push_back(p->error());
+    if (!p->error().empty() && (!requiredOnly || p->required())) errors.push_back(p->error());
   return errors;
 }
 
 bool programsReady() {
   for (const gl::Program* p : gl::livePrograms())
-    if (!p->valid() && !p->building()) return false;
+    if (p->required() && !p->valid() && !p->building()) return false;
   return true;
 }
 
@@ -78,6 +80,7 @@ class Runner {
     if (!cl_.model.empty() && !loadModelReporting(cl_.model, info_.name)) return 1;  // a bad file: exit 1
     if (Exit e = openContext()) return *e;
     if (Exit e = initLesson()) return *e;
+    if (Exit e = startExercises()) return *e;
     if (Exit e = openOutputs()) return *e;
     for (int frame = 0; cl_.frames < 0 || frame < cl_.frames; ++frame) {
       if (context_->shouldClose()) break;
@@ -193,10 +196,53 @@ class Runner {
   Exit initLesson() {
     tryInit();
     if (!cl_.headless) return std::nullopt;
-    std::vector<std::string> errors = shaderErrors();
+    std::vector<std::string> errors = shaderErrors(/*requiredOnly=*/true);
     if (!initError_.empty()) errors.insert(errors.begin(), initError_);
     for (const auto& e : errors) std::cerr << info_.name << ": " << e << '\n';
     return errors.empty() ? Exit() : Exit(1);
+  }
+
+  // ==== exercises: the panel's states from the public cases, and the stub banner =================
+  bool studentCode() const {
+    const Exercises& ex = lesson_.exercises;
+    return !ex.empty() && params_.has(ex.param()) && params_.get(ex.param()) == ex.studentValue();
+  }
+
+  // The cases run at start (headless only when their verdicts are shown); --exercises prints them.
+  Exit startExercises() {
+    Exercises& ex = lesson_.exercises;
+    if (cl_.exercises) {
+      if (!ex.empty()) ex.evaluate(info_.name);
+      std::cout << (ex.empty() ? info_.name + ": no exercises in this lesson\n" : ex.report());
+      return 0;
+    }
+    if (!ex.empty() && (!cl_.headless || cl_.showUi || studentCode())) ex.evaluate(info_.name);
+    return std::nullopt;
+  }
+
+  // Every 30 frames: the cases again when asked or when exercises.glsl was saved; with the
+  // student's code in use, the banner for the stubs and how black the frame is (headless: once,
+  // on stdout: it is a warning, not an error).
+  void watchExercises(const FrameInfo& fi, int frame) {
+    Exercises& ex = lesson_.exercises;
+    if (ex.empty() || (frame % 30 != 0 && !rerunExercises_)) return;
+    if (rerunExercises_ || ex.glslChanged()) ex.evaluate(info_.name);
+    rerunExercises_ = false;
+    banner_ = studentCode() && !ex.stubBanner(0).empty() ? ex.stubBanner(blackShare(fi)) : "";
+    if (cl_.headless && !banner_.empty() && !bannerPrinted_) std::cout << info_.name << ": " << banner_ << '\n';
+    bannerPrinted_ = bannerPrinted_ || !banner_.empty();
+  }
+
+  // The share of (nearly) black pixels in the frame just drawn: below 24 of 255 in every channel,
+  // so the lessons' clear colour (0.05, 0.06, 0.08) counts too, and an empty frame is "black".
+  double blackShare(const FrameInfo& fi) const {
+    std::vector<unsigned char> rgba(std::size_t(width_) * std::size_t(height_) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fi.framebuffer);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    std::size_t black = 0;
+    for (std::size_t i = 0; i < rgba.size(); i += 4) black += std::max({rgba[i], rgba[i + 1], rgba[i + 2]}) < 24;
+    return rgba.empty() ? 0.0 : double(black) / double(rgba.size() / 4);
   }
 
   // Recorded camera and light paths (--replay FILE[@T]) and the --bench CSV.
@@ -261,6 +307,7 @@ class Runner {
     drawCalls_ = gl::drawCalls();
     budget_.end(context_->framebuffer(), width_, height_);
     fi.framebuffer = context_->framebuffer();
+    watchExercises(fi, frame);
     lesson_.timers.collect();
     if (uiVisible_ && !input_.uiHidden) drawUi(fi, dt);
     if (Exit e = writeOutputs(fi, lastFrame)) return e;
@@ -368,8 +415,8 @@ class Runner {
       }
       // Programs built on first use (specialised variants) report here: headless, a broken or
       // missing shader ends the run as it does at init.
-      if (cl_.headless && !shaderErrors().empty()) {
-        for (const auto& e : shaderErrors()) std::cerr << info_.name << ": " << e << '\n';
+      if (cl_.headless && !shaderErrors(/*requiredOnly=*/true).empty()) {
+        for (const auto& e : shaderErrors(true)) std::cerr << info_.name << ": " << e << '\n';
         return 1;
       }
     }
@@ -420,14 +467,16 @@ class Runner {
     if (!initError_.empty()) errors.insert(errors.begin(), initError_);
     std::vector<Legend> legends = lesson_.legends;
     if (const auto l = measurement_.legend()) legends.push_back(*l);
-    ui_.legends(legends);                  // first: the header stops above them
-    ui_.reserve(lesson_.insets, height_);  // the header and the panel stop above the insets
+    ui_.legends(legends);                  // first: the header stops above them (and above the exercises panel)
+    ui_.reserve(lesson_.insets, height_);  // the header and the panels stop above the insets
+    if (!lesson_.exercises.empty()) rerunExercises_ = ui_.exercisesPanel(lesson_.exercises) || rerunExercises_;
     ui_.header({&info_, gl::caps().summary(), frameMsAvg_, &lesson_.timers.passes(), &shown, errors, status_,
                 gl::caps().softwareRenderer, budget_.label()});
     ui_.paramPanel(params_, presets_, status_);
     const Measurement* measured = info_.measurable ? &measurement_ : nullptr;
     if (ab_.enabled()) ui_.splitLabels(ab_.divider(), ab_.labelA(measured), ab_.labelB());
     lesson_.gui();
+    ui_.banner(banner_);
     ui_.help(info_, params_, &helpOpen_);
     input_.help = helpOpen_;
     ui_.render();
@@ -526,9 +575,9 @@ class Runner {
   BenchLog bench_;
   measure::CameraLightPath recording_, replay_;
   double replayAt_ = -1;
-  bool uiVisible_ = false, helpOpen_ = false;
+  bool uiVisible_ = false, helpOpen_ = false, bannerPrinted_ = false, rerunExercises_ = false;
   OrbitCamera homeCamera_;  // the pose after the preset and --set: Home returns to it
-  std::string initError_, status_;
+  std::string initError_, status_, banner_;
   int width_ = 0, height_ = 0;
   int drawCalls_ = 0;
   glm::mat4 lastView_{0.0f};

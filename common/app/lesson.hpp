@@ -15,6 +15,7 @@
 
 #include "core/camera.hpp"
 #include "app/debug_draw.hpp"
+#include "app/exercises.hpp"
 #include "app/measurement.hpp"
 #include "core/params.hpp"
 #include "gl/timer.hpp"
@@ -81,6 +82,7 @@ class Lesson {
   DebugDraw debug;                // shapes for the god view; cleared by the framework every frame
   std::vector<Inset> insets;      // views drawn into corners this frame; cleared by the framework
   std::vector<Legend> legends;    // colour keys of the heatmaps drawn this frame; cleared by the framework
+  Exercises exercises;            // add() them in declare(): the exercises panel and the stub banner
 
   gl::TimerScope scope(const std::string& pass) { return gl::TimerScope(timers, pass); }
 };

@@ -356,4 +356,65 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   return changed;
 }
 
+namespace {
+ImVec4 stateColour(ExerciseState s) {
+  switch (s) {
+    case ExerciseState::Passing: return ImVec4(0.45f, 0.9f, 0.45f, 1.0f);
+    case ExerciseState::Failing: return ImVec4(1.0f, 0.55f, 0.3f, 1.0f);
+    case ExerciseState::Stub: return ImVec4(1.0f, 0.35f, 0.35f, 1.0f);
+    default: return ImVec4(0.7f, 0.7f, 0.7f, 1.0f);
+  }
+}
+}  // namespace
+
+bool Ui::exercisesPanel(const Exercises& exercises) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  // Bottom left, above a heatmap's legend when one is drawn (legends() runs first) and above the
+  // insets the lesson reported under its column (reserve() runs first too).
+  const float maxWidth = vp->Size.x * kHeaderShare - 16 * scale_;
+  float bottom = std::min(vp->Size.y, legendTop_) - 8 * scale_;
+  bottom = std::min(bottom, roomAbove(8 * scale_, 8 * scale_ + maxWidth, bottom + 8 * scale_) + 8 * scale_);
+  ImGui::SetNextWindowPos(ImVec2(8 * scale_, bottom), ImGuiCond_Always, ImVec2(0, 1));
+  // The header's share of the width at most (even collapsed it is as wide as its rows): the
+  // parameter panel keeps the right.
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(maxWidth, vp->Size.y));
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  ImGui::SetNextWindowCollapsed(true, ImGuiCond_Appearing);  // a title bar until opened: the picture stays visible
+  bool rerun = false;
+  const bool open =
+      ImGui::Begin("Exercises", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+  recordWindow("Exercises");
+  legendTop_ = ImGui::GetWindowPos().y;  // the header stops above the bottom-left stack
+  if (open) {
+    for (const Exercise& e : exercises.list()) {
+      ImGui::TextColored(stateColour(e.state), "%-5s %-8s", e.id.c_str(), exerciseStateName(e.state));
+      ImGui::SameLine();
+      ImGui::Text("%s%s  %d/%d", e.title.c_str(), e.glsl ? " [GLSL]" : "", e.passed, e.cases);
+      if (ImGui::IsItemHovered() && !e.firstFailure.empty()) ImGui::SetTooltip("%s", e.firstFailure.c_str());
+      if (e.markerLeft) ImGui::TextDisabled("      passing: delete its SHADOWLAB_STUB line");
+    }
+    ImGui::TextDisabled("public cases, run in this process; hover one for its first failure");
+    rerun = ImGui::Button("run the cases again");
+  }
+  ImGui::End();
+  return rerun;
+}
+
+void Ui::banner(const std::string& text) {
+  if (text.empty()) return;
+  // Bottom centre, above the exercises' title bar: the header and the parameters keep their place.
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->Size.x * 0.5f, vp->Size.y - 40 * scale_), ImGuiCond_Always, ImVec2(0.5f, 1));
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.45f, 0.05f, 0.05f, 0.88f));
+  ImGui::Begin("##stub banner", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoInputs);
+  ImGui::PushTextWrapPos(vp->Size.x * 0.6f);
+  ImGui::TextUnformatted(text.c_str());
+  ImGui::PopTextWrapPos();
+  recordWindow("Stub banner");
+  ImGui::End();
+  ImGui::PopStyleColor();
+}
+
 }  // namespace shadowlab

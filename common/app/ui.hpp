@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/context.hpp"
+#include "app/exercises.hpp"
 #include "app/lesson.hpp"
 #include "core/params.hpp"
 
@@ -46,6 +47,10 @@ class Ui {
   void legends(const std::vector<Legend>& legends);
   // Returns true when a parameter changed.
   bool paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status);
+  // The lesson's exercises with their states (bottom left); true when "run the cases again" was pressed.
+  bool exercisesPanel(const Exercises& exercises);
+  // A banner across the top of the frame: the stub banner while impl=student.
+  void banner(const std::string& text);
 
   // Where this frame's UI sits, in framebuffer pixels (windows by title; the A/B labels as
   // "A label" / "B label"): --ui-layout writes it, tests check nothing overlaps.
@@ -67,7 +72,7 @@ class Ui {
   // frame's insets, at most `height`.
   float roomAbove(float left, float right, float height) const;
   std::vector<Rect> reserved_;  // this frame's insets, top-left origin
-  float legendTop_ = 1e9f;      // the legend's top edge this frame (none: far below)
+  float legendTop_ = 1e9f;      // the top of the bottom-left stack (legend, exercises) this frame
 };
 
 // --ui-layout FILE: the viewport and the UI's rectangles as JSON. Throws std::runtime_error.

@@ -35,6 +35,7 @@ constexpr Flag kFlags[] = {
     {"--list-presets", nullptr, "list the presets, one per line"},
     {"--list-hotkeys", nullptr, "list every key: the framework's and the lesson's, with what each does"},
     {"--info", nullptr, "print the lesson's number, title, summary and difficulty as JSON"},
+    {"--exercises", nullptr, "run the lesson's public exercise cases and print each exercise's state (offscreen)"},
     {"--help", nullptr, "this text"},
 };
 
@@ -114,6 +115,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
     else if (flag == "--list-presets") cl.listPresets = true;
     else if (flag == "--list-hotkeys") cl.listHotkeys = true;
     else if (flag == "--info") cl.info = true;
+    else if (flag == "--exercises") cl.exercises = cl.headless = true;  // it only prints: no window (the launcher)
     else if (flag == "--help") cl.help = true;
   }
   if (cl.headless && !framesGiven) cl.frames = 3;

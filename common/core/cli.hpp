@@ -35,7 +35,8 @@ struct CommandLine {
   std::string uiLayout;   // the last frame's UI rectangles, JSON (tests: nothing overlaps)
   bool fullscreen = false;
   bool listParams = false, listPresets = false, listHotkeys = false, help = false, info = false;
-  bool strictGl = false;  // any GL error fails the run (tests); also SHADOWLAB_STRICT_GL=1
+  bool exercises = false;  // print each exercise's state from the public cases (needs a GL context), exit
+  bool strictGl = false;   // any GL error fails the run (tests); also SHADOWLAB_STRICT_GL=1
 };
 
 // argv[0] is skipped. Throws CliError.

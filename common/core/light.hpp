@@ -14,7 +14,7 @@ struct Light {
   glm::vec3 direction{0.0f, -1.0f, 0.0f};  // Spot axis, Directional: the direction light TRAVELS (unit)
   glm::vec3 color{1.0f};
   float intensity = 1.0f;
-  // f_att = 1 / (c0 + c1 d + c2 d^2), the lecture's attenuation (seeds 004); directional: none.
+  // f_att = 1 / (c0 + c1 d + c2 d^2), the lecture's attenuation ([Tarantsev-L12]); directional: none.
   glm::vec3 attenuation{1.0f, 0.0f, 0.01f};
   float spotInner = 0.35f, spotOuter = 0.5f;  // half-angles in radians (smooth fall-off between)
   AreaShape area = AreaShape::None;

@@ -4,10 +4,13 @@
 #include <array>
 #include <cctype>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <system_error>
 #include <utility>
+
+#include "core/shader_files.hpp"
 
 namespace fs = std::filesystem;
 
@@ -86,7 +89,8 @@ class Expander {
     std::error_code ec;
     fs::path canonical = fs::canonical(path, ec);
     if (ec || !fs::is_regular_file(canonical, ec)) {
-      throw ShaderSourceError("cannot open shader file '" + path + "'");
+      canonical = virtualPath(fs::path(path)).value_or(fs::path());
+      if (canonical.empty()) throw ShaderSourceError("cannot open shader file '" + path + "'");
     }
     expand(canonical, /*top=*/true);
     return std::move(result_);
@@ -100,11 +104,13 @@ class Expander {
     // next poll instead of being missed.
     std::error_code ec;
     const fs::file_time_type stamp = fs::last_write_time(file, ec);
-    if (ec || !readFile(file, content)) throw ShaderSourceError("cannot read shader file '" + name + "'");
+    const std::optional<std::string> text = ec ? virtualText(file) : std::nullopt;
+    if (text) content = *text;
+    else if (ec || !readFile(file, content)) throw ShaderSourceError("cannot read shader file '" + name + "'");
 
     const std::size_t index = result_.files.size();
     result_.files.push_back(name);
-    result_.dependencies.push_back({name, stamp});
+    result_.dependencies.push_back({name, stamp, !text});
     expanded_.insert(file);
     stack_.push_back(file);
 
@@ -215,8 +221,31 @@ class Expander {
       }
       searched += (searched.empty() ? "" : ", ") + (base.empty() ? candidate.string() : base.string());
     }
+    for (const fs::path& base : bases)
+      if (std::optional<fs::path> v = virtualPath(base / relative)) return *v;
     throw ShaderSourceError(location(includer.string(), lineNumber) + ": cannot find include \"" + target +
                             "\" (searched " + searched + ")");
+  }
+
+  // `p` relative to an include directory, when that names virtual text: its path and its text.
+  std::optional<std::pair<fs::path, std::string>> findVirtual(const fs::path& p) const {
+    for (const std::string& dir : includeDirs_) {
+      std::error_code ec;
+      const fs::path root = fs::weakly_canonical(dir, ec);
+      const fs::path rel = fs::weakly_canonical(p, ec).lexically_relative(root);
+      if (ec || rel.empty() || *rel.begin() == "..") continue;
+      if (std::optional<std::string> text = virtualShaderText(rel.generic_string()))
+        return std::make_pair(root / rel, std::move(*text));
+    }
+    return std::nullopt;
+  }
+  std::optional<fs::path> virtualPath(const fs::path& p) const {
+    if (auto v = findVirtual(p)) return v->first;
+    return std::nullopt;
+  }
+  std::optional<std::string> virtualText(const fs::path& p) const {
+    if (auto v = findVirtual(p)) return v->second;
+    return std::nullopt;
   }
 
   void emitLine(std::size_t line, std::size_t sourceIndex) {
@@ -252,6 +281,7 @@ ShaderSource loadShaderSource(const std::string& path, const std::vector<std::st
 
 bool dependenciesChanged(const ShaderSource& source) {
   for (const FileStamp& dep : source.dependencies) {
+    if (!dep.onDisk) continue;  // virtual text does not change under the program
     std::error_code ec;
     const fs::file_time_type now = fs::last_write_time(dep.path, ec);
     // A vanished file counts as a change: the reload then reports it instead of silently keeping

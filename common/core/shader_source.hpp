@@ -22,6 +22,7 @@ class ShaderSourceError : public std::runtime_error {
 struct FileStamp {
   std::string path;
   std::filesystem::file_time_type writeTime;
+  bool onDisk = true;  // false: virtual text (core/shader_files.hpp), which never changes on disk
 };
 
 struct ShaderSource {
@@ -40,6 +41,9 @@ struct ShaderSource {
 // at most once per program (by canonical path), so shared headers need no guards; an include of a
 // file still being expanded is a cycle and an error. The top file's `#version` line is emitted
 // first, as GLSL requires.
+//
+// A file or include that does not exist on disk is looked up as virtual text
+// (core/shader_files.hpp: generated or sealed GLSL) by its path relative to an include directory.
 //
 // Limits, because this is not a full preprocessor: includes inside /* */ comments are ignored,
 // but those inside #if blocks are expanded regardless of the condition. Includes nest at most

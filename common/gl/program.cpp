@@ -208,7 +208,9 @@ Program& ProgramVariants::variant(const std::vector<std::string>& defines, const
   std::string label = label_;
   for (const auto& f : extraFiles) label += " + " + f;
   for (const auto& d : defines) label += " [" + d + "]";
-  auto program = std::make_unique<Program>(label, std::move(files), defines);
+  std::vector<std::string> all = baseDefines_;
+  all.insert(all.end(), defines.begin(), defines.end());
+  auto program = std::make_unique<Program>(label, std::move(files), std::move(all));
   async ? program->buildAsync() : void(program->build());
   return *programs_.emplace(key, std::move(program)).first->second;
 }

@@ -3,6 +3,7 @@
 // overrides), with #include and #line (core/shader_source), and hot reload: when a file changes the
 // program is rebuilt; if that fails the last good program stays in use and error() says why, with
 // file:line, for the UI header.
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -41,6 +42,12 @@ class Program {
   bool valid() const { return bool(program_); }
   const std::string& error() const { return error_; }
   const std::string& label() const { return label_; }
+  // Whether this program's failure stops the frame (and a headless run): always, unless
+  // `required` says otherwise now. A GLSL exercise's student build (app/exercise_program.hpp) is
+  // required only while impl=student, so a student file that does not compile shows its error
+  // without stopping the reference.
+  void setRequired(std::function<bool()> required) { required_ = std::move(required); }
+  bool required() const { return !required_ || required_(); }
   GLuint id() const { return program_.id(); }
 
   void use() const { glUseProgram(program_.id()); }
@@ -72,6 +79,7 @@ class Program {
   std::unique_ptr<Pending> pending_;
   ProgramHandle program_;
   std::string error_;
+  std::function<bool()> required_;
   double lastPoll_ = 0;
   mutable std::unordered_map<std::string, GLint> locations_;
 };
@@ -81,8 +89,9 @@ class Program {
 // software renderer pays for a feature a uniform switches off. Each variant hot-reloads on its own.
 class ProgramVariants {
  public:
-  ProgramVariants(std::string label, std::vector<std::string> files)
-      : label_(std::move(label)), files_(std::move(files)) {}
+  // `baseDefines` go into every variant (a GLSL exercise's student build: SHADOWLAB_STUDENT_GLSL).
+  ProgramVariants(std::string label, std::vector<std::string> files, std::vector<std::string> baseDefines = {})
+      : label_(std::move(label)), files_(std::move(files)), baseDefines_(std::move(baseDefines)) {}
   // The program for `defines`. Compiled asynchronously when asyncCompile() is on (interactive
   // windows): until it is ready this returns the generic variant (no defines), so switching a
   // feature never stalls a frame. Headless runs build synchronously (deterministic frames).
@@ -92,7 +101,7 @@ class ProgramVariants {
  private:
   Program& variant(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles, bool async);
   std::string label_;
-  std::vector<std::string> files_;
+  std::vector<std::string> files_, baseDefines_;
   std::map<std::string, std::unique_ptr<Program>> programs_;
 };
 

@@ -63,7 +63,7 @@ ShadowMap make(int size, DepthFormat format, bool cube, const std::string& label
   if (cube)
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X, m.texture.id(), 0);
   else glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m.texture.id(), 0);
-  glDrawBuffer(GL_NONE);  // depth only: the light pass writes no colour (seeds 002, pass 1)
+  glDrawBuffer(GL_NONE);  // depth only: the light pass writes no colour ([Boreskov2005], pass 1)
   glReadBuffer(GL_NONE);
   try {
     requireComplete(GL_FRAMEBUFFER, label);

@@ -1,6 +1,6 @@
 #pragma once
 // Depth textures for shadow maps (lessons 02 and 03): a 2D map or a cube map with its own
-// framebuffer, in one of the depth formats of ARB_depth_texture (seeds 002), and the two ways to
+// framebuffer, in one of the depth formats of ARB_depth_texture ([Boreskov2005]), and the two ways to
 // read it: a comparison sampler (ARB_shadow: compare mode R-to-texture, LEQUAL; 1 lit, 0 shadowed;
 // GL_LINEAR gives hardware 2x2 PCF) and a raw sampler (the stored depth, for a comparison written
 // in the shader and for viewing the map). Both are sampler objects, so the same texture can sit on

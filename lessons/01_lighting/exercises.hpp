@@ -4,10 +4,11 @@
 // and see yours live with  lesson_01_lighting --set impl=student
 // (the lesson then shades every vertex on the CPU with YOUR functions).
 #include <glm/glm.hpp>
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex01 {
 
-// EXERCISE 01.1: the lighting term of one light, with its visibility V_i (seeds 004, illumination
+// EXERCISE 01.1: the lighting term of one light, with its visibility V_i ([Tarantsev-L12], illumination
 // with visibility):   V f_att I [kd (N.L) + ks (R.V)^shininess]
 // N, L, V are unit vectors: the surface normal, the direction TO the light, the direction TO the
 // eye. R is L mirrored about N (glm::reflect(-L, N)). Clamp R.V at 0. A surface facing away from
@@ -17,11 +18,11 @@ glm::vec3 lightContribution(const glm::vec3& N, const glm::vec3& L, const glm::v
                             float fatt, float visibility, const glm::vec3& kd, float ks, float shininess);
 
 // EXERCISE 01.2: the matrix that maps normalised device coordinates [-1,1]^3 onto texture space
-// [0,1]^3: translate(0.5) * scale(0.5) (seeds 002, the texture matrix). Every shadow-map lookup
+// [0,1]^3: translate(0.5) * scale(0.5) ([Boreskov2005], the texture matrix). Every shadow-map lookup
 // ends with it. Remember GLM matrices are column-major: m[column][row].
 glm::mat4 ndcToTexture();
 
-// EXERCISE 01.3: the attenuation factor f_att = 1 / (c0 + c1 d + c2 d^2) (seeds 004), with
+// EXERCISE 01.3: the attenuation factor f_att = 1 / (c0 + c1 d + c2 d^2) ([Tarantsev-L12]), with
 // c = (c0, c1, c2) and d the distance to the light.
 float attenuation(const glm::vec3& c, float d);
 

@@ -1,4 +1,4 @@
-// Lesson 01: lighting. The lecture's illumination model with the visibility term V_i (seeds 004):
+// Lesson 01: lighting. The lecture's illumination model with the visibility term V_i ([Tarantsev-L12]):
 //
 //   I = ka Ia + sum_i V_i f_att,i I_i [kd (N.L_i) + ks (R_i.V)^pow]
 //
@@ -69,6 +69,11 @@ class LightingLesson : public Lesson {
     r.addChoice("view", &p_.view, {"lit", "normals", "albedo", "ndc_remap"}, "what the fragment shader outputs")
         .hotkey = "V";
     declareImpl(r, &p_.impl, "whose exercise code shades (student: CPU per vertex)");
+    exercises.add("01.1", "lightContribution: the lighting term",
+                  "impl=student shades with it: every surface is black but for the ambient light");
+    exercises.add("01.2", "ndcToTexture: NDC to [0,1]^3", "view=ndc_remap shows raw NDC, half of it clamped black");
+    exercises.add("01.3", "attenuation", "the point and spot lights do not fade with distance");
+    exercises.add("01.4", "spotFactor: the spot cone", "a spot light has no cone: it lights every direction");
     r.addChoice("shading", &p_.shading, {"pixel_gpu", "vertex_cpu"},
                 "per-pixel on the GPU, or per-vertex on the CPU (Gouraud)");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: light that reaches everywhere, even where V_i = 0");

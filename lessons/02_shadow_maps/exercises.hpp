@@ -7,10 +7,11 @@
 #include <glm/glm.hpp>
 
 #include "algorithms/shadow_math.hpp"
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex02 {
 
-// EXERCISE 02.1: the shadow texture matrix (seeds 002): world -> shadow-map space [0,1]^3,
+// EXERCISE 02.1: the shadow texture matrix ([Boreskov2005]): world -> shadow-map space [0,1]^3,
 //   T = translate(0.5) * scale(0.5) * P_light * V_light
 // Applied to (p, 1) and divided by w it gives (u, v, depth) of p in the light's depth map.
 glm::mat4 shadowTextureMatrix(const glm::mat4& lightProjection, const glm::mat4& lightView);

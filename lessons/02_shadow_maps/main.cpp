@@ -1,4 +1,4 @@
-// Lesson 02: shadow maps (Williams 1978, as Boreskov's tutorial builds them: seeds 002; seeds 004).
+// Lesson 02: shadow maps ([Williams1978], as [Boreskov2005] builds them; [Tarantsev-L12]).
 //
 //   pass 1: render depth from the light into a depth texture (no colour, polygon offset on)
 //   pass 2: render from the eye; T = translate(0.5) * scale(0.5) * P_light * V_light takes each
@@ -15,6 +15,7 @@
 // Exercises (exercises.hpp): the texture matrix, the depth comparison, a CPU shadow-map lookup.
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/exercise_program.hpp"
 #include "app/lesson.hpp"
 #include "core/mesh_gen.hpp"
 #include "core/scene_gen.hpp"
@@ -93,6 +94,11 @@ class ShadowMapLesson : public Lesson {
         .hotkey = "V";
     r.add("inset", &p_.inset, "show the shadow map in a corner").hotkey = "I";
     declareImpl(r, &p_.impl, "whose exercise code: your texture matrix and CPU lookup");
+    exercises.add("02.1", "shadowTextureMatrix", "the texture matrix is the identity: the shadows are wrong or gone");
+    exercises.add("02.2", "depthCompare", "compare=cpu_vertex lights every vertex: no shadows");
+    exercises.add("02.3", "shadowLookup (CPU)", "compare=cpu_vertex lights every vertex: no shadows");
+    exercises.addGlsl("02.4", "shadowCompare", "compare=manual lights every pixel: no shadows");
+    exercises.addGlsl("02.5", "shadowLookup", "compare=manual lights every pixel: no shadows");
     r.add("shadow.near", &p_.lightNear, 0.05f, 50,
           "the light frustum's near plane: depth precision depends on far/near");
     r.add("shadow.far", &p_.lightFar, 1, 500, "the light frustum's far plane");
@@ -135,7 +141,7 @@ class ShadowMapLesson : public Lesson {
   }
 
   void render(const FrameInfo& f) override {
-    // The light camera: a perspective frustum around the spot's cone (seeds 002: good for spots).
+    // The light camera: a perspective frustum around the spot's cone ([Boreskov2005]: good for spots).
     const shadow::LightCamera light =
         shadow::spotCamera(p_.light, p_.lightNear, p_.lightFar, scene_.casterBoxes(), false);
     const bool student = p_.impl == Impl::Student;
@@ -156,7 +162,7 @@ class ShadowMapLesson : public Lesson {
       rendered_ = std::move(key);
       auto t = scope("shadow map");
       gl::beginShadowPass(map_);
-      glEnable(GL_POLYGON_OFFSET_FILL);  // seeds 002: glPolygonOffset(4, 4) against self-shadowing
+      glEnable(GL_POLYGON_OFFSET_FILL);  // [Boreskov2005]: glPolygonOffset(4, 4) against self-shadowing
       glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
       shadowTriangles_ = casters_.draw(scene_, light.viewProj(), {}, {p_.alphaTest, false});
       glDisable(GL_POLYGON_OFFSET_FILL);
@@ -285,7 +291,10 @@ class ShadowMapLesson : public Lesson {
   gl::Sampler compareNearest_, rawDepth_;
   tech::CasterPass casters_{"02 depth"};
   tech::DepthPrepass prepass_{"02 depth pre-pass", "02_shadow_maps/scene.vert"};
-  gl::ProgramVariants sceneVariants_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"}};
+  // GLSL exercises 02.4, 02.5: the student's build of the scene shader with impl=student.
+  ExerciseProgram sceneVariants_{"02 scene", {"02_shadow_maps/scene.vert", "02_shadow_maps/scene.frag"}, [this] {
+                                   return p_.impl == Impl::Student;
+                                 }};
   tech::DepthMapView mapView_;
   gl::Program unlit_{"unlit", {"common/unlit.vert", "common/unlit.frag"}};
   gl::GpuMesh gizmo_;

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "algorithms/shadow_math.hpp"
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex03 {
 

@@ -1,6 +1,7 @@
-// Lesson 03: shadow-map quality (seeds 000 §2, 002, 004). Everything that makes lesson 02's maps
-// good, each a switch, in the uniform shadow-map technique (common/technique/uniform_maps.cpp and
-// shaders/common/shadow_uniform.frag, which this lesson is about):
+// Lesson 03: shadow-map quality ([Kozlov2004] §2, [Boreskov2005], [Tarantsev-L12]). Everything
+// that makes lesson 02's maps good, each a switch, in the uniform shadow-map technique
+// (common/technique/uniform_maps.cpp and shaders/common/shadow_uniform.frag, which this lesson is
+// about):
 //   bias      constant, slope-scaled (polygon offset and in the shader), normal offset, receiver
 //             plane, front-face culling in the depth pass
 //   texels    resolution 256..8192; filtering nearest, hardware 2x2 PCF, N x N PCF, Poisson disk
@@ -71,6 +72,11 @@ class ShadowQualityLesson : public Lesson {
     r.addChoice("view", &p_.view, {"lit", "visibility", "sun_map"}, "lit, V of the measured light, or light 0's map")
         .hotkey = "V";
     declareImpl(r, &p_.impl, "whose caster-culling test and orthographic fit drive the directional light's pass");
+    exercises.add("03.1", "slopeScaledBias", "");  // "": not used live, so no banner
+    exercises.add("03.2", "bilinearPcfWeights", "");
+    exercises.add("03.3", "cubeFace", "");
+    exercises.add("03.4", "casterMayShadow", "every caster is kept: the same picture at the full cost");
+    exercises.add("03.5", "fitOrthographic", "the sun's map covers nothing: its shadows are gone or wrong");
     r.add("drift", &p_.drift, "move the camera slowly along x (watch edges shimmer without snapping)").hotkey = "G";
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     maps_.declare(r, "");  // this lesson's subject: its parameters keep their bare names

@@ -8,10 +8,11 @@
 
 #include "core/mesh.hpp"
 #include "algorithms/shadow_volume.hpp"
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex04 {
 
-// EXERCISE 04.1: silhouette detection from adjacency (seeds 004, shadow volumes: "an edge between a
+// EXERCISE 04.1: silhouette detection from adjacency ([Tarantsev-L12], shadow volumes: "an edge between a
 // lit and an unlit face"). The edge (a, b) is shared by the triangle (a, b, c) and its neighbour
 // (b, a, d), both counter-clockwise. A triangle faces the light when the light is on the front
 // side of its plane: with n = (p1 - p0) x (p2 - p0), dot(n, light.xyz - p0 * light.w) > 0 (exactly
@@ -19,7 +20,7 @@ namespace shadowlab::ex04 {
 bool isSilhouette(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
                   const glm::vec4& light);
 
-// EXERCISE 04.2: the infinite projection matrix (Everitt and Kilgard 2002): glm::perspective's
+// EXERCISE 04.2: the infinite projection matrix ([Everitt2002]): glm::perspective's
 // matrix with the far plane at infinity, so the volume's points at infinity (w = 0) are not clipped:
 //   [ f/aspect 0  0          0              ]
 //   [ 0        f  0          0              ]     f = 1 / tan(fovY / 2)

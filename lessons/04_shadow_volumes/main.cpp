@@ -1,7 +1,7 @@
-// Lesson 04: stencil shadow volumes, done right. The lecture's passes (seeds 004, shadow volumes)
-// made robust after Everitt and Kilgard, "Practical and Robust Stenciled Shadow Volumes" (2002),
-// in the stencil-volume technique (common/technique/stencil_volumes.cpp, whose numbered passes are
-// this lesson's; shaders in shaders/common/volumes/):
+// Lesson 04: stencil shadow volumes, done right. The lecture's passes ([Tarantsev-L12], shadow
+// volumes) made robust after Everitt and Kilgard, "Practical and Robust Stenciled Shadow Volumes"
+// ([Everitt2002]), in the stencil-volume technique (common/technique/stencil_volumes.cpp, whose
+// numbered passes are this lesson's; shaders in shaders/common/volumes/):
 //   0. edge adjacency           once per mesh: silhouettes later, open meshes found now
 //   1. depth and ambient        the scene once: depth, ka Ia, and V = 0 for the measurement
 //   per light (scissored to its reach):
@@ -69,6 +69,12 @@ class ShadowVolumeLesson : public Lesson {
                               "scene size: silhouette edges and volume fill grow with it");
     camera.target = {0, 0.8f, 0};
     declareImpl(r, &p_.impl, "whose exercise code runs: silhouettes, projection, stencil ops, z-fail test");
+    exercises.add("04.1", "isSilhouette", "no edge is a silhouette: no volume is drawn, nothing is shadowed");
+    exercises.add("04.2", "infinitePerspective",
+                  "the projection is the identity: the scene is out of view, the frame black");
+    exercises.add("04.3", "stencilOps", "the stencil never counts: nothing is shadowed");
+    exercises.add("04.4", "volumeMayReachNearPlane",
+                  "method=auto never picks z-fail: wrong shadows with the camera in a volume");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: the light shadows never take away");
     r.add("specular", &p_.specular, 0, 1, "ks");
     r.add("shininess", &p_.shininess, 1, 256, "the specular exponent");

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "algorithms/soft_shadows.hpp"
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex05 {
 
@@ -23,7 +24,7 @@ float penumbraHalfWidth(float d, float nDotL, float R, float D);
 float visibleFraction(float t);
 float visibleFractionLinear(float t);
 
-// EXERCISE 05.3: the PCSS filter radius in the shadow map's uv (Fernando 2005). The blocker search
+// EXERCISE 05.3: the PCSS filter radius in the shadow map's uv ([Fernando2005]). The blocker search
 // found the mean blocker depth zBlocker; the receiver is at zReceiver (both distances along the
 // light's axis). The penumbra estimate is w = (zReceiver - zBlocker) / zBlocker * R (the light's
 // radius), a width at the receiver; one uv unit there is 2 zReceiver tanHalfFov of world, so the

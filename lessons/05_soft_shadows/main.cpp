@@ -6,8 +6,8 @@
 //   many    N point lights on the sphere, one map each, averaged         (many_lights.cpp)
 //   pcf     one map from the centre, a fixed Poisson kernel: the baseline (pcss.cpp)
 //   pcss    blocker search, w = (d_r - d_b) / d_b * R, filter: contact hardening (pcss.cpp)
-//   parker  Parker et al. 1998: the hard shadow as umbra, an outer hull  (single_sample.cpp)
-//   haines  Haines 2001: plateaus on the ground plane                    (single_sample.cpp)
+//   parker  [Parker1998]: the hard shadow as umbra, an outer hull  (single_sample.cpp)
+//   haines  [Haines2001]: plateaus on the ground plane                    (single_sample.cpp)
 //   mesh    the light mesh: visibility baked on a 3D grid, trilinear     (light_mesh.cpp)
 //   vsm esm filterable maps with a blur; VSM's light bleeding            (filterable_maps.cpp)
 // and the theory drawn live (soft_theory.cpp): the predicted inner and outer penumbra edges
@@ -80,6 +80,11 @@ class SoftShadowsLesson : public Lesson {
         .hotkey = "T";
     r.addChoice("view", &p_.view, {"lit", "visibility"}, "lit, or V of the measured light alone").hotkey = "V";
     declareImpl(r, &p_.impl, "whose half-width draws the predicted edges, whose A_frac the plot");
+    exercises.add("05.1", "penumbraHalfWidth", "the predicted penumbra edges collapse onto the hard shadow's edge");
+    exercises.add("05.2", "visibleFraction, visibleFractionLinear", "the A_frac plot is a flat line at 1/2");
+    exercises.add("05.3", "pcssFilterRadiusUv", "");  // "": not used live, so no banner
+    exercises.add("05.4", "rotateTap", "");
+    exercises.add("05.5", "lightMeshVisibility", "");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     r.add("theory.edges", &p_.showEdge, "draw the lecture's predicted penumbra of the picked caster edge").hotkey = "G";
     r.addChoice("theory.edge", &p_.edge, {"0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11"},

@@ -12,12 +12,13 @@
 #include <glm/glm.hpp>
 
 #include "core/image.hpp"
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex06 {
 
 // EXERCISE 06.1: how many levels a full mip chain of a w x h texture has: halve each side (integer
 // division, never below 1) until the level is 1x1, counting level 0 and the 1x1 level. The
-// lecture's 256x64 chain has 9 levels (seeds 004, "levels of detail (mipmap)").
+// lecture's 256x64 chain has 9 levels ([Tarantsev-L12], "levels of detail (mipmap)").
 int mipLevelCount(int width, int height);
 
 // EXERCISE 06.2: the memory of that whole chain in bytes, every level w_l x h_l at bytesPerTexel.

@@ -1,4 +1,4 @@
-// Lesson 06: texture filtering, from texels to anisotropy (seeds 004, textures). A ground plane to
+// Lesson 06: texture filtering, from texels to anisotropy ([Tarantsev-L12], textures). A ground plane to
 // the horizon, a tunnel and a sphere, textured with patterns that alias; every filter of the
 // lecture on a GL sampler object: wrap modes, nearest/linear magnification, the four mipmap modes,
 // trilinear, anisotropic 1x-16x, LOD bias; RIP maps filtered in the shader; texture coordinates
@@ -20,6 +20,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
 
+#include "app/exercise_program.hpp"
 #include "app/lesson.hpp"
 #include "core/mesh_gen.hpp"
 #include "core/paths.hpp"
@@ -165,6 +166,15 @@ class TextureFilteringLesson : public Lesson {
     r.add("measure", &p_.measure, "render a supersampled reference each frame and print RMSE and flicker");
     r.add("measure.supersample", &p_.supersample, 2, 8, "reference pixels per pixel, per axis");
     declareImpl(r, &p_.impl, "whose sampler the CPU view uses (student: exercises.cpp)");
+    exercises.add("06.1", "mipLevelCount", "");
+    exercises.add("06.2", "mipChainBytes", "");
+    exercises.add("06.3", "lodFromDerivatives", "view=cpu_reference samples every pixel at lambda 0: aliasing");
+    exercises.add("06.4", "sampleBilinear", "");
+    exercises.add("06.5", "sampleTrilinear", "view=cpu_reference is black wherever the texture is");
+    exercises.add("06.6", "anisotropicProbes", "");
+    exercises.add("06.7", "boxDownsample", "");
+    exercises.addGlsl("06.8", "ripLevelOfDetail", "sampling=rip_map reads level 0 everywhere: aliasing");
+    exercises.addGlsl("06.9", "ripBilinear", "sampling=rip_map is black wherever the texture is");
     r.add("diff_gain", &p_.diffGain, 1.0f, 64.0f, "difference view: |GPU - CPU| times this");
   }
 
@@ -468,7 +478,9 @@ class TextureFilteringLesson : public Lesson {
   }
 
   Params p_;
-  gl::Program program_{"06 scene", {"06_texture_filtering/scene.vert", "06_texture_filtering/scene.frag"}};
+  ExerciseProgram program_{"06 scene", {"06_texture_filtering/scene.vert", "06_texture_filtering/scene.frag"}, [this] {
+                             return p_.impl == Impl::Student;
+                           }};  // GLSL exercises 06.8, 06.9
   gl::Sampler sampler_;
   gl::GpuMesh ground_, tunnel_, sphere_;
   gl::Texture texture_, normalMap_, rip_, volume_, cpuView_;

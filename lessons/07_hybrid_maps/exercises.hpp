@@ -6,10 +6,11 @@
 #include <array>
 
 #include "algorithms/hybrid_map.hpp"
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex07 {
 
-// EXERCISE 07.1: the paper's merge criterion on one 2x2 block (Li et al. 2016, eq. 1). d holds the
+// EXERCISE 07.1: the paper's merge criterion on one 2x2 block ([LiHua2016] eq. 1). d holds the
 // four depths D1..D4. Their mean is m = ((D1 + D2) + (D3 + D4)) * 0.25 (in that order, in float).
 // The block merges when |m - Dn| <= eps0 * Dn for every n (written as a product, not a quotient:
 // no division by a depth of 0). A negative depth marks a child that did not merge at the level

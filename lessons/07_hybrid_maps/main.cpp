@@ -73,6 +73,10 @@ class HybridMapsLesson : public Lesson {
                 "lit; V of the measured light; the map by level; the scene by level; steps per lookup")
         .hotkey = "V";
     declareImpl(r, &p_.impl, "whose merge sweep (07.1, 07.2) builds the maps (yours runs on the CPU)");
+    exercises.add("07.1", "mergeBlock: the merge criterion", "");  // "": not used live, so no banner
+    exercises.add("07.2", "sweepLevel: one level of the sweep", "the lesson stops: the sweep returns a 0x0 grid");
+    exercises.add("07.3", "descend: the index descent", "");
+    exercises.add("07.4", "linearDepth", "");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     r.add("edge_band.texels", &p_.bandTexels, 0.5f, 16, "measured near an edge: within this many texels of a boundary");
     r.add("edge_band.map_size", &p_.bandMapSize, 0, 8192,

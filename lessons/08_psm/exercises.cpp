@@ -5,6 +5,7 @@ namespace shadowlab::ex08 {
 
 // EXERCISE 08.1
 glm::dvec4 postProjectiveLight(const glm::dmat4& viewProj, const glm::dvec4& light) {
+  SHADOWLAB_STUB("08.1");  // delete this line when you write the exercise
   // TODO: h = viewProj * light; classify by the sign of h.w (with the 1e-9 tolerance) and return
   // (h.xyz / h.w, +-1) or (normalize(h.xyz), 0).
   (void)viewProj;
@@ -14,6 +15,7 @@ glm::dvec4 postProjectiveLight(const glm::dmat4& viewProj, const glm::dvec4& lig
 
 // EXERCISE 08.2
 double virtualCameraShift(const glm::dmat4& view, double zNear, const std::vector<glm::dvec3>& casterCorners) {
+  SHADOWLAB_STUB("08.2");  // delete this line when you write the exercise
   // TODO: the largest z_view + zNear over the corners (z_view = (view * (corner, 1)).z), or 0.
   (void)view;
   (void)zNear;

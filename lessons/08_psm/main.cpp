@@ -1,5 +1,5 @@
-// Lesson 08: Perspective Shadow Maps, the original (Stamminger & Drettakis, SIGGRAPH 2002, as
-// Kozlov et al. describe it in "Perspective Shadow Maps: Care and Feeding" §2-3). The depth map is
+// Lesson 08: Perspective Shadow Maps, the original ([Stamminger2002], as [Kozlov2004] §2-3
+// describes it). The depth map is
 // rendered and applied AFTER the camera's projection, in its post-projective space, where the view
 // frustum is the unit cube and near things are big: near shadows get more texels. The PSM
 // technique (common/technique/psm.cpp, shaders/common/shadow_psm.frag) with every fix off:
@@ -95,6 +95,8 @@ class OriginalPsmLesson : public Lesson {
     r.addChoice("view", &p_.view, {"lit", "visibility", "map"}, "lit, V of the measured light, or light 0's map")
         .hotkey = "V";
     declareImpl(r, &p_.impl, "whose post-projective light and virtual camera slide the PSM runs");
+    exercises.add("08.1", "postProjectiveLight", "the PSM's light is a direction along +z: its shadows are wrong");
+    exercises.add("08.2", "virtualCameraShift: the slide", "no slide: casters behind the camera cast no shadow");
     r.add("equal_texels", &p_.equalTexels, "the uniform map gets the PSM's map_size (the same texels)");
     r.add("turn", &p_.turn, "turn the camera (turn.speed): a caster leaves the view").hotkey = "Y";
     r.add("turn.speed", &p_.turnSpeed, -1, 1, "how fast the camera turns, radians per second");

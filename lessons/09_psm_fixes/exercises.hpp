@@ -1,5 +1,5 @@
 #pragma once
-// Lesson 09 exercises: the paper's fixes to PSM (seeds 000 §3-5). Pure functions; GLM column
+// Lesson 09 exercises: the paper's fixes to PSM ([Kozlov2004] §3-5). Pure functions; GLM column
 // vectors; right-handed view spaces looking down -z; clip depth in [-1,1] (OpenGL).
 // Post-projective light encoding as in exercise 08.1: (p, +1) finite in front, (p, -1) finite
 // behind the camera, (D, 0) a direction (light at infinity toward +D, rays travel along -D).
@@ -7,11 +7,12 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
 namespace shadowlab::ex09 {
 
 // EXERCISE 09.1: the inverse projection matrix
-// For a light behind the camera, seeds 000 §3 gives the light camera a NEGATIVE near distance and
+// For a light behind the camera, [Kozlov2004] §3 gives the light camera a NEGATIVE near distance and
 // a positive far one, Zn = -a, Zf = +a, so Q = Zf / (Zf - Zn) = 1/2 and the stored depth is
 //   Z_psm = Q (1 - Zn / Z) = 1/2 (1 + a / Z)          (Direct3D, depth in [0,1]),
 // Z the distance along the light camera's axis. In OpenGL conventions (view looks down -z, so
@@ -22,17 +23,17 @@ namespace shadowlab::ex09 {
 glm::dmat4 inverseProjection(double fovY, double aspect, double a);
 
 // EXERCISE 09.2: the smallest enclosing cone
-// Seeds 000 §4.1 aims the light camera along the axis of the narrowest cone from the light that
+// [Kozlov2004] §4.1 aims the light camera along the axis of the narrowest cone from the light that
 // holds every receiver key point. Given the directions from the light to the points (any
 // length, all inside an open hemisphere), return (axis.xyz, halfAngle): a unit axis and the
 // least half-angle in radians such that every direction makes an angle <= halfAngle with it.
 // Hint: normalise the directions; the cone's circle on the unit sphere is where the sphere meets
-// the smallest ball holding the normalised points (Welzl / Gaertner 1999, linear expected time),
+// the smallest ball holding the normalised points (Welzl / [Gaertner1999], linear expected time),
 // so the axis is that ball's centre, normalised. Return dvec4(0) for an empty input.
 glm::dvec4 smallestEnclosingCone(const std::vector<glm::dvec3>& directions);
 
 // EXERCISE 09.3: the visible-face test of the unit cube
-// Seeds 000 §4.2 renders depth onto the faces of the post-projective cube [-1,1]^3 that the light
+// [Kozlov2004] §4.2 renders depth onto the faces of the post-projective cube [-1,1]^3 that the light
 // does NOT see. Faces: 0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z; face f has outward normal n_f and lies
 // in the plane dot(n_f, x) = 1. Return true when the light sees the face's outer side or sees it
 // exactly edge-on (no ray from the light leaves the cube through such a face):
@@ -42,7 +43,7 @@ glm::dvec4 smallestEnclosingCone(const std::vector<glm::dvec3>& directions);
 bool cubeFaceVisible(int face, const glm::dvec4& postLight);
 
 // EXERCISE 09.4: the texel-size bias
-// Seeds 000 §5 biases in WORLD space: P_biased = P + L (a + b L_texel), L the unit direction from
+// [Kozlov2004] §5 biases in WORLD space: P_biased = P + L (a + b L_texel), L the unit direction from
 // the light to P, L_texel the world size of a shadow-map texel at P. Measure it as the paper says:
 // map P by M = worldToClip, move it by one texel in x AND y keeping its depth (in clip space:
 // x += (2 / mapSize) w, y += (2 / mapSize) w, since NDC spans 2 units over mapSize texels), map it
@@ -51,7 +52,7 @@ glm::dvec3 texelSizeBias(const glm::dmat4& worldToClip, const glm::dvec3& p, con
                          double b, double mapSize);
 
 // EXERCISE 09.5: LiSPSM's optimal n
-// Light Space Perspective Shadow Maps (Wimmer, Scherzer and Purgathofer 2004), lesson 09's third
+// Light Space Perspective Shadow Maps ([Wimmer2004]), lesson 09's third
 // technique, warp with a perspective whose centre sits n in front of the view body's near side.
 // n -> infinity is the uniform map, n = z0 the strongest (PSM-like) warp; the n that makes the
 // aliasing at the near and the far end equal is

@@ -11,7 +11,7 @@
 //   fix.faces    §4.2  the faces of the unit cube the light cannot see, a map each (3 to 5 for a
 //                      light outside, 6 inside), when the cone is too wide or always
 //   bias=world   §5    a + b L_texel in world space, per caster vertex, against bias=constant
-//   technique          lispsm (Wimmer et al. 2004, n_opt) and uniform (lesson 03) on the same controls
+//   technique          lispsm ([Wimmer2004], n_opt) and uniform (lesson 03) on the same controls
 // Views: the post-projective view (P: inset, full) with the light, its cone, key points and maps;
 // the god view (O) with the receiver volumes, key points and light frusta; view=maps.
 //
@@ -88,6 +88,11 @@ class PsmFixesLesson : public Lesson {
     r.addChoice("view", &p_.view, {"lit", "visibility", "maps"}, "lit, V of the measured light, or light 0's maps")
         .hotkey = "V";
     declareImpl(r, &p_.impl, "whose inverse projection, cone, face test, bias and n_opt the techniques run");
+    exercises.add("09.1", "inverseProjection", "fix 1 (fix.inverse) projects with the identity: its shadows are wrong");
+    exercises.add("09.2", "smallestEnclosingCone", "fix 2 (fix.clip) gets no cone: its map does not fit the receivers");
+    exercises.add("09.3", "cubeFaceVisible", "fix 3 (fix.faces) sees no face of the unit cube: those shadows vanish");
+    exercises.add("09.4", "texelSizeBias", "bias=world moves every caster vertex to the origin: its shadows vanish");
+    exercises.add("09.5", "lispsmOptimalN", "technique=lispsm gets n = 0: its map is wrong");
     r.add("equal_texels", &p_.equalTexels,
           "LiSPSM and the uniform map get the PSM's map_size (a light's total texels)");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");

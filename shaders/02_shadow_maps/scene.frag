@@ -1,5 +1,5 @@
 #version 410 core
-// Pass 2, fragment: the lecture's model with V from the shadow map (seeds 002, 004).
+// Pass 2, fragment: the lecture's model with V from the shadow map ([Boreskov2005], [Tarantsev-L12]).
 #include "common/lighting.glsl"
 #include "common/measure.glsl"
 
@@ -37,15 +37,21 @@ out vec4 fragColor;
 #define VIEW uView
 #endif
 
+// compare=manual: the lookup and comparison written in the shader, exercises 02.4 and 02.5 (yours
+// with impl=student; the reference's is sealed in the student handout).
+#ifdef SHADOWLAB_STUDENT_GLSL
+#include "exercises.glsl"
+#else
+#include "exercises_reference.glsl"
+#endif
+
 float shadowVisibility(vec4 s) {
   if (COMPARE == 2) return vCpuVisibility;
-  if (COMPARE == 3 || s.w <= 0.0) return 1.0;  // behind the light: the spot cone is zero there
-  vec3 p = s.xyz / s.w;
-  if (p.z > 1.0) return 1.0;                     // beyond the light's far plane: nothing known
-  if (COMPARE == 0) return textureProj(uShadowMap, vec4(s.xy, s.z - uBias * s.w, s.w));
-  if (any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)))) return 1.0;
-  float stored = texture(uShadowDepth, p.xy).r;
-  return p.z - uBias <= stored ? 1.0 : 0.0;      // the comparison ARB_shadow does in hardware
+  if (COMPARE == 3) return 1.0;
+  if (COMPARE == 1) return shadowLookup(uShadowDepth, s, uBias);
+  if (s.w <= 0.0) return 1.0;       // behind the light: the spot cone is zero there
+  if (s.z / s.w > 1.0) return 1.0;  // beyond the light's far plane: nothing known
+  return textureProj(uShadowMap, vec4(s.xy, s.z - uBias * s.w, s.w));
 }
 
 void main() {

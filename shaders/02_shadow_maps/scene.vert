@@ -1,5 +1,5 @@
 #version 410 core
-// Pass 2 (seeds 002): the scene from the eye. The texture matrix
+// Pass 2 ([Boreskov2005]): the scene from the eye. The texture matrix
 //   T = translate(0.5) * scale(0.5) * P_light * V_light
 // takes the world position to shadow-map coordinates (s, t, r, q); the fragment shader divides.
 layout(location = 0) in vec3 aPosition;

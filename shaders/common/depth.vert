@@ -1,5 +1,5 @@
 #version 410 core
-// The depth pass of every shadow map (seeds 002): the scene seen from the light, depth only, for
+// The depth pass of every shadow map ([Boreskov2005]): the scene seen from the light, depth only, for
 // every light camera of every technique (spot, fitted directional, cube faces; common/technique/casters).
 layout(location = 0) in vec3 aPosition;
 layout(location = 2) in vec2 aUv;

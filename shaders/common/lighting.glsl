@@ -1,4 +1,4 @@
-// The lecture's illumination model with visibility (seeds 004), for every lesson:
+// The lecture's illumination model with visibility ([Tarantsev-L12]), for every lesson:
 //   I = ka Ia + sum_i V_i f_att,i I_i [kd (N.L_i) + ks (R_i.V)^pow]
 // Mirrors common/algorithms/lighting.cpp (the reference the graders test); keep the two in step.
 

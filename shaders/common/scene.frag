@@ -1,6 +1,6 @@
 #version 410 core
 // The lit pass every map technique serves (common/technique/lit_pass): the lecture's model
-//   I = ka Ia + sum_i V_i f_att,i I_i [kd (N.L_i) + ks (N.H_i)^pow]   (seeds 004, Blinn's highlight)
+//   I = ka Ia + sum_i V_i f_att,i I_i [kd (N.L_i) + ks (N.H_i)^pow]   ([Tarantsev-L12], Blinn's highlight)
 // with V_i from the technique, whichever it is: its own fragment shader, linked into this program,
 // defines shadowVisibility (shaders/common/shadow_*.frag). One shader for any technique and any
 // number of lights (up to MAX_LIGHTS).

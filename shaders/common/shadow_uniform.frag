@@ -15,7 +15,7 @@ const int SHADOW_NONE = 0, SHADOW_ORTHO = 1, SHADOW_PERSPECTIVE = 2, SHADOW_CUBE
 
 uniform Light uLights[MAX_LIGHTS];
 uniform int uShadowType[MAX_LIGHTS];           // SHADOW_NONE: no map (the light is off): lit
-uniform mat4 uShadowMatrix[MAX_LIGHTS];        // 2D maps: the texture matrix (seeds 002)
+uniform mat4 uShadowMatrix[MAX_LIGHTS];        // 2D maps: the texture matrix ([Boreskov2005])
 uniform float uShadowTexel[MAX_LIGHTS];        // ortho: world size of a texel; perspective: 2 tan(fov/2) / size
 uniform float uShadowSize[MAX_LIGHTS];         // texels per side (of a cube face)
 // One sampler per light and kind, picked by a switch on the light's index: a sampler array

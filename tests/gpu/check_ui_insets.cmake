@@ -1,6 +1,7 @@
 # Every inset a lesson reports (Lesson::insets: its map views, the post-projective view, the god
-# view) stays clear of the header and the parameter panel, at --ui-scale 1 and 2 on 1280x720; and
-# at least EXPECT insets are reported (a lesson that stops reporting them fails here).
+# view) stays clear of the header, the parameter panel and the exercises panel, at --ui-scale 1
+# and 2 on 1280x720; and at least EXPECT insets are reported (a lesson that stops reporting them
+# fails here).
 # Run: cmake -DLESSON=... -DNAME=... "-DARGS=--set;view=maps;..." -DEXPECT=N -DOUT_DIR=... -P this
 include(${CMAKE_CURRENT_LIST_DIR}/ui_layout_lib.cmake)
 file(MAKE_DIRECTORY ${OUT_DIR})
@@ -14,6 +15,10 @@ foreach(scale 1 2)
     if(name MATCHES "inset$|view$")
       check_apart("${json}" "${name}" shadowlab)
       check_apart("${json}" "${name}" Parameters)
+      has("${json}" Exercises exercises)  # the exercises panel (bottom left) stops above them too
+      if(exercises)
+        check_apart("${json}" "${name}" Exercises)
+      endif()
       check_inside("${json}" "${name}" 1280 720)
       math(EXPR insets "${insets} + 1")
     endif()

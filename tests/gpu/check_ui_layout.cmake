@@ -4,7 +4,8 @@
 #   (the control);
 # - at --ui-scale 2 on 1280x720 the header and the parameter panel do not overlap and stay inside
 #   the frame; with the A/B split on, neither covers the split's labels; neither covers the god view
-#   or lesson 02's map inset; a heatmap's legend appears with it, clear of both.
+#   or lesson 02's map inset; a heatmap's legend appears with it, clear of both (and of the
+#   exercises panel, issue 17).
 # Run: cmake -DLESSON=<lesson 03> -DLESSON02=<lesson 02> -DOUT_DIR=... -P this
 include(${CMAKE_CURRENT_LIST_DIR}/ui_layout_lib.cmake)
 
@@ -41,6 +42,11 @@ foreach(scale 1 2)
   check_apart("${json}" Legend shadowlab)
   check_apart("${json}" Legend Parameters)
   check_inside("${json}" Legend 1280 720)
+  # Lesson 03's exercises panel (bottom left, collapsed) stays above the legend, clear of the rest.
+  check_apart("${json}" Exercises Legend)
+  check_apart("${json}" Exercises Parameters)
+  check_apart("${json}" Exercises shadowlab)
+  check_inside("${json}" Exercises 1280 720)
 endforeach()
 has("${json}" Legend legend_with)
 layout(no_legend --size 640x360 --show-ui)

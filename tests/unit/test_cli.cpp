@@ -35,6 +35,12 @@ TEST_CASE("cli: headless defaults to a few frames, windowed runs until closed") 
   CHECK(parse({}).width == 1280);
 }
 
+TEST_CASE("cli: --exercises runs offscreen (it only prints, and the launcher calls it without a display)") {
+  const auto cl = parse({"--exercises"});
+  CHECK(cl.exercises);
+  CHECK(cl.headless);
+}
+
 TEST_CASE("cli: bad input is one line naming it and the valid choices") {
   const std::string unknown = errorOf({"--headles"});
   CHECK(unknown.rfind("unknown flag '--headles'; valid: --headless, --size", 0) == 0);

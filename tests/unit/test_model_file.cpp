@@ -169,7 +169,7 @@ TEST_CASE("model: a missing texture names the file and the diffuse colour used i
   CHECK(painted.albedo == glm::vec3(0.2f, 0.7f, 0.3f));
 }
 
-TEST_CASE("model: points and lines are skipped and counted; a file of nothing else is an error") {
+TEST_CASE("model: points and lines are skipped and counted, a file of nothing else is an error") {
   const ModelFile m = loadModelFile(kModels + "mixed_primitives.obj");
   checkInvariants(m);
   CHECK(flatten(m.scene).triangleCount() == 1);

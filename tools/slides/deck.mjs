@@ -136,9 +136,9 @@ export function makeMarkdown() {
           });
           return `<div class="figrow figrow-${figs.length}">${figs.join('')}</div>\n`;
         }
-        // A paragraph that is only a citation, "(seeds 004, illumination with visibility)", is set
-        // small under the formula it cites.
-        const cls = /^\(seeds? \d{3}[^\n]*\)$/.test(token.text.trim()) ? ' class="cite"' : '';
+        // A paragraph that is only a citation, "([Tarantsev-L12], illumination with visibility)" (keys
+        // of docs/references.md), is set small under the formula it cites.
+        const cls = /^\(\[[A-Za-z][\w-]*\][^\n]*\)$/.test(token.text.trim()) ? ' class="cite"' : '';
         return `<p${cls}>${this.parser.parseInline(token.tokens)}</p>\n`;
       },
       image(token) {

@@ -1,5 +1,5 @@
 #pragma once
-// Fix 4 (seeds 000 §5): depth bias in WORLD space, carried into the shadow map by the matrices.
+// Fix 4 ([Kozlov2004] §5): depth bias in WORLD space, carried into the shadow map by the matrices.
 //   P_biased = P + L (a + b L_texel),  then mapped by M (world -> shadow-map clip)
 // L: unit direction from the light to P (world); L_texel: the world size of one shadow-map texel
 // at P, measured by moving P's map image by c = one texel (keeping its depth) and mapping back:
@@ -50,7 +50,7 @@ glm::dvec3 directionFromLight(const glm::dvec4& homogeneousLight, const glm::dve
 glm::dmat4 constantDepthBiasMatrix(double bias);
 
 // The world distance along the light ray that a constant NDC depth bias amounts to at p (the
-// quantity that varies wildly across a PSM, seeds 000 §5, fig. 19). Infinite where the depth does
+// quantity that varies wildly across a PSM, [Kozlov2004] §5, fig. 19). Infinite where the depth does
 // not change along the ray.
 double worldShiftOfDepthBias(const glm::dmat4& worldToClip, const glm::dvec3& p, const glm::dvec3& dirFromLight,
                              double bias);

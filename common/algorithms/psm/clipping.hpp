@@ -1,5 +1,5 @@
 #pragma once
-// Convex clipping for unit-cube clipping (seeds 000 §4.1): the vertices of the union over i of
+// Convex clipping for unit-cube clipping ([Kozlov2004] §4.1): the vertices of the union over i of
 // (B_i ∩ F), B_i a receiver bounding box and F the camera's view frustum. Allocation-free except
 // for appending to a caller-owned vector, so a lesson can call it every frame.
 #include <array>

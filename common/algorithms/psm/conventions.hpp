@@ -3,7 +3,7 @@
 // - Right-handed world and view space; a camera looks down its view-space -z. GLM column vectors:
 //   a point p is transformed as M * vec4(p, 1), matrices compose right to left.
 // - Camera clip space is OpenGL's: after the divide, the view frustum is the cube [-1,1]^3
-//   ("the unit cube" of seeds 000 §3-4: side 2, centre 0). Post-projective space is that
+//   ("the unit cube" of [Kozlov2004] §3-4: side 2, centre 0). Post-projective space is that
 //   divided space. Shadow-map depth is produced in [-1,1] by default; DepthRange::ZeroToOne
 //   remaps it for glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) (GL 4.5 / ARB_clip_control),
 //   with [-1,1] as the fallback where clip control is missing.
@@ -11,7 +11,7 @@
 //   directional light (the point at infinity the light comes FROM; `direction` is where it travels).
 //   After the camera's P*V the light is h = P*V*light. h.w > 0: a finite point in front of the
 //   camera plane (InFront); h.w < 0: the light is behind the camera plane and the order of points
-//   along its rays passes through infinity (Behind, seeds 000 §3); h.w == 0 (within a relative
+//   along its rays passes through infinity (Behind, [Kozlov2004] §3); h.w == 0 (within a relative
 //   tolerance): the light stays a direction in post-projective space, parallel to the near plane.
 // - Everything is double precision: Zf/Zn up to 1e6 puts a directional light 2e-6 behind the
 //   cube's far face, which float cannot resolve. Convert with glm::mat4(m) only at the GL boundary.

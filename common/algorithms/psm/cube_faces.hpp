@@ -1,5 +1,5 @@
 #pragma once
-// Fix 3 (seeds 000 §4.2): depth maps on the faces of the post-projective unit cube that the light
+// Fix 3 ([Kozlov2004] §4.2): depth maps on the faces of the post-projective unit cube that the light
 // does NOT see, one off-centre projection per face from the light's post-projective position
 // ("a cube map with a shifted centre": lookup vector = point - light position). 3 to 5 faces for
 // a light outside the cube, all 6 for a point light inside it.
@@ -34,7 +34,7 @@ int cubeFaceOf(const glm::dvec3& point, const PostProjectiveLight& light);
 // The same among the faces of `hiddenMask` (as hiddenFaceMask gives it).
 int cubeFaceOf(const glm::dvec3& point, const PostProjectiveLight& light, unsigned hiddenMask);
 
-// Seeds 000 §4.2: lookup vector = point - light position; a Direction light gives -direction.
+// [Kozlov2004] §4.2: lookup vector = point - light position; a Direction light gives -direction.
 glm::dvec3 cubeLookupVector(const glm::dvec3& point, const PostProjectiveLight& light);
 
 struct CubeFaceCamera {

@@ -1,5 +1,5 @@
 #pragma once
-// The smallest cone from an apex holding a set of directions (seeds 000 §4.1, after Gaertner
+// The smallest cone from an apex holding a set of directions ([Kozlov2004] §4.1, after Gaertner
 // 1999). For unit vectors u_i inside an open hemisphere, the cone {u : dot(axis, u) >= cos(angle)}
 // of least angle is the sphere cut by the smallest ball enclosing the points u_i: the ball's
 // boundary meets the unit sphere in the cone's circle, whose centre is the ball's centre c, so

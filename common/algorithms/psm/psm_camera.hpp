@@ -2,8 +2,8 @@
 // The light camera of Perspective Shadow Maps, built in the camera's post-projective space:
 // - the original PSM (Stamminger & Drettakis 2002): a virtual camera slid back until every caster
 //   is in front of it, then a light camera that cannot see past infinity (the baseline);
-// - fix 1 (seeds 000 §3): the inverse projection Zn = -a, Zf = +a for a light behind the camera;
-// - fix 2 (seeds 000 §4.1): the light camera aimed along the smallest cone from the light holding
+// - fix 1 ([Kozlov2004] §3): the inverse projection Zn = -a, Zf = +a for a light behind the camera;
+// - fix 2 ([Kozlov2004] §4.1): the light camera aimed along the smallest cone from the light holding
 //   the receivers' key points (vertices of the union of B_i ∩ F), with near/far from them.
 // Matrices are dmat4 in the conventions of psm/conventions.hpp; worldToClip is the M of §5.
 #include <functional>
@@ -51,7 +51,7 @@ enum class BehindProjection { Inverse, Reversed };
 
 struct PsmOptions {
   DepthRange depthRange = DepthRange::MinusOneToOne;
-  // Wider cones spread the map too thin (seeds 000 §4: near 180 degrees the quality collapses);
+  // Wider cones spread the map too thin ([Kozlov2004] §4: near 180 degrees the quality collapses);
   // past this the fit reports ConeTooWide so the caller switches to cube faces (§4.2).
   double maxHalfAngle = 1.3962634015954636;  // 80 degrees
   // InFront: near = nearFraction * (nearest receiver distance), leaving room for casters between
@@ -74,7 +74,7 @@ struct PsmFit {
 };
 
 // Fix 1's matrix in GL conventions: light view space looks down -z, Z = -z_view is the distance
-// along the axis. Clip w = Z; depth/w = a / Z in [-1,1] (Z_psm = (1 + a/Z)/2 in [0,1], seeds 000
+// along the axis. Clip w = Z; depth/w = a / Z in [-1,1] (Z_psm = (1 + a/Z)/2 in [0,1], [Kozlov2004]
 // §3): Z = -a -> near, Z -> +-inf -> middle, Z = +a -> far. x, y as a symmetric perspective with
 // vertical field of view fovY. Throws std::invalid_argument for a <= 0, fovY outside (0, pi),
 // aspect <= 0 or non-finite values.

@@ -1,0 +1,29 @@
+# shadowlab_sealed: the shader files tools/handout/sealed_shaders.txt lists, compiled in (obscured)
+# by tools/seal_files. The #include preprocessor falls back on them when a file is absent on disk
+# (core/shader_files.hpp). In this tree every file is on disk as well, so they change nothing; the
+# student handout ships the library prebuilt (lib/) and leaves the files out.
+set(SEALED_MANIFEST ${CMAKE_SOURCE_DIR}/tools/handout/sealed_shaders.txt)
+if(EXISTS ${CMAKE_SOURCE_DIR}/lib/libshadowlab_sealed.a)
+  add_library(shadowlab_sealed STATIC IMPORTED GLOBAL)
+  set_target_properties(shadowlab_sealed PROPERTIES IMPORTED_LOCATION ${CMAKE_SOURCE_DIR}/lib/libshadowlab_sealed.a)
+  return()
+endif()
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${SEALED_MANIFEST})
+file(STRINGS ${SEALED_MANIFEST} sealed_lines)
+set(sealed_files "")
+foreach(line IN LISTS sealed_lines)
+  string(REGEX REPLACE "#.*" "" line "${line}")
+  string(STRIP "${line}" line)
+  if(line)
+    list(APPEND sealed_files ${CMAKE_SOURCE_DIR}/shaders/${line})
+  endif()
+endforeach()
+add_executable(seal_files ${CMAKE_SOURCE_DIR}/tools/seal_files.cpp)
+target_include_directories(seal_files PRIVATE ${CMAKE_SOURCE_DIR}/common)
+set(sealed_cpp ${CMAKE_BINARY_DIR}/generated/sealed_files.cpp)
+add_custom_command(OUTPUT ${sealed_cpp}
+  COMMAND seal_files ${SEALED_MANIFEST} ${CMAKE_SOURCE_DIR}/shaders ${sealed_cpp}
+  DEPENDS seal_files ${SEALED_MANIFEST} ${sealed_files}
+  COMMENT "Sealing the shader files of tools/handout/sealed_shaders.txt")
+add_library(shadowlab_sealed STATIC ${sealed_cpp})
+target_include_directories(shadowlab_sealed PRIVATE ${CMAKE_SOURCE_DIR}/common)

@@ -1,0 +1,63 @@
+#pragma once
+// The lesson's exercises, as the student sees them in the lesson: each with its state (stub,
+// failing, passing) from the lesson's PUBLIC cases, run in-process at start and on request (the
+// panel's button; GLSL exercises again whenever exercises.glsl is saved). The C++ cases are the
+// doctest cases "exNN.k: ..." compiled into the lesson (tests/grading/exNN_tests.cpp), pure
+// functions; the GLSL ones are app/glsl_cases.hpp's, evaluated on the GPU.
+//
+// A lesson opts in from declare() (the framework provides `exercises`, like `debug`):
+//   exercises.add("01.1", "lightContribution: the lighting term", "every lit pixel is black");
+//   exercises.addGlsl("02.4", "shadowCompare (GLSL)", "with compare=manual nothing is shadowed");
+// and names the parameter that switches to the student's code (default "impl", value "student").
+// With the student's code in use, a banner names each exercise still stubbed and what that does
+// to the picture, and says so when the frame is (nearly) black or empty.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "grading/cases.hpp"
+
+namespace shadowlab {
+
+enum class ExerciseState { NotRun, Stub, Failing, Passing, NoCases };
+const char* exerciseStateName(ExerciseState s);
+
+struct Exercise {
+  std::string id;          // "01.1"
+  std::string title;       // "lightContribution: the lighting term"
+  std::string stubEffect;  // what an untouched stub does to the picture ("": not used live, no banner)
+  bool glsl = false;       // shaders/NN_name/exercises.glsl, else lessons/NN_name/exercises.cpp
+  ExerciseState state = ExerciseState::NotRun;
+  int passed = 0, cases = 0;
+  bool markerLeft = false;   // passing, but the SHADOWLAB_STUB line is still there
+  std::string firstFailure;  // the first failing case's name and output
+};
+
+class Exercises {
+ public:
+  void add(std::string id, std::string title, std::string stubEffect);
+  void addGlsl(std::string id, std::string title, std::string stubEffect);
+  // The parameter (a choice) whose value `student` means "the student's code": impl=student.
+  void switchedBy(std::string param, std::string studentValue = "student");
+  bool empty() const { return list_.empty(); }
+  const std::vector<Exercise>& list() const { return list_; }
+  const std::string& param() const { return param_; }
+  const std::string& studentValue() const { return studentValue_; }
+
+  // The framework's side. evaluate() runs the public cases (a GL context must be current for the
+  // GLSL ones); glslChanged() is true when exercises.glsl was saved since.
+  void evaluate(const std::string& lesson);
+  bool glslChanged() const;
+  // One line per exercise: "01.1  stub     lightContribution: ... (0 of 5 public cases)".
+  std::string report() const;
+  // The banner while the student's code is in use: empty when no exercise is a stub.
+  std::string stubBanner(double blackShare) const;
+
+ private:
+  void apply(const grading::RunResult& run, bool glsl);
+  std::vector<Exercise> list_;
+  std::string param_ = "impl", studentValue_ = "student", lesson_;
+  std::filesystem::file_time_type glslStamp_{};
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,39 @@
+#include "core/shader_files.hpp"
+
+#include <map>
+#include <mutex>
+
+#include "core/sealed_files.hpp"
+
+namespace shadowlab {
+namespace {
+std::mutex g_mutex;
+std::map<std::string, std::string>& registered() {
+  static std::map<std::string, std::string> texts;
+  return texts;
+}
+}  // namespace
+
+void registerShaderText(const std::string& relativePath, std::string text) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  registered()[relativePath] = std::move(text);
+}
+
+std::optional<std::string> virtualShaderText(const std::string& relativePath) {
+  {
+    std::lock_guard<std::mutex> lock(g_mutex);
+    const auto it = registered().find(relativePath);
+    if (it != registered().end()) return it->second;
+  }
+  std::size_t count = 0;
+  const sealed::File* files = sealed::files(count);
+  for (std::size_t f = 0; f < count; ++f) {
+    if (relativePath != files[f].path) continue;
+    std::string text(files[f].size, '\0');
+    for (std::size_t i = 0; i < files[f].size; ++i) text[i] = char(files[f].bytes[i] ^ sealed::keystream(i));
+    return text;
+  }
+  return std::nullopt;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,251 @@
+// The GLSL grader of one lesson (grade_exNN_glsl; SHADOWLAB_GLSL_LESSON names it at build time):
+// the lesson's GLSL cases on the GPU (app/glsl_cases.hpp), then its renders: the lesson run
+// headless with the student's exercises.glsl (impl=student) and with the reference, images and
+// ground-truth figures compared within the stated tolerances. The lesson binary it runs is the
+// lesson built with the REFERENCE C++ exercises, so only the GLSL is the student's.
+//
+//   grade_exNN_glsl --lesson-binary=PATH [--student=tree|reference|DIR] [--exercise=NN.k]
+//                   [--seed=N] [--images=DIR] [--results-json=F] [--score-json=F] [--junit=F]
+//                   [--gradescope=F] [--expect-stub-scores-zero]
+//
+// --student: whose exercises.glsl: this tree's (default), the reference file (validity), or
+// DIR/shaders/<lesson>/exercises.glsl (a submission). The last two run against a copy of the
+// shader tree (SHADOWLAB_ROOT) with that file in place. A file that does not compile fails every
+// case with the compiler's error. Exit: 0 all passed, 1 a case failed (or none ran), 2 bad usage.
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/context.hpp"
+#include "app/glsl_cases.hpp"
+#include "core/image.hpp"
+#include "core/paths.hpp"
+#include "core/process.hpp"
+#include "grading/checks.hpp"
+#include "grading/report.hpp"
+
+#ifndef SHADOWLAB_GLSL_LESSON
+#error "SHADOWLAB_GLSL_LESSON (the lesson folder, e.g. 02_shadow_maps) must be defined by the build"
+#endif
+
+namespace fs = std::filesystem;
+using namespace shadowlab;
+
+namespace {
+
+struct Options {
+  std::string lessonBinary, student = "tree", exercise, images;
+  grading::ReportFiles reports;
+  bool expectStubsScoreZero = false;
+};
+
+bool value(const std::string& arg, const char* flag, std::string& out) {
+  const std::string f = std::string(flag) + "=";
+  if (arg.rfind(f, 0) != 0) return false;
+  out = arg.substr(f.size());
+  return true;
+}
+
+int parse(int argc, char** argv, Options& o) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    std::string seed;
+    if (value(a, "--lesson-binary", o.lessonBinary) || value(a, "--student", o.student) ||
+        value(a, "--exercise", o.exercise) || value(a, "--images", o.images) ||
+        value(a, "--results-json", o.reports.results) || value(a, "--score-json", o.reports.score) ||
+        value(a, "--junit", o.reports.junit) || value(a, "--gradescope", o.reports.gradescope))
+      continue;
+    if (a == "--expect-stub-scores-zero") {
+      o.expectStubsScoreZero = true;
+    } else if (value(a, "--seed", seed)) {
+      char* end = nullptr;
+      const unsigned long long s = std::strtoull(seed.c_str(), &end, 10);
+      if (seed.empty() || *end || seed[0] == '-') {
+        std::cerr << "--seed='" << seed << "' is not a non-negative integer\n";
+        return 2;
+      }
+      grading::setSeed(s);
+    } else {
+      std::cerr << "unknown argument '" << a << "'; valid: --lesson-binary --student --exercise --seed --images "
+                << "--results-json --score-json --junit --gradescope --expect-stub-scores-zero\n";
+      return 2;
+    }
+  }
+  if (o.lessonBinary.empty()) {
+    std::cerr << "--lesson-binary=PATH is required (the lesson built with the reference C++ exercises)\n";
+    return 2;
+  }
+  return 0;
+}
+
+// A copy of the shader tree with the student's exercises.glsl in place; lessons/ and textures/
+// are links to this tree. Returns the new root ("" for this tree as it is).
+std::string stageRoot(const std::string& student, const std::string& lesson, std::string& error) {
+  if (student == "tree") return "";
+  const fs::path tree = sourceRoot();
+  const fs::path file = student == "reference" ? tree / "shaders" / lesson / "exercises_reference.glsl"
+                                               : fs::path(student) / "shaders" / lesson / "exercises.glsl";
+  if (!fs::is_regular_file(file)) {
+    error = "no student file " + file.string();
+    return "";
+  }
+  const fs::path root = fs::temp_directory_path() / ("shadowlab_glsl_" + lesson + "_" + std::to_string(getpid()));
+  std::error_code ec;
+  fs::remove_all(root, ec);
+  fs::create_directories(root);
+  fs::copy(tree / "shaders", root / "shaders", fs::copy_options::recursive);
+  fs::copy_file(file, root / "shaders" / lesson / "exercises.glsl", fs::copy_options::overwrite_existing);
+  for (const char* dir : {"lessons", "textures"}) fs::create_directory_symlink(tree / dir, root / dir);
+  return root.string();
+}
+
+struct Render {
+  int exit = 0;
+  std::string png, measure, log;
+};
+
+Render renderLesson(const Options& o, const GlslRender& r, bool student, const fs::path& dir) {
+  Render out;
+  const std::string side = student ? "student" : "reference";
+  out.png = (dir / (side + ".png")).string();
+  out.measure = (dir / (side + ".json")).string();
+  std::vector<std::string> args{o.lessonBinary, "--headless", "--frames",     "2",
+                                "--size",       "320x180",    "--screenshot", out.png};
+  if (r.measure) args.insert(args.end(), {"--measure", out.measure});
+  args.insert(args.end(), r.args.begin(), r.args.end());
+  args.insert(args.end(), {"--set", student ? "impl=student" : "impl=reference"});
+  const std::string log = (dir / (side + ".log")).string();
+  ProcessOptions options;
+  options.stdoutPath = log;  // stderr too: the compile error, file:line
+  options.setEnv = {"SHADOWLAB_STRICT_GL=1"};
+  out.exit = runProcess(args, options);
+  std::ifstream in(log);
+  out.log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return out;
+}
+
+std::string commandLine(const GlslRender& r) {
+  std::string s;
+  for (const auto& a : r.args) s += " " + a;
+  return s;
+}
+
+// The student's render against the reference's: pixels, then the ground-truth figures.
+std::string compareRenders(const GlslRender& r, const Render& mine, const Render& ref) {
+  const Image8 a = loadImage(mine.png, 3), b = loadImage(ref.png, 3);
+  const ImageDiff d = compareImages(a, b, r.channelTolerance);
+  const double share = double(d.differingPixels) / double(std::size_t(a.width) * a.height);
+  std::string why;
+  if (share > r.maxDifferingShare)
+    why += "\n  differing pixels  " + grading::show(100 * share) + "% differ by more than " +
+           std::to_string(r.channelTolerance) + "/255 in a channel (tolerance " +
+           grading::show(100 * r.maxDifferingShare) + "%)";
+  if (!r.measure) return why;
+  std::ifstream fm(mine.measure), fr(ref.measure);
+  const nlohmann::json jm = nlohmann::json::parse(fm), jr = nlohmann::json::parse(fr);
+  for (const char* figure : {"misclassified_pct", "leak_pct", "false_shadow_pct"}) {
+    const double vm = jm.at("hard").at(figure).get<double>(), vr = jr.at("hard").at(figure).get<double>();
+    if (std::abs(vm - vr) > r.figureTolerance)
+      why += std::string("\n  ") + figure + "  expected " + grading::show(vr) + ", actual " + grading::show(vm) +
+             " (tolerance " + grading::show(r.figureTolerance) + " points, against Embree ground truth)";
+  }
+  return why;
+}
+
+grading::CaseResult renderCase(const Options& o, const std::string& lesson, const GlslRender& r, int index) {
+  grading::CaseResult c;
+  c.name = r.name;
+  c.exercise = grading::exerciseOf(r.name);
+  c.file = "tests/grading/glsl_grader.cpp";
+  c.hidden = r.hidden;
+  c.stub = glslStubPresent(lesson, c.exercise);
+  const fs::path dir = o.images.empty() ? fs::temp_directory_path() / ("shadowlab_render_" + std::to_string(getpid()))
+                                        : fs::path(o.images);
+  const fs::path caseDir = dir / (lesson + "_render_" + std::to_string(index));
+  fs::create_directories(caseDir);
+  const Render mine = renderLesson(o, r, true, caseDir), ref = renderLesson(o, r, false, caseDir);
+  const std::string what = "lesson " + lesson + commandLine(r) + ", impl=student against impl=reference (320x180)";
+  if (ref.exit != 0)
+    c.output = what + "\n  the reference run failed (a grader bug), exit " + std::to_string(ref.exit) + ": " + ref.log;
+  else if (mine.exit != 0)
+    c.output = what + "\n  your run failed, exit " + std::to_string(mine.exit) + ":\n" + mine.log;
+  else c.output = compareRenders(r, mine, ref);
+  c.passed = c.output.empty();
+  if (!c.passed && c.output.rfind("lesson ", 0) != 0) {
+    savePng((caseDir / "difference.png").string(), diffImage(loadImage(mine.png, 3), loadImage(ref.png, 3), 4.0f));
+    c.output = what + c.output + "\n  images: " + caseDir.string() + "/{student,reference,difference}.png";
+  }
+  if (o.images.empty()) fs::remove_all(dir);
+  return c;
+}
+
+grading::RunResult grade(const Options& o, const std::string& lesson) {
+  std::optional<GlslExerciseSet> set = glslExercises(lesson, /*withHidden=*/true);
+  grading::RunResult run;
+  run.suite = "grade_ex" + lesson.substr(0, 2) + "_glsl";
+  run.seed = grading::seed();
+  if (!set) return run;
+  auto selected = [&](const std::string& name) {
+    return o.exercise.empty() || grading::exerciseOf(name) == o.exercise;
+  };
+  std::erase_if(set->cases, [&](const GlslCase& c) { return !selected(c.name); });
+  std::erase_if(set->renders, [&](const GlslRender& r) { return !selected(r.name); });
+  if (!set->cases.empty()) {
+    auto context = createHeadlessContext({64, 64, "GLSL cases", false, false});
+    run.cases = runGlslCases(*set).cases;
+  }
+  for (std::size_t i = 0; i < set->renders.size(); ++i)
+    run.cases.push_back(renderCase(o, lesson, set->renders[i], int(i)));
+  run.testCasesRun = int(run.cases.size());
+  return run;
+}
+
+void print(const grading::RunResult& run) {
+  int failed = 0;
+  for (const grading::CaseResult& c : run.cases) {
+    if (c.passed) continue;
+    ++failed;
+    std::cout << "===============================================================================\n"
+              << "FAILED: " << c.name << (c.hidden ? " [hidden]" : "") << "\n"
+              << c.output << "\n";
+  }
+  std::cout << "===============================================================================\n"
+            << "[shadowlab] GLSL cases: " << run.cases.size() << " | " << run.cases.size() - failed << " passed | "
+            << failed << " failed (seed " << run.seed << ")\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (int e = parse(argc, argv, o)) return e;
+  if (const char* env = std::getenv("SHADOWLAB_SEED")) grading::setSeed(std::strtoull(env, nullptr, 10));
+  const std::string lesson = SHADOWLAB_GLSL_LESSON;
+  std::string error;
+  const std::string root = stageRoot(o.student, lesson, error);
+  if (!error.empty()) {
+    std::cerr << "grade_glsl: " << error << "\n";
+    return 2;
+  }
+  if (!root.empty()) setenv("SHADOWLAB_ROOT", root.c_str(), 1);
+  const grading::RunResult run = grade(o, lesson);
+  if (!root.empty()) fs::remove_all(root);
+  print(run);
+  if (!grading::writeReports(o.reports, {run}, std::cerr)) return 1;
+  if (run.cases.empty()) {
+    std::cerr << "[shadowlab] no GLSL case ran" << (o.exercise.empty() ? "" : " for exercise " + o.exercise) << "\n";
+    return 1;
+  }
+  if (o.expectStubsScoreZero) return grading::stubsScoreZero({run}, std::cout, std::cerr) ? 0 : 1;
+  for (const grading::CaseResult& c : run.cases)
+    if (!c.passed) return 1;
+  return 0;
+}

@@ -1,0 +1,79 @@
+// grade_report --out DIR [--build-failed=LOG] RESULTS.json...
+//
+// Merges the results files that graders write (--results-json: grade_exNN, grade_exNN_glsl) into
+// one grade. --build-failed=LOG applies to the next file: a run of the reference grader standing
+// in for a student's grader that did not compile; each of its cases counts as failed, with LOG
+// (the compiler's errors) as the reason. The grade: DIR/score.json (per exercise, public and hidden cases, points,
+// seeds), DIR/junit.xml and DIR/results.json, the file Gradescope's autograder reads. Prints one line per exercise.
+// Exit 0 when written (whatever the score), 1 on an unreadable or malformed results file, 2 on
+// bad usage.
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "grading/report.hpp"
+
+using namespace shadowlab::grading;
+
+namespace {
+// The student's grader did not build: every case fails with the compiler's first errors.
+void failAll(RunResult& run, const std::string& logPath) {
+  std::ifstream in(logPath);
+  std::string text, line;
+  for (int n = 0; n < 40 && std::getline(in, line); ++n) text += line + "\n";
+  run.suite += " (did not compile)";
+  for (CaseResult& c : run.cases) {
+    c.passed = false;
+    c.stub = false;
+    c.output = "your exercises.cpp does not compile, so no case could run:\n" + text;
+  }
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string out, failedLog;
+  std::vector<std::pair<std::string, std::string>> inputs;  // results file, build log ("" when it built)
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--out" && i + 1 < argc) out = argv[++i];
+    else if (a.rfind("--build-failed=", 0) == 0) failedLog = a.substr(15);
+    else if (a.rfind("--", 0) == 0) {
+      std::cerr << "grade_report: unknown flag '" << a << "'; valid: --out DIR, --build-failed=LOG\n";
+      return 2;
+    } else {
+      inputs.push_back({a, failedLog});
+      failedLog.clear();
+    }
+  }
+  if (out.empty() || inputs.empty()) {
+    std::cerr << "usage: grade_report --out DIR RESULTS.json...\n";
+    return 2;
+  }
+  std::vector<RunResult> runs;
+  for (const auto& [path, log] : inputs) {
+    std::ifstream in(path);
+    if (!in) {
+      std::cerr << "grade_report: cannot read " << path << "\n";
+      return 1;
+    }
+    try {
+      for (RunResult& r : runsFromJson(Json::parse(in))) {
+        if (!log.empty()) failAll(r, log);
+        runs.push_back(std::move(r));
+      }
+    } catch (const std::exception& e) {
+      std::cerr << "grade_report: " << path << ": not a results file (" << e.what() << ")\n";
+      return 1;
+    }
+  }
+  if (!writeReports({"", out + "/score.json", out + "/junit.xml", out + "/results.json"}, runs, std::cerr)) return 1;
+  const Grade g = grade(runs);
+  for (const ExerciseGrade& e : g.exercises)
+    std::cout << "exercise " << e.id << ": " << e.points << " / " << e.maxPoints << " points, "
+              << e.passed + e.hiddenPassed << " of " << e.cases() << " cases (" << e.hiddenPassed + e.hiddenFailed
+              << " hidden)" << (e.stub ? ", still a stub" : "") << "\n";
+  std::cout << "score " << g.points << " / " << g.maxPoints << "; " << out
+            << "/{score.json, junit.xml, results.json}\n";
+  return 0;
+}

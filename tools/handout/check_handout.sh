@@ -1,0 +1,167 @@
+#!/usr/bin/env bash
+# The student handout's properties, as the tests (tests/handout.cmake) check them:
+#   check_handout.sh bodies HANDOUT_DIR      no line of a reference implementation is in the handout
+#   check_handout.sh leak WORK_DIR           the check above can fail: a folder holding one
+#                                            reference file of each kind must fail it
+#   check_handout.sh build TARBALL WORK_DIR  the tarball, unpacked where the full tree is not,
+#                                            builds with `make build`, points nowhere into the full
+#                                            tree, runs every lesson with impl=reference, and
+#                                            passes its own unit and grader-validity tests
+#   check_handout.sh grade SUBMISSION OUT_DIR WANT
+#                                            grades SUBMISSION with the instructor's grader
+#                                            (grade_submission.sh) and checks the grade: WANT=zero
+#                                            (every case fails) or WANT=full (every case passes),
+#                                            hidden cases among them; SUBMISSION=reference grades
+#                                            the reference solutions (exNN_reference.cpp and
+#                                            exercises_reference.glsl in the student's places)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+cd "$root"
+
+# A line as compared: comments and surrounding space dropped, inner space collapsed.
+normalize() { sed -E 's|//.*$||; s/^[[:space:]]+//; s/[[:space:]]+$//; s/[[:space:]]+/ /g'; }
+
+# The reference implementations: the bodies of the functions the reference exercises call
+# (tests/grading/exNN_reference.cpp -> common/algorithms), those files' own bodies, and the sealed
+# shader files; every line of them long enough to be an answer rather than a brace or a loop head.
+referenceFunctions() {
+  grep -ohE '\b(lighting|shadow|volume|sampling|psm|soft|hybrid)::[A-Za-z_]+\(' tests/grading/ex*_reference.cpp |
+    sed -E 's/.*::([A-Za-z_]+)\(/\1/' | sort -u
+}
+bodyOf() {  # bodyOf NAME FILE...: the lines inside the braces of NAME's definitions
+  awk -v name="$1" '
+    !inside && $0 ~ "^[A-Za-z].*[ :*&]" name "\\(" && $0 !~ /;[[:space:]]*$/ { start = 1 }
+    start || inside {
+      line = $0
+      opens = gsub(/\{/, "{", line); closes = gsub(/\}/, "}", line)
+      if (inside) print
+      depth += opens - closes
+      if (opens > 0 && !inside) { inside = 1; start = 0 }
+      if (inside && depth <= 0) { inside = 0; depth = 0 }
+    }' "${@:2}"
+}
+fingerprints() {
+  local sources sealed f
+  sources=$(git ls-files 'common/algorithms/*.cpp')
+  for f in $(referenceFunctions); do bodyOf "$f" $sources; done >"$work.bodies"
+  bodyOf '[A-Za-z_]+' tests/grading/ex*_reference.cpp >>"$work.bodies"
+  sealed=$(sed -E 's/#.*//; s/^\s+|\s+$//g' tools/handout/sealed_shaders.txt | grep . | sed 's|^|shaders/|')
+  # shellcheck disable=SC2086
+  bodyOf '[A-Za-z_]+' $sealed >>"$work.bodies"
+  normalize <"$work.bodies" | awk 'length($0) >= 24' | grep -vE '^(for \(|\}|if \(.*\) (continue|break);$)' |
+    sort -u | comm -23 - <(grep -vE '^\s*(#|$)' tools/handout/allowed_lines.txt | sed -E 's/[[:space:]]+#=.*$//' | normalize | sort -u)
+}
+
+bodies() {
+  local handout=$1 found=0
+  work=$handout
+  fingerprints >"$handout.fingerprints"
+  echo "$(wc -l <"$handout.fingerprints") lines of reference implementations to look for"
+  while IFS= read -r -d '' f; do
+    if grep -qI . "$f" 2>/dev/null; then normalize <"$f"; else strings -n 8 "$f" | normalize; fi |
+      sort -u | comm -12 - "$handout.fingerprints" | sed "s|^|${f#"$handout"/}: |"
+  done < <(find "$handout" -type f -print0) >"$handout.matches"
+  found=$(wc -l <"$handout.matches")
+  if [ "$found" -gt 0 ]; then
+    echo "FAIL: $found reference line(s) in the handout:"
+    head -40 "$handout.matches"
+    exit 1
+  fi
+  echo "no reference line in $(find "$handout" -type f | wc -l) files (libraries' strings included)"
+}
+
+build() {
+  local tarball=$1 work=$2
+  rm -rf "$work"
+  mkdir -p "$work"
+  tar -xzf "$tarball" -C "$work"
+  local tree=$work/shadowlab
+  [ ! -d "$tree/common/algorithms/psm" ] || [ -z "$(ls "$tree"/common/algorithms/*.cpp 2>/dev/null)" ] ||
+    { echo "FAIL: algorithm sources in the handout"; exit 1; }
+  (cd "$tree" && make build JOBS="${JOBS:-2}") >"$work/build.log" 2>&1 || { tail -30 "$work/build.log"; exit 1; }
+  if grep -rlF "$root" "$tree/build/default" --include=CMakeCache.txt --include=build.ninja \
+       --include=compile_commands.json >/dev/null; then
+    echo "FAIL: the handout's build refers to the full tree ($root)"
+    exit 1
+  fi
+  local bin=$tree/build/default/bin n=0
+  for lesson in "$bin"/lesson_[0-9]*; do
+    env -u SHADOWLAB_ROOT SHADOWLAB_STRICT_GL=1 "$lesson" --headless --frames 2 --size 320x180 \
+      --set impl=reference --screenshot "$work/$(basename "$lesson").png" >/dev/null ||
+      { echo "FAIL: $(basename "$lesson") does not run in the handout"; exit 1; }
+    n=$((n + 1))
+  done
+  (cd "$tree/build/default" && ctest -L 'unit|validity' -j "${JOBS:-2}" --output-on-failure) >"$work/ctest.log" 2>&1 ||
+    { tail -40 "$work/ctest.log"; exit 1; }
+  echo "the handout built from $tarball, ran $n lessons with impl=reference and passed its $(grep -o '[0-9]* tests passed\|out of [0-9]*' "$work/ctest.log" | tail -1) unit and validity tests"
+}
+
+score() {
+  local out=$1 want=$2
+  local json=$out/score.json
+  [ -f "$json" ] || { echo "FAIL: no $json"; exit 1; }
+  local points max cases failed hidden
+  points=$(grep -m1 '"score"' "$json" | grep -oE '[0-9.]+')
+  max=$(grep -m1 '"max_score"' "$json" | grep -oE '[0-9.]+')
+  cases=$(grep -m1 '"cases"' "$json" | grep -oE '[0-9]+')
+  failed=$(grep -m1 '"cases_failed"' "$json" | grep -oE '[0-9]+')
+  hidden=$(grep -o '"hidden_passed": [0-9]*\|"hidden_failed": [0-9]*' "$json" | grep -oE '[0-9]+' | awk '{s += $1} END {print s + 0}')
+  echo "score $points / $max, $failed of $cases cases failed, $hidden hidden"
+  [ "$hidden" -gt 0 ] || { echo "FAIL: no hidden case ran"; exit 1; }
+  case $want in
+    zero) [ "$failed" = "$cases" ] && awk -v p="$points" 'BEGIN {exit !(p == 0)}' || { echo "FAIL: expected 0 points"; exit 1; } ;;
+    full) [ "$failed" = 0 ] && awk -v p="$points" -v m="$max" 'BEGIN {exit !(p == m && m > 0)}' || { echo "FAIL: expected full marks"; exit 1; } ;;
+    *) echo "usage: score OUT_DIR zero|full" >&2; exit 2 ;;
+  esac
+}
+
+reference_submission() {
+  local dir=$1 ref nn lesson
+  rm -rf "$dir"
+  for ref in tests/grading/ex*_reference.cpp; do
+    nn=$(basename "$ref" | sed -E 's/ex([0-9]+)_reference.cpp/\1/')
+    lesson=$(basename "$(ls -d lessons/${nn}_*)")
+    mkdir -p "$dir/lessons/$lesson"
+    cp "$ref" "$dir/lessons/$lesson/exercises.cpp"
+  done
+  for ref in shaders/*/exercises_reference.glsl; do
+    lesson=$(basename "$(dirname "$ref")")
+    mkdir -p "$dir/shaders/$lesson"
+    cp "$ref" "$dir/shaders/$lesson/exercises.glsl"
+  done
+}
+
+grade() {
+  local submission=$1 out=$2 want=$3
+  if [ "$submission" = reference ]; then
+    submission=$out.submission
+    reference_submission "$submission"
+  fi
+  bash tools/grading/grade_submission.sh "$submission" "$out" >"$out.log" 2>&1 || { cat "$out.log"; exit 1; }
+  tail -3 "$out.log"
+  score "$out" "$want"
+}
+
+leak() {
+  local dir=$1/leaky f
+  for f in common/algorithms/lighting.cpp shaders/02_shadow_maps/exercises_reference.glsl tests/grading/ex09_reference.cpp; do
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    cp "$f" "$dir/"
+    if (bodies "$dir" >/dev/null); then
+      echo "FAIL: a handout holding $f passed the check"
+      exit 1
+    fi
+    echo "a handout holding $f fails the check ($(wc -l <"$dir.matches") reference lines found)"
+  done
+}
+
+cmd=${1:-}
+shift || true
+case $cmd in
+  bodies) bodies "$@" ;;
+  leak) leak "$@" ;;
+  build) build "$@" ;;
+  grade) grade "$@" ;;
+  *) echo "usage: check_handout.sh bodies DIR | build TARBALL WORK | grade SUBMISSION|reference OUT zero|full" >&2; exit 2 ;;
+esac

@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# make handout [HANDOUT=DIR]: the student tree, DIR/shadowlab and DIR/shadowlab-student.tar.gz
+# (default DIR: out/handout). It builds and runs with the same two commands as this tree (make run,
+# make test), every lesson works with impl=reference, and no reference implementation is there
+# as source:
+#   - the taught algorithms (common/algorithms), the reference exercises (tests/grading/exNN_
+#     reference.cpp) and the sealed shader files (tools/handout/sealed_shaders.txt) are compiled
+#     into lib/*.a (Release, debug information stripped; the shaders obscured, see
+#     core/sealed_files.hpp), their source left out;
+#   - tools/handout/exclude.txt lists what else stays in the instructor's tree: the hidden cases,
+#     the references' own unit tests, this script and the submission grader.
+# Only files git tracks go in (no build folders, no node_modules).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+out=${1:-$root/out/handout}
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+tree=$out/shadowlab
+libbuild=$root/build/handout-lib
+cd "$root"
+
+# ---- 1. the libraries ---------------------------------------------------------------------------
+echo "handout: building the prebuilt libraries in $libbuild"
+cmake -S "$root" -B "$libbuild" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHADOWLAB_UNIT_ONLY=ON >/dev/null
+refs=$(ls tests/grading/ex*_reference.cpp | sed -E 's|.*/ex([0-9]+)_reference\.cpp|shadowlab_ex\1_reference|')
+# shellcheck disable=SC2086
+cmake --build "$libbuild" --target shadowlab_algorithms shadowlab_sealed $refs >/dev/null
+
+# ---- 2. the tree: tracked files minus the exclusions ------------------------------------------
+patterns=()
+while IFS= read -r line; do
+  line=${line%%#*}
+  line=$(echo "$line" | xargs)
+  [ -n "$line" ] && patterns+=("$line")
+done < tools/handout/exclude.txt
+while IFS= read -r line; do
+  line=${line%%#*}
+  line=$(echo "$line" | xargs)
+  [ -n "$line" ] && patterns+=("shaders/$line")
+done < tools/handout/sealed_shaders.txt
+
+excluded() {
+  local f=$1 p
+  for p in "${patterns[@]}"; do
+    # shellcheck disable=SC2053
+    [[ $f == $p ]] && return 0
+  done
+  return 1
+}
+
+rm -rf "$tree"
+mkdir -p "$tree/lib"
+kept=0 left=0
+while IFS= read -r -d '' f; do
+  [ -e "$f" ] || continue  # deleted in the working tree
+  if excluded "$f"; then
+    left=$((left + 1))
+    continue
+  fi
+  mkdir -p "$tree/$(dirname "$f")"
+  cp -p "$f" "$tree/$f"
+  kept=$((kept + 1))
+done < <(git ls-files -z)
+
+# ---- 3. the libraries into lib/, without debug information ------------------------------------
+for t in shadowlab_algorithms shadowlab_sealed $refs; do
+  a=$(find "$libbuild" -name "lib$t.a" | head -1)
+  [ -n "$a" ] || { echo "handout: lib$t.a was not built" >&2; exit 1; }
+  cp "$a" "$tree/lib/"
+  strip --strip-debug "$tree/lib/lib$t.a"
+done
+cat > "$tree/lib/README.md" <<'TXT'
+# Prebuilt libraries of the student handout
+
+The course's reference implementations, compiled: `libshadowlab_algorithms.a` (common/algorithms:
+the lighting model, shadow-map maths, shadow volumes, texture sampling, PSM), the reference
+exercises `libshadowlab_exNN_reference.a` (the graders' proof of validity and the GLSL graders'
+lesson builds) and `libshadowlab_sealed.a` (the reference GLSL, which the shader preprocessor finds
+when the file is absent). CMake links them instead of the sources, which this handout leaves out.
+Built for Debian 12 / Ubuntu 22.04+ (x86-64, GCC's libstdc++).
+TXT
+
+# ---- 4. the tarball ---------------------------------------------------------------------------
+tar -czf "$out/shadowlab-student.tar.gz" -C "$out" shadowlab
+echo "handout: $tree ($kept files, $left left out, $(du -sh "$tree" | cut -f1)); $out/shadowlab-student.tar.gz ($(du -h "$out/shadowlab-student.tar.gz" | cut -f1))"
