@@ -59,7 +59,8 @@ M: ground truth (leaks red, false shadows blue; aliasing m). O: god view.)";
 psm::PostProjectiveLight studentLight(const glm::dmat4& viewProj, const glm::dvec4& light) {
   const glm::dvec4 r = ex08::postProjectiveLight(viewProj, light);
   psm::PostProjectiveLight out;
-  out.homogeneous = viewProj * light;
+  // The student's answer as a homogeneous point, h / |h.w|: the same point, on the same side.
+  out.homogeneous = r.w == 0.0 ? glm::dvec4(glm::dvec3(r), 0.0) : glm::dvec4(glm::dvec3(r) * r.w, r.w);
   const glm::dvec3 p(r);
   const double len = glm::length(p);
   if (r.w == 0.0 || !(len > 0.0) || !std::isfinite(len)) {  // a direction (or nonsense: one, finite)
