@@ -9,6 +9,8 @@ namespace shadowlab {
 
 // SHADOWLAB_ROOT if set and non-empty, else the configure-time source tree.
 std::string sourceRoot();
+// The configure-time source tree, whatever SHADOWLAB_ROOT says (reports name files relative to it).
+std::string configuredSourceRoot();
 // sourceRoot() + "/shaders": the include directory for every GLSL program.
 std::string shaderRoot();
 // sourceRoot() + "/textures".

@@ -8,6 +8,7 @@
 #include <functional>
 #include <sstream>
 
+#include "core/paths.hpp"
 #include "grading/stub.hpp"
 
 namespace shadowlab::grading {
@@ -123,8 +124,13 @@ std::string exerciseOf(const std::string& name) {
 }
 
 std::string repositoryRelative(const std::string& path) {
-  const std::string root = std::string(SHADOWLAB_SOURCE_ROOT) + "/";
-  return path.rfind(root, 0) == 0 ? path.substr(root.size()) : path;
+  const std::string root = configuredSourceRoot() + "/";
+  if (path.rfind(root, 0) == 0) return path.substr(root.size());
+  if (path.empty() || path.front() == '/') return path;
+  std::size_t start = 0;
+  while (path.compare(start, 2, "./") == 0 || path.compare(start, 3, "../") == 0)
+    start += path.compare(start, 2, "./") == 0 ? 2 : 3;
+  return path.substr(start);
 }
 
 const RunResult& lastRun() { return g_run; }

@@ -40,6 +40,8 @@ std::uint64_t seedFor(const std::string& salt);
 // "ex01.1: head-on light" -> "01.1"; "" for a name that is not an exercise case.
 std::string exerciseOf(const std::string& caseName);
 // A path under the source tree, relative to it ("tests/grading/ex01_tests.cpp"); others unchanged.
+// A relative path loses its leading "./" and "../" (compiled through ccache, __FILE__ is relative
+// to the build folder inside the tree: "../../tests/grading/ex01_tests.cpp").
 std::string repositoryRelative(const std::string& path);
 
 // The cases of the latest doctest run in this process, in the order they ran.

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "app/context.hpp"
+#include "core/paths.hpp"
 #include "gl/debug.hpp"
 #include "technique/hybrid_build.hpp"
 #include "test_support.hpp"
@@ -162,9 +163,9 @@ void main() {
 std::vector<std::uint32_t> probe(const tech::HybridMapGpu& map) {
   const fs::path root = fs::temp_directory_path() / "shadowlab_hybrid_probe";
   fs::create_directories(root / "shaders/common");
-  fs::copy_file(fs::path(SHADOWLAB_SOURCE_ROOT) / "shaders/common/hybrid_descent.glsl",
+  fs::copy_file(fs::path(configuredSourceRoot()) / "shaders/common/hybrid_descent.glsl",
                 root / "shaders/common/hybrid_descent.glsl", fs::copy_options::overwrite_existing);
-  fs::copy_file(fs::path(SHADOWLAB_SOURCE_ROOT) / "shaders/common/fullscreen.vert",
+  fs::copy_file(fs::path(configuredSourceRoot()) / "shaders/common/fullscreen.vert",
                 root / "shaders/common/fullscreen.vert", fs::copy_options::overwrite_existing);
   std::ofstream(root / "shaders/probe.frag") << kProbe;
   setenv("SHADOWLAB_ROOT", root.c_str(), 1);

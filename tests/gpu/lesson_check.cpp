@@ -3,7 +3,7 @@
 //                [--root DIR] [--all-presets] -- ARGS...
 // --png: the file must be a valid PNG that is not blank (not one uniform colour).
 // --root: run with SHADOWLAB_ROOT=DIR (a doctored source tree: a missing shader or texture).
-// --without REL: run against a copy of the source tree (SHADOWLAB_SOURCE_ROOT) with REL removed,
+// --without REL: run against a copy of the source tree (configuredSourceRoot()) with REL removed,
 //   to prove a missing shader or texture is reported by name and never crashes.
 // --write REL TEXT: like --without, but REL is replaced by TEXT (a malformed preset file...).
 // --all-presets: run once per preset (from --list-presets), each with --preset NAME added.
@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "core/paths.hpp"
 #include "core/process.hpp"
 
 namespace fs = std::filesystem;
@@ -139,7 +140,7 @@ int main(int argc, char** argv) {
         fs::remove_all(copy);
         fs::create_directories(copy);
         for (const char* dir : {"shaders", "textures", "lessons"})
-          fs::copy(fs::path(SHADOWLAB_SOURCE_ROOT) / dir, copy / dir, fs::copy_options::recursive);
+          fs::copy(fs::path(shadowlab::configuredSourceRoot()) / dir, copy / dir, fs::copy_options::recursive);
       }
       const fs::path target = copy / argv[++i];
       if (!fs::exists(target)) {

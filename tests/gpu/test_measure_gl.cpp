@@ -28,7 +28,7 @@ TEST_CASE("measure (GPU): m from shader derivatives matches a texel mapping know
   const fs::path root = fs::temp_directory_path() / "shadowlab_measure_gl_test";
   fs::remove_all(root);
   fs::create_directories(root / "shaders/t");
-  fs::copy(fs::path(SHADOWLAB_SOURCE_ROOT) / "shaders/common", root / "shaders/common", fs::copy_options::recursive);
+  fs::copy(fs::path(configuredSourceRoot()) / "shaders/common", root / "shaders/common", fs::copy_options::recursive);
   std::ofstream(root / "shaders/t/quad.vert") << "#version 410 core\nout vec2 vUv;\nvoid main() {\n"
                                                  "  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);\n  vUv = "
                                                  "p;\n  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);\n}\n";

@@ -20,6 +20,12 @@ inline std::uint64_t seed() { return grading::seed(); }
 // A seed derived from the run's seed and a case-local salt, so cases stay independent.
 inline std::uint64_t seedFor(const std::string& salt) { return grading::seedFor(salt); }
 
+// The source tree and the unit tests' fixtures (tests/data) as configured, not moved by
+// SHADOWLAB_ROOT. The absolute paths reach only test_paths.cpp, so every other test file compiles
+// the same in any checkout (a compiler-cache hit from another one; see the top-level CMakeLists.txt).
+std::string sourceTree();
+std::string testData();
+
 // A uniformly distributed unit vector.
 inline glm::vec3 randomUnit(std::mt19937_64& rng) {
   std::normal_distribution<float> n;

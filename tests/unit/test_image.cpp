@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/image.hpp"
+#include "test_support.hpp"
 
 using namespace shadowlab;
 
@@ -156,7 +157,7 @@ TEST_CASE("image: load and save errors name the path and the reason") {
 TEST_CASE("image: the fuzzing finds are refused with one line naming the file and the reason") {
   // tests/fuzz/image/regressions: each crashed, misread or exhausted memory through stb_image 2.27
   // (which guessed the format from the content), or is a PNG that must not load.
-  const std::string dir = SHADOWLAB_SOURCE_ROOT "/tests/fuzz/image/regressions/";
+  const std::string dir = test::sourceTree() + "/tests/fuzz/image/regressions/";
   const std::pair<const char*, const char*> cases[] = {
       {"pic_truncated_segv.png",
        "a PIC file (111 bytes); the course reads PNG only (convert it to PNG)"},  // segfaulted
@@ -184,7 +185,7 @@ TEST_CASE("image: the fuzzing finds are refused with one line naming the file an
 }
 
 TEST_CASE("image: every PNG colour type and depth decodes, converted to the channels asked for") {
-  const std::string dir = SHADOWLAB_SOURCE_ROOT "/tests/fuzz/image/seeds/";
+  const std::string dir = test::sourceTree() + "/tests/fuzz/image/seeds/";
   const std::pair<const char*, int> files[] = {
       {"grey1.png", 1}, {"grey8.png", 1},  {"grey16.png", 1},       {"grey_alpha.png", 2},   {"rgb8.png", 3},
       {"rgba8.png", 4}, {"rgba16.png", 4}, {"palette_trns.png", 4}, {"rgb_trns_text.png", 4}};

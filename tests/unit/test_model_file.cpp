@@ -17,8 +17,8 @@ using namespace shadowlab;
 
 namespace {
 
-const std::string kModels = SHADOWLAB_TEST_DATA "/models/";
-const std::string kObj = SHADOWLAB_TEST_DATA "/obj/";
+const std::string kModels = test::testData() + "/models/";
+const std::string kObj = test::testData() + "/obj/";
 
 // The message of the ModelError loading `path` raises, or "" when it loads.
 std::string loadError(const std::string& path) {
@@ -239,7 +239,7 @@ TEST_CASE("model: the OBJ fixtures of the former hand-written parser load the sa
 }
 
 TEST_CASE("model: the libFuzzer regressions of the OBJ parser load with finite numbers or are refused") {
-  const std::string dir = SHADOWLAB_SOURCE_ROOT "/tests/fuzz/obj/regressions/";
+  const std::string dir = test::sourceTree() + "/tests/fuzz/obj/regressions/";
   const char* refused[] = {"exponent_nan.obj", "float_overflow_inf.obj", "sign_sign.obj"};
   const char* loaded[] = {"concave_pentagon.obj", "quad_without_area.obj", "trailing_comment.obj", "uv_nan.obj"};
   for (const char* file : refused) {

@@ -12,6 +12,7 @@
 
 #include "core/mesh_gen.hpp"
 #include "core/scene_gen.hpp"
+#include "test_support.hpp"
 
 using namespace shadowlab;
 
@@ -27,8 +28,7 @@ void checkConsistent(const Scene& scene) {
     badMatrices += o.model[3][3] != 1.0f;  // affine placements only
   }
   for (const Material& m : scene.materials)
-    if (!m.texture.empty())
-      missingTextures += !std::filesystem::exists(std::string(SHADOWLAB_SOURCE_ROOT "/textures/") + m.texture);
+    if (!m.texture.empty()) missingTextures += !std::filesystem::exists(test::sourceTree() + "/textures/" + m.texture);
   CHECK(badRefs == 0);
   CHECK(badMatrices == 0);
   CHECK(missingTextures == 0);

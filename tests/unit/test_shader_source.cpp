@@ -5,6 +5,7 @@
 
 #include "core/paths.hpp"
 #include "core/shader_source.hpp"
+#include "test_support.hpp"
 
 #include <unistd.h>
 
@@ -375,7 +376,7 @@ TEST_CASE("shader source: dependenciesChanged sees edits and deletions of any fi
 }
 
 TEST_CASE("shader source: the sample fixtures expand with correct numbering and include-once") {
-  const std::string root = std::string(SHADOWLAB_TEST_DATA) + "/shaders";
+  const std::string root = test::testData() + "/shaders";
   const ShaderSource frag = loadShaderSource(root + "/sample.frag", {});
   // sample_common.glsl is included directly and again by sample_shadow.glsl: expanded once.
   REQUIRE(frag.files.size() == 3);
@@ -446,9 +447,9 @@ TEST_CASE("shader source: the stage comes from the extension") {
 TEST_CASE("paths: SHADOWLAB_ROOT overrides the configure-time source root") {
   {
     ScopedEnv env("SHADOWLAB_ROOT", std::nullopt);
-    CHECK(sourceRoot() == SHADOWLAB_SOURCE_ROOT);
-    CHECK(shaderRoot() == std::string(SHADOWLAB_SOURCE_ROOT) + "/shaders");
-    CHECK(textureRoot() == std::string(SHADOWLAB_SOURCE_ROOT) + "/textures");
+    CHECK(sourceRoot() == test::sourceTree());
+    CHECK(shaderRoot() == test::sourceTree() + "/shaders");
+    CHECK(textureRoot() == test::sourceTree() + "/textures");
   }
   {
     ScopedEnv env("SHADOWLAB_ROOT", std::string("/opt/shadowlab"));
@@ -462,7 +463,7 @@ TEST_CASE("paths: SHADOWLAB_ROOT overrides the configure-time source root") {
   }
   {
     ScopedEnv env("SHADOWLAB_ROOT", std::string(""));  // set but empty: as if unset
-    CHECK(shaderRoot() == std::string(SHADOWLAB_SOURCE_ROOT) + "/shaders");
+    CHECK(shaderRoot() == test::sourceTree() + "/shaders");
   }
 }
 

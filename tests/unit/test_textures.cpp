@@ -8,6 +8,7 @@
 
 #include "core/image.hpp"
 #include "core/texture_gen.hpp"
+#include "test_support.hpp"
 
 using namespace shadowlab;
 
@@ -21,7 +22,7 @@ TEST_CASE("textures: committed PNGs are reproducible byte for byte") {
     INFO(name);
     CHECK((generated.width == 256 || generated.width == 512));
     CHECK(generated.height == generated.width);
-    const Image8 committed = loadImage(SHADOWLAB_SOURCE_ROOT "/textures/" + name, generated.channels);
+    const Image8 committed = loadImage(test::sourceTree() + "/textures/" + name, generated.channels);
     REQUIRE(committed.width == generated.width);
     REQUIRE(committed.height == generated.height);
     const ImageDiff diff = compareImages(committed, generated);
