@@ -8,6 +8,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libspng-dev doctest-dev libepoxy-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libgles-dev
   libembree-dev nlohmann-json3-dev
+  ccache  # compiler cache: the handout and grading tests compile the tree again (CMakeLists.txt)
   libassimp-dev  # model files (OBJ + MTL, glTF 2.0): --model, scene=model
   glslang-tools xvfb xauth
   clang-format  # the tree's one C++ style, checked by the test format.check

@@ -5,7 +5,7 @@
 # as source:
 #   - the taught algorithms (common/algorithms), the reference exercises (tests/grading/exNN_
 #     reference.cpp) and the sealed shader files (tools/handout/sealed_shaders.txt) are compiled
-#     into lib/*.a (Release, debug information stripped; the shaders obscured, see
+#     into lib/*.a (optimised as make build, debug information stripped; the shaders obscured, see
 #     core/sealed_files.hpp), their source left out;
 #   - tools/handout/exclude.txt lists what else stays in the instructor's tree: the hidden cases,
 #     the references' own unit tests, this script and the submission grader.
@@ -21,7 +21,9 @@ cd "$root"
 
 # ---- 1. the libraries ---------------------------------------------------------------------------
 echo "handout: building the prebuilt libraries in $libbuild"
-cmake -S "$root" -B "$libbuild" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHADOWLAB_UNIT_ONLY=ON >/dev/null
+# RelWithDebInfo as make build (the debug information is stripped below): the same compiles as
+# build/default, so with ccache (CMakeLists.txt) these are cache hits.
+cmake -S "$root" -B "$libbuild" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_UNIT_ONLY=ON >/dev/null
 refs=$(ls tests/grading/ex*_reference.cpp | sed -E 's|.*/ex([0-9]+)_reference\.cpp|shadowlab_ex\1_reference|')
 # shellcheck disable=SC2086
 cmake --build "$libbuild" --target shadowlab_algorithms shadowlab_sealed $refs >/dev/null
