@@ -275,6 +275,21 @@ class TextureFilteringLesson : public Lesson {
     return s;
   }
 
+  // scene.frag's modes (its UV_MODE, VIEW, ... defines, or the generic build's uniforms).
+  struct ShaderModes {
+    int uvMode, view, sampling, combine, channels;
+    bool normalMapping;
+  };
+  ShaderModes shaderModes() const {
+    const bool cpuView = p_.view == View::CpuReference || p_.view == View::Difference;
+    return {int(uvMode()) - 1,
+            cpuView ? 3 : std::min(int(p_.view), 2),
+            p_.texture == TexChoice::Volume ? 2 : int(p_.sampling),
+            int(p_.combine),
+            int(p_.channels),
+            p_.normalMap};
+  }
+
   // The scene's natural projection and its tiling: (repeats along u, along v).
   UvMode uvMode() const {
     if (p_.uv != UvMode::Auto) return p_.uv;
@@ -327,30 +342,36 @@ class TextureFilteringLesson : public Lesson {
     }
     glClear(GL_DEPTH_BUFFER_BIT);
     const glm::mat4 viewProj = camera.projection(float(w) / float(h)) * camera.view();
-    const bool cpuView = p_.view == View::CpuReference || p_.view == View::Difference;
-    program_.use();
-    program_.set("uViewProj", viewProj);
-    program_.set("uEye", camera.position());
-    program_.set("uUvMode", int(uvMode()) - 1);
-    program_.set("uUvScale", uvScale());
-    program_.set("uView", cpuView ? 3 : std::min(int(p_.view), 2));
-    program_.set("uSampling", p_.texture == TexChoice::Volume ? 2 : int(p_.sampling));
-    program_.set("uCombine", int(p_.combine));
-    program_.set("uChannels", int(p_.channels));
-    program_.set("uEnvColor", p_.envColor);
-    program_.set("uMaterial", glm::vec3(0.9f, 0.88f, 0.85f));
-    program_.set("uSky", sky);
-    program_.set("uNormalMapping", p_.normalMap);
-    program_.set("uLightPos",
-                 camera.target + glm::vec3(3.0f * std::cos(p_.lightAngle), 1.0f, 3.0f * std::sin(p_.lightAngle)));
-    glUniform2i(program_.location("uTexSize"), chain_[0].width, chain_[0].height);
-    program_.set("uLodBias", s.lodBias);
-    program_.set("uMaxAniso", float(gl::caps().anisotropic ? std::min(s.maxAniso, gl::caps().maxAnisotropy) : 1.0f));
-    program_.set("uSlice", p_.slice);
-    glUniform1iv(program_.location("uRipLevels"), 2,
+    // The modes as the shader's constants: one program per mode set (the generic build, driven by
+    // the same values as uniforms, draws while a new one compiles in a window).
+    const ShaderModes m = shaderModes();
+    gl::Program& program = program_.get(
+        {"UV_MODE " + std::to_string(m.uvMode), "VIEW " + std::to_string(m.view),
+         "SAMPLING " + std::to_string(m.sampling), "COMBINE " + std::to_string(m.combine),
+         "CHANNELS " + std::to_string(m.channels), "NORMAL_MAPPING " + std::to_string(int(m.normalMapping))});
+    program.use();
+    program.set("uUvMode", m.uvMode);
+    program.set("uView", m.view);
+    program.set("uSampling", m.sampling);
+    program.set("uCombine", m.combine);
+    program.set("uChannels", m.channels);
+    program.set("uNormalMapping", m.normalMapping);
+    program.set("uViewProj", viewProj);
+    program.set("uEye", camera.position());
+    program.set("uUvScale", uvScale());
+    program.set("uEnvColor", p_.envColor);
+    program.set("uMaterial", glm::vec3(0.9f, 0.88f, 0.85f));
+    program.set("uSky", sky);
+    program.set("uLightPos",
+                camera.target + glm::vec3(3.0f * std::cos(p_.lightAngle), 1.0f, 3.0f * std::sin(p_.lightAngle)));
+    glUniform2i(program.location("uTexSize"), chain_[0].width, chain_[0].height);
+    program.set("uLodBias", s.lodBias);
+    program.set("uMaxAniso", float(gl::caps().anisotropic ? std::min(s.maxAniso, gl::caps().maxAnisotropy) : 1.0f));
+    program.set("uSlice", p_.slice);
+    glUniform1iv(program.location("uRipLevels"), 2,
                  std::array<int, 2>{int(ripOffsetX_.size()), int(ripOffsetY_.size())}.data());
-    glUniform1iv(program_.location("uRipOffsetX"), GLsizei(ripOffsetX_.size()), ripOffsetX_.data());
-    glUniform1iv(program_.location("uRipOffsetY"), GLsizei(ripOffsetY_.size()), ripOffsetY_.data());
+    glUniform1iv(program.location("uRipOffsetX"), GLsizei(ripOffsetX_.size()), ripOffsetX_.data());
+    glUniform1iv(program.location("uRipOffsetY"), GLsizei(ripOffsetY_.size()), ripOffsetY_.data());
     const GLuint units[4] = {texture_.id(), normalMap_.id(), rip_.id(), volume_.id()};
     const GLenum targets[4] = {GL_TEXTURE_2D, GL_TEXTURE_2D, GL_TEXTURE_2D, GL_TEXTURE_3D};
     const char* names[4] = {"uTex", "uNormalMap", "uRip", "uVolume"};
@@ -358,7 +379,7 @@ class TextureFilteringLesson : public Lesson {
       glActiveTexture(GLenum(GL_TEXTURE0 + i));
       glBindTexture(targets[i], units[i]);
       glBindSampler(GLuint(i), i == 2 ? 0 : sampler_.id());  // the lesson's sampler object holds every mode
-      program_.set(names[i], i);
+      program.set(names[i], i);
     }
     glm::mat4 model(1.0f);
     const gl::GpuMesh* mesh = &ground_;
@@ -369,8 +390,8 @@ class TextureFilteringLesson : public Lesson {
       model = glm::translate(glm::mat4(1), glm::vec3(0, 1, 0));
       mesh = &sphere_;
     }
-    program_.set("uModel", model);
-    program_.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(model)));
+    program.set("uModel", model);
+    program.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(model)));
     mesh->draw();
     for (int i = 3; i >= 0; --i) {
       glActiveTexture(GLenum(GL_TEXTURE0 + i));

@@ -11,16 +11,33 @@ uniform sampler2D uTex;        // the filtered texture: its sampler object holds
 uniform sampler2D uNormalMap;  // tangent-space normals matching the bricks
 uniform sampler2D uRip;        // RIP map atlas, read with texelFetch (filtering done here)
 uniform sampler3D uVolume;     // 3D texture: a slice at r = uSlice
+// The modes: constants in a specialised build (the lesson defines UV_MODE, VIEW, ...; one program
+// per mode set, so a software renderer pays only the chosen path), uniforms in the generic one.
+#ifdef UV_MODE
+#define UV_MODE_ UV_MODE
+#define VIEW_ VIEW
+#define SAMPLING_ SAMPLING
+#define COMBINE_ COMBINE
+#define CHANNELS_ CHANNELS
+#define NORMAL_MAPPING_ (NORMAL_MAPPING != 0)
+#else
 uniform int uUvMode;           // 0 explicit, 1 planar, 2 cylindrical, 3 spherical
-uniform vec2 uUvScale;         // tiling
 uniform int uView;             // 0 shaded, 1 mip level, 2 anisotropy, 3 raw texture (CPU comparisons)
 uniform int uSampling;         // 0 hardware, 1 RIP map in this shader, 2 3D texture slice
 uniform int uCombine;          // 0 replace, 1 modulate, 2 blend
 uniform int uChannels;         // 0 rgb, 1 luminance, 2 alpha (luminance as coverage)
+uniform bool uNormalMapping;
+#define UV_MODE_ uUvMode
+#define VIEW_ uView
+#define SAMPLING_ uSampling
+#define COMBINE_ uCombine
+#define CHANNELS_ uChannels
+#define NORMAL_MAPPING_ uNormalMapping
+#endif
+uniform vec2 uUvScale;         // tiling
 uniform vec3 uEnvColor;        // the blend mode's constant colour C_c
 uniform vec3 uMaterial;        // C_f's diffuse colour
 uniform vec3 uSky;
-uniform bool uNormalMapping;
 uniform vec3 uLightPos;
 uniform vec3 uEye;
 uniform ivec2 uTexSize;
@@ -39,11 +56,11 @@ const float PI = 3.14159265358979;
 
 vec2 textureCoordinates() {
   vec3 p = vObjectPos;
-  if (uUvMode == 1) return p.xz;                                          // plane: (x, z)
+  if (UV_MODE_ == 1) return p.xz;                                          // plane: (x, z)
   float phi = atan(p.x, p.z);
   if (phi < 0.0) phi += 2.0 * PI;
-  if (uUvMode == 2) return vec2(phi / (2.0 * PI), p.y);                   // cylinder: (phi, y)
-  if (uUvMode == 3) return vec2(phi / (2.0 * PI), acos(clamp(p.y / max(length(p), 1e-6), -1.0, 1.0)) / PI);
+  if (UV_MODE_ == 2) return vec2(phi / (2.0 * PI), p.y);                   // cylinder: (phi, y)
+  if (UV_MODE_ == 3) return vec2(phi / (2.0 * PI), acos(clamp(p.y / max(length(p), 1e-6), -1.0, 1.0)) / PI);
   return vUv;
 }
 
@@ -98,21 +115,21 @@ void main() {
   fragDerivs = vec4(dx, dy);
 
   vec4 tex;
-  if (uSampling == 1) tex = sampleRip(uv, dx, dy);
-  else if (uSampling == 2) tex = texture(uVolume, vec3(uv, uSlice));
+  if (SAMPLING_ == 1) tex = sampleRip(uv, dx, dy);
+  else if (SAMPLING_ == 2) tex = texture(uVolume, vec3(uv, uSlice));
   else tex = texture(uTex, uv);
 
-  if (uView == 1) {  // mip level the hardware picks, over the texture's luminance
+  if (VIEW_ == 1) {  // mip level the hardware picks, over the texture's luminance
     fragColor = vec4(levelColour(hwLod.x) * (0.35 + 0.65 * dot(tex.rgb, vec3(0.333))), 1.0);
     return;
   }
-  if (uView == 2) {  // anisotropic probes N per EXT_texture_filter_anisotropic, colourised
+  if (VIEW_ == 2) {  // anisotropic probes N per EXT_texture_filter_anisotropic, colourised
     float px = length(dx * vec2(uTexSize)), py = length(dy * vec2(uTexSize));
     float n = min(ceil(max(px, py) / max(min(px, py), 1e-8)), uMaxAniso);
     fragColor = vec4(levelColour(log2(max(n, 1.0)) * 1.75) * (0.35 + 0.65 * dot(tex.rgb, vec3(0.333))), 1.0);
     return;
   }
-  if (uView == 3) {
+  if (VIEW_ == 3) {
     fragColor = vec4(tex.rgb, 1.0);
     return;
   }
@@ -121,7 +138,7 @@ void main() {
   vec3 N = normalize(vNormal);
   vec3 V = normalize(uEye - vWorldPos);
   if (dot(N, V) < 0.0) N = -N;
-  if (uNormalMapping) {
+  if (NORMAL_MAPPING_) {
     vec3 m = texture(uNormalMap, uv).xyz * 2.0 - 1.0;
     N = normalize(cotangentFrame(N, vWorldPos, uv) * m);
   }
@@ -134,15 +151,15 @@ void main() {
   // ---- combination with the material ([Tarantsev-L12], interaction with the material) ----
   vec3 ct = tex.rgb;
   float at = tex.a;
-  if (uChannels == 1) ct = vec3(dot(tex.rgb, vec3(0.299, 0.587, 0.114)));
-  if (uChannels == 2) {  // alpha only: colour from the material, coverage from the texture
+  if (CHANNELS_ == 1) ct = vec3(dot(tex.rgb, vec3(0.299, 0.587, 0.114)));
+  if (CHANNELS_ == 2) {  // alpha only: colour from the material, coverage from the texture
     at = dot(tex.rgb, vec3(0.299, 0.587, 0.114));
     ct = vec3(1.0);
   }
   vec3 c;
-  if (uCombine == 0) c = uChannels == 2 ? lit : ct;              // replace: the texture, no lighting
-  else if (uCombine == 1) c = lit * ct;                          // modulate
+  if (COMBINE_ == 0) c = CHANNELS_ == 2 ? lit : ct;              // replace: the texture, no lighting
+  else if (COMBINE_ == 1) c = lit * ct;                          // modulate
   else c = lit * (vec3(1.0) - ct) + uEnvColor * ct;               // blend: C_f (1 - C_t) + C_c C_t
-  if (uChannels == 2) c = mix(uSky, c, at);
+  if (CHANNELS_ == 2) c = mix(uSky, c, at);
   fragColor = vec4(c, 1.0);
 }
