@@ -21,6 +21,7 @@
 #include <imgui.h>
 
 #include "app/exercise_program.hpp"
+#include "app/footprint_reference.hpp"
 #include "app/lesson.hpp"
 #include "core/mesh_gen.hpp"
 #include "core/paths.hpp"
@@ -196,14 +197,8 @@ class TextureFilteringLesson : public Lesson {
 
   void resize(int w, int h) override {
     target_ = gl::makeFootprintTarget(w, h, true, "06 scene target");
-    cpuView_ = gl::uploadLevel(ImageF{w, h, 4, std::vector<float>(std::size_t(w) * h * 4)}, "06 cpu view");
-    cpuFbo_ = gl::makeFramebuffer("06 cpu view fbo");
-    glBindFramebuffer(GL_FRAMEBUFFER, cpuFbo_.id());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, cpuView_.id(), 0);
-    gl::requireComplete(GL_FRAMEBUFFER, "06 cpu view fbo");
-    ssTarget_ = {};
-    prevTest_.clear();
-    prevRef_.clear();
+    cpuView_.resize(w, h);
+    supersampled_.reset();
   }
 
   void update(const FrameInfo& f) override {
@@ -229,7 +224,7 @@ class TextureFilteringLesson : public Lesson {
     const bool cpuView = p_.view == View::CpuReference || p_.view == View::Difference;
     if (cpuView) {
       auto t = scope("cpu reference");
-      cpuReference(f);
+      cpuReference();
     }
     // ==== 4. error against a supersampled reference (the benchmark sweep) ===========================
     if (p_.measure) {
@@ -239,7 +234,7 @@ class TextureFilteringLesson : public Lesson {
     // ==== 5. to the screen, with the probe marked ==================================================
     {
       auto t = scope("present");
-      glBindFramebuffer(GL_READ_FRAMEBUFFER, cpuView ? cpuFbo_.id() : target_.fbo.id());
+      glBindFramebuffer(GL_READ_FRAMEBUFFER, cpuView ? cpuView_.framebuffer() : target_.fbo.id());
       glBindFramebuffer(GL_DRAW_FRAMEBUFFER, f.framebuffer);
       glBlitFramebuffer(0, 0, f.width, f.height, 0, 0, f.width, f.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
       glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer);
@@ -431,71 +426,40 @@ class TextureFilteringLesson : public Lesson {
         {"probe anisotropic", fmt("N = %.0f probes at lambda' = %.2f", fp.probes, fp.lambdaAniso + p_.lodBias)});
   }
 
-  // Samples every covered pixel's footprint (read back from the scene pass) on the CPU.
-  void cpuReference(const FrameInfo& f) {
-    const int w = f.width, h = f.height;
-    const std::vector<glm::vec4> uv = gl::readFloatPixels(target_.fbo.id(), 1, 0, 0, w, h);
-    const std::vector<glm::vec4> d = gl::readFloatPixels(target_.fbo.id(), 2, 0, 0, w, h);
-    const Image8 gpu = gl::readPixels(target_.fbo.id(), w, h);
+  // Samples every covered pixel's footprint (read back from the scene pass) on the CPU: the
+  // reference sampler, or with impl=student the LOD and trilinear filter of exercises.cpp.
+  void cpuReference() {
     const sampling::SamplerState s = samplerState();
-    Image8 out = gpu;
-    double sum = 0;
-    std::size_t count = 0;
+    const glm::ivec2 size(chain_[0].width, chain_[0].height);
+    FootprintReference::Sampler sampler = [&](glm::vec2 uv, glm::vec2 dx, glm::vec2 dy) {
+      if (p_.impl == Impl::Student)
+        return ex06::sampleTrilinear(chain_, uv, ex06::lodFromDerivatives(dx, dy, size) + s.lodBias);
+      return sampling::sample(chain_, uv, dx, dy, s);
+    };
     const bool volume = p_.texture == TexChoice::Volume;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        const std::size_t i = std::size_t(h - 1 - y) * w + x;  // GL rows are bottom first
-        if (uv[i].z < 0.5f || volume) continue;
-        const glm::vec2 dx(d[i].x, d[i].y), dy(d[i].z, d[i].w);
-        glm::vec4 c;
-        if (p_.impl == Impl::Student) {
-          const float lambda = ex06::lodFromDerivatives(dx, dy, {chain_[0].width, chain_[0].height}) + s.lodBias;
-          c = ex06::sampleTrilinear(chain_, {uv[i].x, uv[i].y}, lambda);
-        } else {
-          c = sampling::sample(chain_, {uv[i].x, uv[i].y}, dx, dy, s);
-        }
-        std::uint8_t* o = out.at(x, y);
-        const std::uint8_t* g = gpu.at(x, y);
-        for (int k = 0; k < 3; ++k) {
-          const int v = int(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255.0f));
-          sum += double(v - g[k]) * double(v - g[k]);
-          o[k] = std::uint8_t(p_.view == View::Difference ? std::min(255.0f, std::abs(float(v - g[k])) * p_.diffGain)
-                                                          : float(v));
-        }
-        ++count;
-      }
-    counters.push_back(
-        {"CPU vs GPU RMSE", volume ? std::string("n/a (3D texture)")
-                                   : fmt("%.2f of 255 over %.0f pixels",
-                                         std::sqrt(sum / std::max<double>(1, 3.0 * count)), double(count))});
-    Image8 flipped = out;  // back to GL's bottom-first rows for the texture
-    for (int y = 0; y < h; ++y) std::copy_n(out.at(0, h - 1 - y), std::size_t(w) * 4, flipped.at(0, y));
-    gl::updateLevel(cpuView_.id(), flipped);
+    const auto r = cpuView_.sample(target_, volume ? nullptr : sampler, p_.view == View::Difference, p_.diffGain);
+    counters.push_back({"CPU vs GPU RMSE", volume ? std::string("n/a (3D texture)")
+                                                  : fmt("%.2f of 255 over %.0f pixels", r.rmse, double(r.pixels))});
   }
 
   // The same frame at supersample^2 the pixels with the best filter (trilinear, 16x), box-filtered
   // down: RMSE against it, and the frame-to-frame change (flicker) of both, printed per frame.
   void measure(const FrameInfo& f) {
-    const int s = p_.supersample, w = f.width, h = f.height;
-    if (ssTarget_.width != w * s || ssTarget_.height != h * s)
-      ssTarget_ = gl::makeFootprintTarget(w * s, h * s, false, "06 supersampled");
     sampling::SamplerState best = samplerState();
     best.mag = best.min = Filter::Linear;
     best.mip = MipFilter::Linear;
     best.maxAniso = 16;
     best.lodBias = 0;
-    gl::applySamplerState(sampler_.id(), best);
-    drawScene(ssTarget_, best, w, h);
-    gl::applySamplerState(sampler_.id(), samplerState());
-    const std::vector<float> ref = sampling::boxReduceRgb(gl::readPixels(ssTarget_.fbo.id(), w * s, h * s), s);
-    std::vector<float> cur = sampling::boxReduceRgb(gl::readPixels(target_.fbo.id(), w, h), 1);
-    const double rmse = sampling::rmse(cur, ref);
-    std::printf("measure frame=%d rmse=%.4f flicker=%.4f ref_flicker=%.4f\n", f.index, rmse,
-                sampling::meanAbsDifference(cur, prevTest_), sampling::meanAbsDifference(ref, prevRef_));
+    const auto r = supersampled_.measure(target_, p_.supersample, [&](const gl::FootprintTarget& t) {
+      gl::applySamplerState(sampler_.id(), best);
+      drawScene(t, best, f.width, f.height);
+      gl::applySamplerState(sampler_.id(), samplerState());
+    });
+    std::printf("measure frame=%d rmse=%.4f flicker=%.4f ref_flicker=%.4f\n", f.index, r.rmse, r.flicker,
+                r.referenceFlicker);
     std::fflush(stdout);
-    counters.push_back({"RMSE vs supersampled", fmt("%.2f of 255 (%.0fx%.0f reference)", rmse, w * s, h * s)});
-    prevTest_ = std::move(cur);
-    prevRef_ = ref;
+    counters.push_back({"RMSE vs supersampled",
+                        fmt("%.2f of 255 (%.0fx%.0f reference)", r.rmse, r.referenceWidth, r.referenceHeight)});
   }
 
   Params p_;
@@ -504,12 +468,12 @@ class TextureFilteringLesson : public Lesson {
                            }};  // GLSL exercises 06.8, 06.9
   gl::Sampler sampler_;
   gl::GpuMesh ground_, tunnel_, sphere_;
-  gl::Texture texture_, normalMap_, rip_, volume_, cpuView_;
-  gl::Framebuffer cpuFbo_;
-  gl::FootprintTarget target_, ssTarget_;
+  gl::Texture texture_, normalMap_, rip_, volume_;
+  gl::FootprintTarget target_;
+  FootprintReference cpuView_;
+  SupersampledError supersampled_;
   std::vector<ImageF> chain_;
   std::vector<int> ripOffsetX_, ripOffsetY_;
-  std::vector<float> prevTest_, prevRef_;
   TexChoice builtTexture_ = TexChoice::CheckerFine;
   int builtVolume_ = -1;
 };
