@@ -115,7 +115,8 @@ endif()
 
 # The insets a lesson draws (map views, the post-projective view, the god view) stay clear of the UI.
 foreach(spec "08_psm|--set;view=map;--set;view.post=inset;--set;view.god=true|3"
-             "09_psm_fixes|--set;view=maps;--set;view.post=inset|2")
+             "09_psm_fixes|--set;view=maps;--set;view.post=inset|2"
+             "10_showdown|--set;technique=psm;--set;view=maps;--set;view.post=inset|2")
   string(REPLACE "|" ";" spec "${spec}")
   list(GET spec 0 name)
   list(GET spec -1 expect)

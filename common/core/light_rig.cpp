@@ -10,6 +10,15 @@ Light courseSun(const glm::vec3& direction) {
   return l;
 }
 
+Light courseLamp(const glm::vec3& position) {
+  Light l{LightKind::Point, position};
+  l.color = {1.0f, 0.6f, 0.3f};
+  l.intensity = 3.0f;
+  l.attenuation = {1.0f, 0.05f, 0.02f};
+  l.enabled = false;
+  return l;
+}
+
 Light showcaseSphereSpot() {
   Light l{LightKind::Spot, {0.96f, 7.0f, -1.62f}};
   l.direction = glm::normalize(glm::vec3(-2.46f, -7.0f, 0.62f));

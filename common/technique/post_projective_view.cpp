@@ -133,8 +133,8 @@ void PostProjectiveView::drawLines(const ShadowContext& c, const ShadowTechnique
   glBindVertexArray(0);
 }
 
-void PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, int light) {
-  if (mode_ == Mode::Off || c.frame.godView || c.lights.empty()) return;
+std::optional<Inset> PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, int light) {
+  if (mode_ == Mode::Off || c.frame.godView || c.lights.empty()) return std::nullopt;
   if (light < 0) light = std::min(light_, int(c.lights.size()) - 1);
   const Inset corner = inset(c.frame.width, c.frame.height).value_or(Inset{"", 0, 0, c.frame.width, c.frame.height});
   const int w = corner.width, h = corner.height;
@@ -153,6 +153,7 @@ void PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, 
   drawLines(c, t, light, camera, view);
   glDisable(GL_CLIP_DISTANCE0);
   composite(c, corner.x, corner.y, w, h);
+  return inset(c.frame.width, c.frame.height);
 }
 
 std::optional<Inset> PostProjectiveView::inset(int frameWidth, int frameHeight) const {

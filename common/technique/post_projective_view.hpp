@@ -31,8 +31,9 @@ class PostProjectiveView {
   bool enabled() const { return mode_ != Mode::Off; }
   Mode mode() const { return mode_; }
   // Draws technique t's view of light `light` (-1: the one the view's parameter names) into
-  // c.frame's framebuffer, after the lit frame. Nothing in a god-view frame.
-  void draw(const ShadowContext& c, const ShadowTechnique& t, int light = -1);
+  // c.frame's framebuffer, after the lit frame. Nothing in a god-view frame. Returns the inset it
+  // drew (inset mode), for the lesson to report in Lesson::insets so the UI keeps clear of it.
+  std::optional<Inset> draw(const ShadowContext& c, const ShadowTechnique& t, int light = -1);
   // In inset mode, where the inset goes in a frameWidth x frameHeight frame (bottom-left, GL
   // pixels): lessons report it in Lesson::insets so the UI stays clear of it.
   std::optional<Inset> inset(int frameWidth, int frameHeight) const;

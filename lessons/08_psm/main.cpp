@@ -19,6 +19,7 @@
 #include <algorithm>
 
 #include "app/lesson.hpp"
+#include "core/light_rig.hpp"
 #include "exercises.hpp"
 #include "technique/lit_pass.hpp"
 #include "technique/post_projective_view.hpp"
@@ -164,8 +165,7 @@ class OriginalPsmLesson : public Lesson {
     // ==== 5. the post-projective view: the unit cube, the squashed scene, the light, the slide =====
     if (postView_.enabled()) {
       auto t = scope("post-projective view");
-      postView_.draw(c, technique);
-      if (auto i = postView_.inset(f.width, f.height); i && !f.godView) insets.push_back(*i);
+      if (auto i = postView_.draw(c, technique)) insets.push_back(*i);
     }
   }
 
@@ -174,15 +174,8 @@ class OriginalPsmLesson : public Lesson {
   // light (off).
   void declareLights(ParamRegistry& r) {
     Light* l = p_.lights;
-    l[0] = {LightKind::Directional};
-    l[0].direction = glm::normalize(glm::vec3(0.6f, -1.0f, 0.7f));
-    l[0].color = {1.0f, 0.95f, 0.85f};
-    l[0].intensity = 0.9f;
-    l[1] = {LightKind::Point, {3.0f, 6.0f, -6.0f}};
-    l[1].color = {1.0f, 0.6f, 0.3f};
-    l[1].intensity = 3.0f;
-    l[1].attenuation = {1.0f, 0.05f, 0.02f};
-    l[1].enabled = false;
+    l[0] = courseSun({0.6f, -1.0f, 0.7f});
+    l[1] = courseLamp({3.0f, 6.0f, -6.0f});
     for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
   }
 

@@ -23,6 +23,7 @@
 
 #include "algorithms/psm/post_shapes.hpp"
 #include "app/lesson.hpp"
+#include "core/light_rig.hpp"
 #include "exercises.hpp"
 #include "technique/lispsm.hpp"
 #include "technique/lit_pass.hpp"
@@ -174,8 +175,7 @@ class PsmFixesLesson : public Lesson {
     // ==== 5. the post-projective view: the unit cube, the light there, its cone, maps, key points ==
     if (postView_.enabled()) {
       auto t = scope("post-projective view");
-      postView_.draw(c, technique);
-      if (auto i = postView_.inset(f.width, f.height); i && !f.godView) insets.push_back(*i);
+      if (auto i = postView_.draw(c, technique)) insets.push_back(*i);
     }
   }
 
@@ -183,15 +183,8 @@ class PsmFixesLesson : public Lesson {
   // light0 a sun behind the camera (PSM's hard case: fix 1), light1 a point light (off).
   void declareLights(ParamRegistry& r) {
     Light* l = p_.lights;
-    l[0] = {LightKind::Directional};
-    l[0].direction = glm::normalize(glm::vec3(-0.5f, -0.45f, -0.7f));
-    l[0].color = {1.0f, 0.95f, 0.85f};
-    l[0].intensity = 0.9f;
-    l[1] = {LightKind::Point, {2.0f, 5.0f, -4.0f}};
-    l[1].color = {1.0f, 0.6f, 0.3f};
-    l[1].intensity = 3.0f;
-    l[1].attenuation = {1.0f, 0.05f, 0.02f};
-    l[1].enabled = false;
+    l[0] = courseSun({-0.5f, -0.45f, -0.7f});
+    l[1] = courseLamp({2.0f, 5.0f, -4.0f});
     for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
   }
 

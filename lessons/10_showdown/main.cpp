@@ -145,7 +145,7 @@ class ShowdownLesson : public Lesson {
     if (p_.view == View::Maps && !f.godView) drawMaps(f);
     if (postView_.enabled()) {
       auto t = scope("post-projective view");
-      postView_.draw(c, technique);
+      if (auto i = postView_.draw(c, technique)) insets.push_back(*i);
     }
   }
 
@@ -193,16 +193,15 @@ class ShowdownLesson : public Lesson {
   // view=maps: light 0's map layers along the bottom row (PSM's faces, LiSPSM's map, the cascades), an inset.
   void drawMaps(const FrameInfo& f) {
     auto t = scope("map view");
-    const int h = f.height / 3;
+    const int h = f.height / 3, x = postView_.rightOfInset(f.width, f.height);  // beside the post-projective inset
     const std::string name = kNames[p_.technique];
-    if (name == "psm") psm_.drawMaps(0, 0, 0, std::min(f.width, h * 6), h);
-    if (name == "lispsm") lispsm_.drawMaps(0, 0, 0, h, h);
-    if (name == "csm") csm_.drawMaps(0, 0, 0, std::min(f.width, h * csm_.params().count), h);
-    const int w = name == "psm"   ? std::min(f.width, h * 6)
-                  : name == "csm" ? std::min(f.width, h * csm_.params().count)
-                                  : h;
+    const int room = std::max(f.width - x, 1);
+    if (name == "psm") psm_.drawMaps(0, x, 0, std::min(room, h * 6), h);
+    if (name == "lispsm") lispsm_.drawMaps(0, x, 0, h, h);
+    if (name == "csm") csm_.drawMaps(0, x, 0, std::min(room, h * csm_.params().count), h);
+    const int w = name == "psm" ? std::min(room, h * 6) : name == "csm" ? std::min(room, h * csm_.params().count) : h;
     if (name == "psm" || name == "lispsm" || name == "csm")
-      insets.push_back({"maps", 0, 0, w, h});  // the UI stays clear of it
+      insets.push_back({"map view", x, 0, w, h});  // the UI stays clear of it
   }
 
   // ==== the four-up view: each quarter a technique on the same camera, drawn into its own target ====
