@@ -49,7 +49,7 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   if (blockers == 0) return softHorizon(i, worldPos, N);  // nothing can hide the light: no filter paid
   if (blockers == SEARCH_TAPS) return 0.0;                // the whole search region blocks it: umbra
   float zBlocker = sum / float(blockers);
-  float radius = max(R * max(r.z - zBlocker, 0.0) / (zBlocker * 2.0 * r.z * tanHalf), uMinFilter / uSoftMapSize);
+  float radius = max(softPcssRadiusUv(R, r.z, zBlocker, tanHalf), uMinFilter / uSoftMapSize);
 #else
   float radius = uFixedRadius / uSoftMapSize;
 #endif

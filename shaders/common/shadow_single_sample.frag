@@ -38,7 +38,7 @@ float plateauOf(int i, vec2 uv, float zb, vec3 p) {
   vec3 shadowPoint = L + (b - L) * ((uPlaneHeight - L.y) / (b.y - L.y));
   float d = length(b - shadowPoint), D = length(b - L);
   float nDotL = max((L.y - shadowPoint.y) / length(L - shadowPoint), 1e-3);
-  float halfWidth = d / nDotL * uSoftRadius[i] / D;
+  float halfWidth = softPenumbraHalfWidth(d, nDotL, uSoftRadius[i], D);
   if (halfWidth <= 0.0) return 1.0;
   return softProfile(length(p - shadowPoint) / halfWidth - 1.0, LINEAR);
 }
