@@ -172,8 +172,9 @@ leak() {
   # One reference file of each kind: C++ algorithm, GLSL exercise, C++ reference exercise, sealed
   # shaders (a geometry shader, an include file, a one-line port).
   for f in common/algorithms/lighting.cpp shaders/02_shadow_maps/exercises_reference.glsl \
-    tests/grading/ex09_reference.cpp \
-    shaders/common/volumes/volume.geom shaders/common/shadow_bias_slope.glsl shaders/common/soft_answers.glsl; do
+    shaders/03_shadow_quality/exercises_reference.glsl tests/grading/ex09_reference.cpp \
+    shaders/05_soft_shadows/exercises_reference.glsl shaders/common/volumes/volume.geom \
+    shaders/common/shadow_bias_slope.glsl shaders/common/soft_answers.glsl; do
     rm -rf "$dir"
     mkdir -p "$dir"
     cp "$f" "$dir/"
