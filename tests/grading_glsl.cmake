@@ -108,7 +108,7 @@ if(TARGET lesson_04_shadow_volumes)
            -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_exercises.cmake)
   set_tests_properties(gpu.04_shadow_volumes.stub_banner_black PROPERTIES LABELS gpu)
 endif()
-foreach(lesson IN ITEMS 02_shadow_maps 06_texture_filtering)
+foreach(lesson IN ITEMS 02_shadow_maps 03_shadow_quality 05_soft_shadows 06_texture_filtering)
   if(TARGET glsl_lesson_${lesson})
     string(SUBSTRING ${lesson} 0 2 nn)
     add_test(NAME gpu.${lesson}.exercises_panel_reference COMMAND ${CMAKE_COMMAND}
@@ -118,13 +118,23 @@ foreach(lesson IN ITEMS 02_shadow_maps 06_texture_filtering)
   endif()
 endforeach()
 
-# The sealed shader files (cmake/sealed.cmake) stand in for the files themselves: with them gone
-# from a copy of the tree, as in the student handout, every preset renders its golden image. (The
-# handout has no files to remove: its own tests run without them anyway.)
-foreach(lesson IN ITEMS 02_shadow_maps 06_texture_filtering)
-  if(TARGET lesson_${lesson} AND EXISTS ${CMAKE_SOURCE_DIR}/shaders/${lesson}/exercises_reference.glsl)
-    add_test(NAME gpu.${lesson}.sealed_shaders COMMAND lesson_check $<TARGET_FILE:lesson_${lesson}>
-             --without shaders/${lesson}/exercises_reference.glsl --without shaders/common/lighting.glsl
+# The sealed shader files (cmake/sealed.cmake) stand in for the files themselves: with every one
+# of them gone from a copy of the tree, as in the student handout, every preset of each lesson that
+# uses one renders its golden image. (The handout has no files to remove: its own tests run
+# without them anyway.)
+file(STRINGS ${CMAKE_SOURCE_DIR}/tools/handout/sealed_shaders.txt sealed_lines)
+set(without_sealed "")
+foreach(line IN LISTS sealed_lines)
+  string(REGEX REPLACE "#.*" "" line "${line}")
+  string(STRIP "${line}" line)
+  if(line AND EXISTS ${CMAKE_SOURCE_DIR}/shaders/${line})
+    list(APPEND without_sealed --without shaders/${line})
+  endif()
+endforeach()
+foreach(lesson IN ITEMS 01_lighting 02_shadow_maps 03_shadow_quality 04_shadow_volumes 05_soft_shadows
+                        06_texture_filtering 07_hybrid_maps 08_psm 09_psm_fixes 10_showdown)
+  if(TARGET lesson_${lesson} AND without_sealed AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/${lesson})
+    add_test(NAME gpu.${lesson}.sealed_shaders COMMAND lesson_check $<TARGET_FILE:lesson_${lesson}> ${without_sealed}
              --all-presets --png ${shots}/${lesson}_sealed.png --golden ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/${lesson}
              -- --headless --frames 2 --size 320x180 --screenshot ${shots}/${lesson}_sealed.png)
     set_tests_properties(gpu.${lesson}.sealed_shaders PROPERTIES LABELS gpu)

@@ -1,5 +1,6 @@
 #include "gl/debug.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "gl/caps.hpp"
@@ -58,8 +59,17 @@ void checkErrors(const char* where) {
 int errorCount() { return g_errors; }
 const std::vector<std::string>& errorMessages() { return g_messages; }
 
+// A label longer than GL_MAX_LABEL_LENGTH - 1 is GL_INVALID_VALUE (a program variant's label
+// carries its defines, which can pass the 256 the spec guarantees): such a label is cut to fit.
 void label(unsigned identifier, unsigned name, const std::string& text) {
-  if (caps().khrDebug && name != 0) glObjectLabel(identifier, name, GLsizei(text.size()), text.c_str());
+  if (!caps().khrDebug || name == 0) return;
+  static const GLint maxLength = [] {
+    GLint n = 256;
+    glGetIntegerv(GL_MAX_LABEL_LENGTH, &n);
+    return n;
+  }();
+  const std::size_t length = std::min(text.size(), std::size_t(std::max(maxLength - 1, 0)));
+  glObjectLabel(identifier, name, GLsizei(length), text.c_str());
 }
 
 DebugGroup::DebugGroup(const char* name) {

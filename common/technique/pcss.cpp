@@ -31,6 +31,7 @@ std::vector<std::string> PcssShadows::shaderDefines() const {
   std::vector<std::string> d = {"SEARCH_TAPS " + std::to_string(searchCount()),
                                 "FILTER_TAPS " + std::to_string(filterCount())};
   if (adaptive_) d.push_back("PCSS");
+  if (adaptive_ && studentSearch) d.push_back("SHADOWLAB_STUDENT_PCSS");
   return d;
 }
 

@@ -35,6 +35,9 @@ class PcssShadows : public ShadowTechnique {
   void bindVisibility(const gl::Program& lit, int firstUnit) const override;
   void unbindVisibility(int firstUnit) const override { maps_.unbind(firstUnit); }
   PcssParams& params() { return p_; }
+  // Lesson 05's GLSL exercise 05.6 (impl=student): the blocker search from the student's
+  // shaders/05_soft_shadows/exercises.glsl (shaderDefines() add SHADOWLAB_STUDENT_PCSS).
+  bool studentSearch = false;
 
  private:
   int searchCount() const;

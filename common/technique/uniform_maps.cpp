@@ -175,8 +175,11 @@ std::vector<std::string> UniformShadowMaps::shaderDefines() const {
   for (int i = 0; i < kMaxShadowLights; ++i)
     types +=
         std::string(i ? ", " : "") + std::to_string(i < int(lights_.size()) ? int(lights_[std::size_t(i)].type) : 0);
-  return {"SHADOW_TYPES " + types, "SHADOW_FILTER " + std::to_string(int(p_.filter)),
-          "PCF_SIZE " + std::to_string(p_.pcfSize), std::string("RECEIVER_PLANE ") + (p_.receiverPlane ? "1" : "0")};
+  std::vector<std::string> defines{"SHADOW_TYPES " + types, "SHADOW_FILTER " + std::to_string(int(p_.filter)),
+                                   "PCF_SIZE " + std::to_string(p_.pcfSize),
+                                   std::string("RECEIVER_PLANE ") + (p_.receiverPlane ? "1" : "0")};
+  if (studentPcf) defines.push_back("SHADOWLAB_STUDENT_PCF");
+  return defines;
 }
 
 // ==== 3. what the lit pass reads: per light its matrix, texel size and map ======================

@@ -57,6 +57,9 @@ class UniformShadowMaps : public ShadowTechnique {
   // A student's versions of the directional light's steps (impl=student); empty: the reference.
   shadow::CasterTest casterTest;
   shadow::OrthoFitter fitter;
+  // Lesson 03's GLSL exercise 03.6 (impl=student): the N x N kernel from the student's
+  // shaders/03_shadow_quality/exercises.glsl (shaderDefines() add SHADOWLAB_STUDENT_PCF).
+  bool studentPcf = false;
 
   UniformMapParams& params() { return p_; }
   // Light i's 2D map (directional or spot, when on), for views of the map; nullptr otherwise.

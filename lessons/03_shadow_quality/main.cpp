@@ -17,7 +17,8 @@
 // N normal offset, R receiver plane, S snapping, K caster culling, F the fit, D camera drift, 1 2 3
 // the lights, T the technique, V the view, M the ground-truth overlays, O the god view; F1 help.
 // Exercises (exercises.hpp): slope-scaled bias, PCF weights, cube face selection, the caster
-// culling test, the orthographic fit.
+// culling test, the orthographic fit; in GLSL (shaders/03_shadow_quality/exercises.glsl) the
+// N x N PCF kernel.
 #include "app/lesson.hpp"
 #include "core/scene_gen.hpp"
 #include "exercises.hpp"
@@ -77,6 +78,7 @@ class ShadowQualityLesson : public Lesson {
     exercises.add("03.3", "cubeFace", "");
     exercises.add("03.4", "casterMayShadow", "every caster is kept: the same picture at the full cost");
     exercises.add("03.5", "fitOrthographic", "the sun's map covers nothing: its shadows are gone or wrong");
+    exercises.addGlsl("03.6", "pcfKernel", "filter=pcf_nxn lights every pixel of the 2D maps: no shadows");
     r.add("drift", &p_.drift, "move the camera slowly along x (watch edges shimmer without snapping)").hotkey = "G";
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     maps_.declare(r, "");  // this lesson's subject: its parameters keep their bare names
@@ -113,6 +115,7 @@ class ShadowQualityLesson : public Lesson {
     const bool student = p_.impl == Impl::Student;
     maps_.casterTest = student ? shadow::CasterTest(ex03::casterMayShadow) : nullptr;
     maps_.fitter = student ? shadow::OrthoFitter(ex03::fitOrthographic) : nullptr;
+    maps_.studentPcf = student;  // GLSL exercise 03.6: your N x N kernel (filter=pcf_nxn)
   }
 
   void render(const FrameInfo& f) override {

@@ -85,6 +85,7 @@ class SoftShadowsLesson : public Lesson {
     exercises.add("05.3", "pcssFilterRadiusUv", "");  // "": not used live, so no banner
     exercises.add("05.4", "rotateTap", "");
     exercises.add("05.5", "lightMeshVisibility", "");
+    exercises.addGlsl("05.6", "blockerSearch", "technique=pcss finds no blocker: no shadows");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     r.add("theory.edges", &p_.showEdge, "draw the lecture's predicted penumbra of the picked caster edge").hotkey = "G";
     r.addChoice("theory.edge", &p_.edge, {"0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11"},
@@ -112,7 +113,10 @@ class SoftShadowsLesson : public Lesson {
     p_.lights[0].direction = direction;
   }
 
-  void update(const FrameInfo&) override { scene_.update(p_.scene); }
+  void update(const FrameInfo&) override {
+    scene_.update(p_.scene);
+    pcss_.studentSearch = p_.impl == Impl::Student;  // GLSL exercise 05.6: your blocker search
+  }
 
   void render(const FrameInfo& f) override {
     const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};

@@ -6,11 +6,9 @@ uniform float uSlopeBias;     // depth units per unit of tan(theta)
 uniform float uMaxBias;
 uniform float uNormalOffset;  // texels of world offset along the normal
 
-float slopeScaledBias(float cosTheta) {  // shadow::slopeScaledBias
-  if (cosTheta <= 0.0) return uMaxBias;
-  float c = min(cosTheta, 1.0);
-  return min(uConstantBias + uSlopeBias * sqrt(1.0 - c * c) / c, uMaxBias);
-}
+// float slopeScaledBias(float cosTheta): min(constant + slope * tan(theta), max), the max when
+// cosTheta <= 0: exercise 03.1 in GLSL, sealed in the student handout.
+#include "common/shadow_bias_slope.glsl"
 
 // Normal offset: the lookup point moves along the normal by a few texels' world size (`texel`: an
 // orthographic map's world texel; a perspective map's texel at unit distance, times the distance),

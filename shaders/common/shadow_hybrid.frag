@@ -27,16 +27,9 @@ uniform usampler2D uHybridRoot[MAX_LIGHTS];
 uniform usampler2D uHybridRecords[MAX_LIGHTS];
 uniform int uPcfSize;  // N of the N x N box (odd)
 
-// The bias for a texel stored at `level` (hybrid::levelBias): the slope-scaled part and its clamp
-// grow with the texel, 2^level source texels wide (a tilted receiver is that much farther from the
-// stored mean); the constant part, the depth format's precision, does not. Level 0: the standard
-// map's slopeScaledBias.
-float levelBias(float cosTheta, int level) {
-  float scale = float(1 << level);
-  if (cosTheta <= 0.0) return uMaxBias * scale;
-  float c = min(cosTheta, 1.0);
-  return min(uConstantBias + uSlopeBias * sqrt(1.0 - c * c) / c * scale, uMaxBias * scale);
-}
+// levelBias(cosTheta, level), the bias for a texel stored at `level` (hybrid::levelBias), is in
+// common/shadow_bias_slope.glsl (through shadow_bias.glsl): at level 0 it is exercise 03.1's
+// slope-scaled bias, so it is sealed in the student handout with it.
 
 // One comparison at source texel s: lit (1) when depth - levelBias <= the stored depth; outside the
 // map, lit (a standard map's border of depth 1).

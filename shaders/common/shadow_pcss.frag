@@ -22,6 +22,15 @@ uniform float uFixedRadius;    // PCF: texels
 uniform float uMaxSearch;      // PCSS: the search region's cap, in uv
 uniform float uMinFilter;      // PCSS: the smallest filter radius, texels (a contact stays antialiased)
 
+// The blocker search, blockerSearch: exercise 05.6 (GLSL). The student's with impl=student in
+// lesson 05 (the technique's shaderDefines() add SHADOWLAB_STUDENT_PCSS), else the reference
+// (sealed in the student handout).
+#ifdef SHADOWLAB_STUDENT_PCSS
+#include "05_soft_shadows/exercises.glsl"
+#else
+#include "05_soft_shadows/exercises_reference.glsl"
+#endif
+
 float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   texelCoords = vec2(0.0);
   SoftReceiver r = softReceiver(i, worldPos, N);
@@ -36,20 +45,11 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
 #ifdef PCSS
   float near = uSoftDepthRange[i].x, tanHalf = uSoftTanHalfFov[i], R = uSoftRadius[i];
   float search = min(R * max(r.z - near, 0.0) / (2.0 * tanHalf * near * r.z), uMaxSearch);
-  float sum = 0.0;
-  int blockers = 0;
-  for (int k = 0; k < SEARCH_TAPS; ++k) {
-    vec2 o = turn * uSearchTaps[k] * search;
-    float zb = softDepthAt(i, 0, r.uv + o);
-    if (zb < r.z + dot(plane, o) - bias) {
-      sum += zb;
-      ++blockers;
-    }
-  }
-  if (blockers == 0) return softHorizon(i, worldPos, N);  // nothing can hide the light: no filter paid
-  if (blockers == SEARCH_TAPS) return 0.0;                // the whole search region blocks it: umbra
-  float zBlocker = sum / float(blockers);
-  float radius = max(R * max(r.z - zBlocker, 0.0) / (zBlocker * 2.0 * r.z * tanHalf), uMinFilter / uSoftMapSize);
+  vec2 found = blockerSearch(i, r.uv, r.z, plane, bias, search, turn);  // (mean distance, count)
+  if (found.y == 0.0) return softHorizon(i, worldPos, N);  // nothing can hide the light: no filter paid
+  if (found.y == float(SEARCH_TAPS)) return 0.0;           // the whole search region blocks it: umbra
+  float zBlocker = found.x;
+  float radius = max(softPcssRadiusUv(R, r.z, zBlocker, tanHalf), uMinFilter / uSoftMapSize);
 #else
   float radius = uFixedRadius / uSoftMapSize;
 #endif

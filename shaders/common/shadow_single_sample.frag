@@ -27,6 +27,9 @@ uniform mat4 uSoftViewInverse[MAX_LIGHTS];
 uniform float uPlaneHeight;  // Haines: the receiving plane y = h
 uniform float uPlaneTolerance;
 
+// PCSS's blocker search, blockerSearch (exercise 05.6's reference, sealed in the student handout).
+#include "05_soft_shadows/exercises_reference.glsl"
+
 #ifdef HAINES
 // The plateau of one blocker texel (uv + o at distance zb) at the receiver p on the plane.
 float plateauOf(int i, vec2 uv, float zb, vec3 p) {
@@ -38,7 +41,7 @@ float plateauOf(int i, vec2 uv, float zb, vec3 p) {
   vec3 shadowPoint = L + (b - L) * ((uPlaneHeight - L.y) / (b.y - L.y));
   float d = length(b - shadowPoint), D = length(b - L);
   float nDotL = max((L.y - shadowPoint.y) / length(L - shadowPoint), 1e-3);
-  float halfWidth = d / nDotL * uSoftRadius[i] / D;
+  float halfWidth = softPenumbraHalfWidth(d, nDotL, uSoftRadius[i], D);
   if (halfWidth <= 0.0) return 1.0;
   return softProfile(length(p - shadowPoint) / halfWidth - 1.0, LINEAR);
 }
@@ -46,17 +49,8 @@ float plateauOf(int i, vec2 uv, float zb, vec3 p) {
 
 // Step 1, as PCSS's blocker search: the mean depth of the blockers in the search region, or -1.
 float meanBlockerDepth(int i, SoftReceiver r, vec2 plane, float bias, float search, mat2 turn) {
-  float sum = 0.0;
-  int blockers = 0;
-  for (int k = 0; k < SEARCH_TAPS; ++k) {
-    vec2 o = turn * uSearchTaps[k] * search;
-    float zb = softDepthAt(i, 0, r.uv + o);
-    if (zb < r.z + dot(plane, o) - bias) {
-      sum += zb;
-      ++blockers;
-    }
-  }
-  return blockers > 0 ? sum / float(blockers) : -1.0;
+  vec2 found = blockerSearch(i, r.uv, r.z, plane, bias, search, turn);  // (mean distance, count)
+  return found.y > 0.0 ? found.x : -1.0;
 }
 
 float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
@@ -95,7 +89,7 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
 #ifdef HAINES
     v = min(v, plateauOf(i, r.uv + o, zb, worldPos));
 #else
-    float thickness = R * max(r.z - zb, 0.0) / (zb * 2.0 * r.z * tanHalf);  // the hull at this blocker, uv
+    float thickness = softPcssRadiusUv(R, r.z, zb, tanHalf);  // the hull at this blocker, uv
     v = min(v, thickness > 0.0 ? softProfile(2.0 * length(o) / thickness - 1.0, LINEAR) : 1.0);
 #endif
   }

@@ -66,6 +66,15 @@ float tapCube(int i, vec4 p) {
   }
 }
 
+// The N x N kernel, pcfKernel: exercise 03.6 (GLSL). The student's with impl=student in lesson 03
+// (the technique's shaderDefines() add SHADOWLAB_STUDENT_PCF), else the reference (sealed in the
+// student handout).
+#ifdef SHADOWLAB_STUDENT_PCF
+#include "03_shadow_quality/exercises.glsl"
+#else
+#include "03_shadow_quality/exercises_reference.glsl"
+#endif
+
 float rotationAngle(vec2 pixel) {  // shadow::rotationAngle
   return fract(sin(dot(pixel, vec2(12.9898, 78.233))) * 43758.5453) * 6.28318530718;
 }
@@ -77,15 +86,7 @@ float filtered2D(int map, vec3 p, float bias, vec2 dzduv, float size) {
   float ref = p.z - bias;
   if (FILTER <= 1) return tap2D(map, vec3(p.xy, ref));  // the sampler is nearest or linear
   float texel = 1.0 / size, sum = 0.0;
-  if (FILTER == 2) {
-    int h = PCF_N / 2;
-    for (int y = -h; y <= h; ++y)
-      for (int x = -h; x <= h; ++x) {
-        vec2 o = vec2(x, y) * texel;
-        sum += tap2D(map, vec3(p.xy + o, ref + dot(dzduv, o)));
-      }
-    return sum / float(PCF_N * PCF_N);
-  }
+  if (FILTER == 2) return pcfKernel(map, p.xy, ref, dzduv, texel, PCF_N);
   float a = rotationAngle(gl_FragCoord.xy);
   mat2 R = mat2(cos(a), sin(a), -sin(a), cos(a));
   for (int i = 0; i < 16; ++i) {

@@ -40,14 +40,36 @@ bodyOf() {  # bodyOf NAME FILE...: the lines inside the braces of NAME's definit
       if (inside && depth <= 0) { inside = 0; depth = 0 }
     }' "${@:2}"
 }
+oneLinersOf() {  # oneLinersOf NAME FILE...: what is inside the braces of NAME's one-line definitions
+  awk -v name="$1" '$0 ~ "^[A-Za-z].*[ :*&]" name "\\(.*\\{.*\\}[[:space:]]*(//.*)?$" {
+    line = $0; sub(/[[:space:]]*\/\/.*$/, "", line); sub(/^[^{]*\{/, "", line); sub(/\}[^}]*$/, "", line); print line
+  }' "${@:2}"
+}
+# The GLSL ports of exercises: "FILE NAME" for each shader function (in any tracked shader) named
+# like a reference function, or marked as the mirror of one by a trailing `// ns::name` on its
+# first line. Their bodies are answers wherever they are, so a shader that holds one must be sealed.
+glslAnswers() {
+  # shellcheck disable=SC2046
+  awk -v names="$(referenceFunctions | tr '\n' ' ')" '
+    BEGIN { n = split(names, a, " "); for (i = 1; i <= n; i++) ref[a[i]] = 1 }
+    /^[A-Za-z]/ && $0 !~ /;[[:space:]]*$/ && match($0, /[A-Za-z_][A-Za-z0-9_]*\(/) {
+      fn = substr($0, RSTART, RLENGTH - 1); mirror = ""
+      if (match($0, /\/\/.*::[A-Za-z_]+/)) { mirror = substr($0, RSTART, RLENGTH); sub(/.*::/, "", mirror) }
+      if ((fn in ref) || (mirror in ref)) print FILENAME, fn
+    }' $(git ls-files 'shaders/*.glsl' 'shaders/*.frag' 'shaders/*.vert' 'shaders/*.geom')
+}
 fingerprints() {
-  local sources sealed f
+  local sources sealed f file name
   sources=$(git ls-files 'common/algorithms/*.cpp')
   for f in $(referenceFunctions); do bodyOf "$f" $sources; done >"$work.bodies"
   bodyOf '[A-Za-z_]+' tests/grading/ex*_reference.cpp >>"$work.bodies"
   sealed=$(sed -E 's/#.*//; s/^\s+|\s+$//g' tools/handout/sealed_shaders.txt | grep . | sed 's|^|shaders/|')
   # shellcheck disable=SC2086
-  bodyOf '[A-Za-z_]+' $sealed >>"$work.bodies"
+  { bodyOf '[A-Za-z_]+' $sealed; oneLinersOf '[A-Za-z_]+' $sealed; } >>"$work.bodies"
+  glslAnswers | while read -r file name; do
+    bodyOf "$name" "$file"
+    oneLinersOf "$name" "$file"
+  done >>"$work.bodies"
   normalize <"$work.bodies" | awk 'length($0) >= 24' | grep -vE '^(for \(|\}|if \(.*\) (continue|break);$)' |
     sort -u | comm -23 - <(grep -vE '^\s*(#|$)' tools/handout/allowed_lines.txt | sed -E 's/[[:space:]]+#=.*$//' | normalize | sort -u)
 }
@@ -147,7 +169,12 @@ grade() {
 
 leak() {
   local dir=$1/leaky f
-  for f in common/algorithms/lighting.cpp shaders/02_shadow_maps/exercises_reference.glsl tests/grading/ex09_reference.cpp; do
+  # One reference file of each kind: C++ algorithm, GLSL exercise, C++ reference exercise, sealed
+  # shaders (a geometry shader, an include file, a one-line port).
+  for f in common/algorithms/lighting.cpp shaders/02_shadow_maps/exercises_reference.glsl \
+    shaders/03_shadow_quality/exercises_reference.glsl tests/grading/ex09_reference.cpp \
+    shaders/05_soft_shadows/exercises_reference.glsl shaders/common/volumes/volume.geom \
+    shaders/common/shadow_bias_slope.glsl shaders/common/soft_answers.glsl; do
     rm -rf "$dir"
     mkdir -p "$dir"
     cp "$f" "$dir/"
