@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -27,8 +28,10 @@ double uniformSplit(double zn, double zf, int i, int n) { return zn + (zf - zn) 
 bool checkSplits(const std::vector<double>& s, double zn, double zf, int n, double lambda) {
   INFO("zNear ", zn, ", zFar ", zf, ", count ", n, ", lambda ", lambda);
   if (!CHECK_EXACT(int(s.size()), n + 1)) return false;  // count cascades have count + 1 ends
-  INFO("the two ends are exactly zNear and zFar (set them after the loop: pow rounds)");
-  if (!CHECK_EXACT(s.front() == zn && s.back() == zf, true)) return false;
+  {
+    INFO("the two ends are exactly zNear and zFar (set them after the loop: pow rounds)");
+    if (!CHECK_EXACT(s.front() == zn && s.back() == zf, true)) return false;
+  }
   for (int i = 1; i < n; ++i) {
     const double lg = logSplit(zn, zf, i, n), un = uniformSplit(zn, zf, i, n);
     INFO("z_", i, ": the logarithmic split is ", lg, ", the uniform one ", un, "; lambda weighs the logarithmic one");
@@ -53,7 +56,8 @@ TEST_CASE("ex10.1: the practical split scheme, by hand") {
       {0.5, {1.0, 3.375, 6.25, 10.125, 16.0}, "lambda = 0.5 is halfway between the two: 1, 3.375, 6.25, 10.125, 16"}};
   for (const auto& c : byHand) {
     const std::vector<double> s = ex10::practicalSplits(1.0, 16.0, 4, c.lambda);
-    INFO(c.why);
+    const std::string why = c.why;
+    INFO(why);
     if (!CHECK_EXACT(int(s.size()), 5)) continue;
     for (std::size_t i = 1; i < 4; ++i) CHECK_NEAR(s[i], c.want[i], kApprox);
   }
@@ -81,16 +85,20 @@ TEST_CASE("ex10.2: texel snapping, by hand") {
   // half (3, 1), 1024 texels: h = 3 (1 + 2/1024) = 3.005859375; log2 h = 1.59, so step = 2^2 / 4 = 1
   // and h = ceil(3.0059) = 4. texel = 8 / 1024 = 0.0078125; centre 0.3 / texel = 38.4 -> 38 ->
   // 0.296875; -0.2 / texel = -25.6 -> -26 -> -0.203125.
-  const shadow::TexelSnap a = ex10::snapToTexels({0.3f, -0.2f}, {3.0f, 1.0f}, 1024);
-  INFO("centre (0.3, -0.2), half (3, 1), 1024 texels: h 3.0059 rounds up to its step 1, the texel is 8/1024");
-  CHECK_NEAR(a.half, 4.0f, kApprox);
-  CHECK_NEAR(a.centre, glm::vec2(0.296875f, -0.203125f), 1e-6);
+  {
+    const shadow::TexelSnap a = ex10::snapToTexels({0.3f, -0.2f}, {3.0f, 1.0f}, 1024);
+    INFO("centre (0.3, -0.2), half (3, 1), 1024 texels: h 3.0059 rounds up to its step 1, the texel is 8/1024");
+    CHECK_NEAR(a.half, 4.0f, kApprox);
+    CHECK_NEAR(a.centre, glm::vec2(0.296875f, -0.203125f), 1e-6);
+  }
   // half (0.1, 0.7), 256 texels: h = 0.7 (1 + 2/256) = 0.70546875; log2 h = -0.50, step = 2^0 / 4 =
   // 0.25, h = 0.75. texel = 1.5 / 256 = 0.005859375; centre 10 / texel = 1706.67 -> 1707 -> 10.001953125.
-  const shadow::TexelSnap b = ex10::snapToTexels({10.0f, 0.0f}, {0.1f, 0.7f}, 256);
-  INFO("centre (10, 0), half (0.1, 0.7), 256 texels: the larger half wins, h 0.7055 rounds up to 0.75");
-  CHECK_NEAR(b.half, 0.75f, kApprox);
-  CHECK_NEAR(b.centre, glm::vec2(10.001953125f, 0.0f), 1e-5);
+  {
+    const shadow::TexelSnap b = ex10::snapToTexels({10.0f, 0.0f}, {0.1f, 0.7f}, 256);
+    INFO("centre (10, 0), half (0.1, 0.7), 256 texels: the larger half wins, h 0.7055 rounds up to 0.75");
+    CHECK_NEAR(b.half, 0.75f, kApprox);
+    CHECK_NEAR(b.centre, glm::vec2(10.001953125f, 0.0f), 1e-5);
+  }
   // A degenerate box still gets a size: max(..., 1e-3).
   const shadow::TexelSnap c = ex10::snapToTexels({0.0f, 0.0f}, {0.0f, 0.0f}, 2048);
   INFO("a zero-sized box: h starts from 1e-3, so the map is never degenerate");
