@@ -85,7 +85,7 @@ endforeach()
 # the frame black: the banner says so). Lesson 07 has no banner run: on the stubs its sweep stops
 # the lesson with a clear error instead (gpu.hybrid.student).
 foreach(lesson IN ITEMS 01_lighting 02_shadow_maps 03_shadow_quality 04_shadow_volumes 05_soft_shadows
-                        06_texture_filtering 07_hybrid_maps 08_psm 09_psm_fixes)
+                        06_texture_filtering 07_hybrid_maps 08_psm 09_psm_fixes 10_showdown)
   if(TARGET lesson_${lesson})
     string(SUBSTRING ${lesson} 0 2 nn)
     add_test(NAME gpu.${lesson}.exercises_panel COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_${lesson}>

@@ -7,6 +7,7 @@
 #   gpu.showdown.*_as_lessonNN   lesson 10 holds PSM and the hybrid maps as lessons 09 and 07 do: same figures
 #   gpu.showdown.control.*       broken set-ups the same check must reject
 #   gpu.showdown.cascades_alias  four cascades alias less than one at the same total texels
+#   gpu.showdown.csm_cull_*      caster culling per cascade: the same picture, fewer triangles
 #   bench.10_showdown.quick      tools/showdown_bench.sh --quick: the reports, the summary, the plot
 # The bounds are the PSM cases' (tests/psm_lessons.cmake explains them): 1.5 % of the facing
 # pixels misclassified, 5 % of the truly shadowed pixels leaked, on lesson 10's default view (the
@@ -57,6 +58,17 @@ showdown_case(csm_constant_bias ok --set technique=csm --set csm.bias=constant)
 showdown_case(control.csm_no_bias fail --set technique=csm --set csm.bias=constant --set csm.bias.constant=0
               --set csm.bias.normal_offset=0 --set csm.offset.factor=0)
 showdown_case(control.csm_short fail --set technique=csm --set csm.far=5)
+# Caster culling per cascade (check_cascade_culling.cmake): the city of the default view, and the
+# forest (many small casters) with two cascades.
+foreach(spec "city|" "forest|--set;scene=forest;--set;csm.cascades=2")
+  string(REPLACE "|" ";" parts "${spec}")
+  list(GET parts 0 name)
+  string(REPLACE "${name}|" "" args "${spec}")
+  add_test(NAME gpu.showdown.csm_cull_${name} COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
+           -DOUT_DIR=${showdown_out} -DNAME=csm_cull_${name} "-DARGS=${args}"
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_cascade_culling.cmake)
+  set_tests_properties(gpu.showdown.csm_cull_${name} PROPERTIES LABELS gpu TIMEOUT 300)
+endforeach()
 
 add_test(NAME gpu.showdown.cascades_alias COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
          -DOUT_DIR=${showdown_out} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_showdown_cascades.cmake)

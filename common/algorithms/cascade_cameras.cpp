@@ -1,6 +1,7 @@
 #include "algorithms/cascade_cameras.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -20,18 +21,53 @@ double cascadeFar(const CascadeViewer& v, const Aabb& b) {
   return std::min(deepest, double(v.farZ));
 }
 
+namespace {
+
+// Why `s` cannot be the splits of `count` cascades from zn to zf ("": it can).
+std::string splitProblem(const std::vector<double>& s, int count, double zn, double zf) {
+  if (int(s.size()) != count + 1)
+    return "the split scheme gave " + std::to_string(s.size()) + " distances, " + std::to_string(count + 1) + " wanted";
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!std::isfinite(s[i]) || (i > 0 && !(s[i] > s[i - 1])))
+      return "the split distances are not finite and increasing at " + std::to_string(i);
+  if (std::abs(s.front() - zn) > 1e-6 * zn || std::abs(s.back() - zf) > 1e-6 * zf)
+    return "the splits do not run from the near distance to the far one";
+  return "";
+}
+
+// The union of the cascades' casters (each slice's own test), then each cascade's pass: those of
+// them that can meet its light volume (its box moved back toward the light over the whole scene).
+void cullPerCascade(CascadeSet& set, const CasterBoxes& scene, bool perCascade) {
+  set.casters.assign(scene.casts.begin(), scene.casts.end());
+  for (std::size_t k = 0; k < set.casters.size(); ++k) {
+    if (!set.casters[k]) continue;
+    bool any = false;
+    for (const LightCamera& cam : set.cameras) any = any || cam.casters[k];
+    set.casters[k] = any;
+    set.culled += !any;
+  }
+  for (LightCamera& cam : set.cameras)
+    cullAgainst(cam, scene, orthoVolumeToward(cam, scene.bounds), perCascade, set.casters);
+}
+
+}  // namespace
+
 CascadeSet fitCascades(const glm::vec3& direction, const CasterBoxes& scene, const CascadeViewer& v,
                        const CascadeOptions& o) {
   if (o.count < 1 || o.count > 4)
     throw std::invalid_argument("cascade count = " + std::to_string(o.count) + " must be 1..4");
   CascadeSet set;
   const double zFar = o.farZ > 0.0 ? std::min(o.farZ, double(v.farZ)) : cascadeFar(v, scene.bounds);
-  set.splits = psm::cascadeSplits(double(v.nearZ), std::max(zFar, double(v.nearZ) * 1.001), o.count, o.lambda);
+  const double zn = double(v.nearZ), zf = std::max(zFar, double(v.nearZ) * 1.001);
+  set.splits = o.splitter ? o.splitter(zn, zf, o.count, o.lambda) : psm::cascadeSplits(zn, zf, o.count, o.lambda);
+  set.problem = splitProblem(set.splits, o.count, zn, zf);
+  if (!set.problem.empty()) return set;
   for (int i = 0; i < o.count; ++i) {
     const glm::mat4 slice =
         glm::perspective(v.fovY, v.aspect, float(set.splits[std::size_t(i)]), float(set.splits[std::size_t(i) + 1]));
     set.cameras.push_back(fitDirectional(direction, scene, volumeFromViewProj(slice * v.view), o.fit));
   }
+  cullPerCascade(set, scene, o.cullPerCascade);
   return set;
 }
 

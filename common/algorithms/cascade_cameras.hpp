@@ -4,6 +4,8 @@
 // and for each slice of the view frustum a directional light camera fitted to it as lesson 03 fits
 // one to the whole view (fitDirectional: the receivers where the slice meets the scene's bounds, the
 // casters that can shade them, texel snapping at the cascade's own texel size).
+#include <functional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -18,16 +20,30 @@ struct CascadeViewer {
   float fovY = 0.873f, aspect = 1.0f, nearZ = 0.1f, farZ = 200.0f;
 };
 
+// A replacement for psm::cascadeSplits (a student's, lesson 10's exercise 10.1); empty: the reference.
+using SplitScheme = std::function<std::vector<double>(double zNear, double zFar, int count, double lambda)>;
+
 struct CascadeOptions {
   int count = 4;              // 1..4 slices
   double lambda = 0.75;       // 0 uniform splits, 1 logarithmic
   double farZ = 0.0;          // > 0: the cascades end there; 0: at the deepest point of the scene in view
   DirectionalFitOptions fit;  // per cascade; fit.mapSize is each cascade's side
+  // Each cascade draws only the casters that can meet its own light volume (its orthographic box
+  // moved back toward the light over the scene: orthoVolumeToward, culled as a spot's frustum is);
+  // off: every cascade draws them all.
+  bool cullPerCascade = true;
+  SplitScheme splitter;
 };
 
 struct CascadeSet {
   std::vector<double> splits;        // count + 1 view depths, splits[0] = near
   std::vector<LightCamera> cameras;  // cascade i covers depths [splits[i], splits[i + 1]]
+  // The casters some cascade needs (fit.cullCasters: those that can shade its slice of the view),
+  // and how many were left out of every cascade. Each camera's own `casters` and `culled` are
+  // its pass's: these, less (cullPerCascade) those that cannot reach its light volume.
+  std::vector<char> casters;
+  int culled = 0;
+  std::string problem;  // the splits were unusable (a student's scheme): no cameras, and why
 };
 
 // How deep the cascades reach: the farthest corner of `bounds` in front of the viewer, clamped to
@@ -35,7 +51,9 @@ struct CascadeSet {
 double cascadeFar(const CascadeViewer& viewer, const Aabb& bounds);
 
 // The slices and their light cameras for a directional light travelling along `direction`.
-// Throws std::invalid_argument for count outside 1..4 and as cascadeSplits / fitDirectional do.
+// Throws std::invalid_argument for count outside 1..4 and as cascadeSplits / fitDirectional do;
+// splits from `splitter` that are not count + 1 increasing finite distances from near to far give
+// no cameras and say why in `problem`.
 CascadeSet fitCascades(const glm::vec3& direction, const CasterBoxes& scene, const CascadeViewer& viewer,
                        const CascadeOptions& options);
 

@@ -9,16 +9,6 @@
 namespace shadowlab::shadow {
 namespace {
 
-// Casters whose box can meet a light frustum (spot, cube face); the others are not drawn.
-void cullAgainst(LightCamera& camera, const CasterBoxes& scene, const ConvexVolume& lightVolume, bool cull) {
-  camera.casters.assign(scene.boxes.size(), 0);
-  for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
-    if (!scene.casts[i]) continue;
-    camera.casters[i] = !cull || volumesMayIntersect(volumeFromBox(scene.boxes[i]), lightVolume);
-    if (!camera.casters[i]) ++camera.culled;
-  }
-}
-
 void requireConsistent(const CasterBoxes& scene) {
   if (scene.casts.size() != scene.boxes.size())
     throw std::invalid_argument("light camera: " + std::to_string(scene.boxes.size()) + " boxes but " +
@@ -26,6 +16,34 @@ void requireConsistent(const CasterBoxes& scene) {
 }
 
 }  // namespace
+
+void cullAgainst(LightCamera& camera, const CasterBoxes& scene, const ConvexVolume& lightVolume, bool cull,
+                 std::span<const char> among) {
+  camera.casters.assign(scene.boxes.size(), 0);
+  camera.culled = 0;
+  for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
+    if (!scene.casts[i]) continue;
+    const bool candidate = among.empty() || among[i];
+    camera.casters[i] = candidate && (!cull || volumesMayIntersect(volumeFromBox(scene.boxes[i]), lightVolume));
+    if (!camera.casters[i]) ++camera.culled;
+  }
+}
+
+ConvexVolume orthoVolumeToward(const LightCamera& ortho, const Aabb& bounds) {
+  // glm::ortho's depth row: P[2][2] = -2 / (f - n), P[3][2] = -(f + n) / (f - n), so
+  // f = (P[3][2] - 1) / P[2][2] and n = (P[3][2] + 1) / P[2][2].
+  glm::mat4 p = ortho.projection;
+  const float farZ = (p[3][2] - 1.0f) / p[2][2];
+  float nearZ = (p[3][2] + 1.0f) / p[2][2];
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 c((k & 1) ? bounds.max.x : bounds.min.x, (k & 2) ? bounds.max.y : bounds.min.y,
+                      (k & 4) ? bounds.max.z : bounds.min.z);
+    nearZ = std::min(nearZ, -(ortho.view * glm::vec4(c, 1.0f)).z - 1.0f);  // the light looks down -z
+  }
+  p[2][2] = -2.0f / (farZ - nearZ);
+  p[3][2] = -(farZ + nearZ) / (farZ - nearZ);
+  return volumeFromViewProj(p * ortho.view);
+}
 
 LightCamera fitDirectional(const glm::vec3& direction, const CasterBoxes& scene, const ConvexVolume& view,
                            const DirectionalFitOptions& o) {
@@ -51,7 +69,7 @@ LightCamera fitDirectional(const glm::vec3& direction, const CasterBoxes& scene,
   const std::span<const Aabb> casters = o.fitToView ? std::span<const Aabb>(kept) : std::span<const Aabb>();
   const bool snap = o.snap && o.fitToView;
   const OrthoFit fit = o.fitter ? o.fitter(d, receivers, casters, o.mapSize, snap)
-                                : fitOrthographic(d, receivers, casters, o.mapSize, snap);
+                                : fitOrthographic(d, receivers, casters, o.mapSize, snap, o.snapper);
   camera.view = fit.view;
   camera.projection = fit.projection;
   camera.texelWorld = fit.texelWorld;

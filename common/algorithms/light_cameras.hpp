@@ -50,7 +50,18 @@ struct DirectionalFitOptions {
   int mapSize = 2048;
   CasterTest casterTest;  // default casterMayShadow
   OrthoFitter fitter;     // default fitOrthographic
+  TexelSnapper snapper;   // default snapToTexels (with the default fitter)
 };
+
+// Caster culling against a light volume (a spot's frustum, a cube face's, a cascade's box): scene
+// object i is kept in camera.casters when it casts, `among` keeps it (empty: every caster) and
+// (with `cull`) its box can meet the volume; camera.culled counts the casters left out.
+void cullAgainst(LightCamera& camera, const CasterBoxes& scene, const ConvexVolume& lightVolume, bool cull,
+                 std::span<const char> among = {});
+// An orthographic light camera's box with its near side moved back toward the light to hold all of
+// `bounds`: what its map can receive a caster's depth from when the depth pass clamps depth
+// instead of clipping at the near plane (GL_DEPTH_CLAMP: a caster nearer than it still writes).
+ConvexVolume orthoVolumeToward(const LightCamera& ortho, const Aabb& bounds);
 
 // A directional light travelling along `direction`. `view`: the viewer's frustum (never a debug
 // camera's). Throws std::invalid_argument as fitOrthographic does.

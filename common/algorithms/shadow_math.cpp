@@ -262,8 +262,21 @@ glm::mat4 lightViewAlong(const glm::vec3& eye, const glm::vec3& direction) {
   return glm::lookAt(eye, eye + d, up);
 }
 
+TexelSnap snapToTexels(const glm::vec2& centre, const glm::vec2& half, int mapSize) {
+  // Square, quantised size (changes only when the view's extent crosses a step) and a centre on
+  // the texel grid: the map's texels stay put in the world while the camera moves.
+  TexelSnap s;
+  float h = std::max({half.x, half.y, 1e-3f}) * (1.0f + 2.0f / float(mapSize));
+  const float step = std::exp2(std::ceil(std::log2(h))) / 4.0f;
+  h = std::ceil(h / step) * step;
+  const float texel = 2.0f * h / float(mapSize);
+  s.centre = glm::round(centre / texel) * texel;
+  s.half = h;
+  return s;
+}
+
 OrthoFit fitOrthographic(const glm::vec3& lightDirection, std::span<const glm::vec3> receivers,
-                         std::span<const Aabb> casters, int mapSize, bool snap) {
+                         std::span<const Aabb> casters, int mapSize, bool snap, const TexelSnapper& snapper) {
   if (receivers.empty()) throw std::invalid_argument("orthographic fit: no receiver points");
   if (!(glm::length(lightDirection) > 0.0f))
     throw std::invalid_argument("orthographic fit: the light direction is zero");
@@ -285,13 +298,10 @@ OrthoFit fitOrthographic(const glm::vec3& lightDirection, std::span<const glm::v
   glm::vec2 centre = 0.5f * (glm::vec2(lo) + glm::vec2(hi));
   glm::vec2 half = 0.5f * (glm::vec2(hi) - glm::vec2(lo));
   if (snap) {
-    // Square, quantised size (changes only when the view's extent crosses a step) and a centre on
-    // the texel grid: the map's texels stay put in the world while the camera moves.
-    float h = std::max({half.x, half.y, 1e-3f}) * (1.0f + 2.0f / float(mapSize));
-    const float step = std::exp2(std::ceil(std::log2(h))) / 4.0f;
-    h = std::ceil(h / step) * step;
-    const float texel = 2.0f * h / float(mapSize);
-    centre = glm::round(centre / texel) * texel;
+    const TexelSnap s = snapper ? snapper(centre, half, mapSize) : snapToTexels(centre, half, mapSize);
+    // A snap that returns no size (a stub): a tiny map that covers nothing, never a NaN matrix.
+    const float h = std::isfinite(s.half) && s.half > 0.0f ? s.half : 1e-3f;
+    centre = std::isfinite(s.centre.x) && std::isfinite(s.centre.y) ? s.centre : centre;
     half = glm::vec2(h);
   } else {
     half = glm::max(half, glm::vec2(1e-3f));

@@ -8,6 +8,7 @@
 // A depth map's row 0 is v = 0, the way GL stores a depth texture rendered from the light (its
 // bottom row, NDC y = -1, is row 0).
 #include <array>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -97,6 +98,20 @@ std::vector<glm::vec3> intersectionPoints(const ConvexVolume& a, const ConvexVol
 // outside and the sweep moves away from it or along it (dot(n, lightDirection) <= 0).
 bool casterMayShadow(const Aabb& caster, const ConvexVolume& view, const glm::vec3& lightDirection);
 
+// Texel snapping of an orthographic box (centre, half extents in light space) for a map of
+// mapSize texels a side: the box made square with half side h = max(half.x, half.y, 1e-3) times
+// (1 + 2 / mapSize) (a texel of room each side for the centre's move), h rounded UP to a multiple of
+// step = 2^ceil(log2 h) / 4 (so h changes only when the extent crosses a step), and the centre
+// rounded to the nearest multiple of the texel 2 h / mapSize: the map's texels stay put in the world
+// while the camera moves, and an edge does not crawl.
+struct TexelSnap {
+  glm::vec2 centre{0.0f};
+  float half = 0.0f;
+};
+TexelSnap snapToTexels(const glm::vec2& centre, const glm::vec2& half, int mapSize);
+// A replacement for snapToTexels (a student's, lesson 10's exercise 10.2); empty: the reference.
+using TexelSnapper = std::function<TexelSnap(const glm::vec2&, const glm::vec2&, int)>;
+
 // The light camera of a directional light, fitted to what the view needs (lesson 03).
 struct OrthoFit {
   glm::mat4 view{1.0f}, projection{1.0f};
@@ -108,9 +123,9 @@ struct OrthoFit {
 // from the receivers' far side to the nearest caster toward the light (casters only extend the
 // near side). With `snap`, the half size is rounded up to a quarter of its power of two and the
 // centre to whole texels, so a moving camera moves the grid by whole texels (no shimmer). Throws
-// std::invalid_argument for no receivers, a zero direction or mapSize < 1.
+// std::invalid_argument for no receivers, a zero direction or mapSize < 1. snapper: see TexelSnapper.
 OrthoFit fitOrthographic(const glm::vec3& lightDirection, std::span<const glm::vec3> receivers,
-                         std::span<const Aabb> casters, int mapSize, bool snap);
+                         std::span<const Aabb> casters, int mapSize, bool snap, const TexelSnapper& snapper = {});
 
 // A look-at for a light direction with a fixed up vector (y, or x when the light is near vertical).
 glm::mat4 lightViewAlong(const glm::vec3& eye, const glm::vec3& direction);

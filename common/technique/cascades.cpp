@@ -36,6 +36,8 @@ void CascadedShadowMaps::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "far", &p_.farZ, 0, 500, "where the last cascade ends (m); 0: the deepest point of the scene in view");
   r.add(n + "snap", &p_.snap, "texel snapping of each cascade's frustum (no shimmer while the camera moves)");
   r.add(n + "cull_casters", &p_.cullCasters, "draw only the casters that can shade some cascade");
+  r.add(n + "cull_per_cascade", &p_.cullPerCascade,
+        "each cascade draws only the casters that can reach its own light volume (off: all of them, in every one)");
   r.add(n + "colours", &p_.colours, "the cascade-colouring view: each point tinted by the cascade that shades it");
 }
 
@@ -57,18 +59,16 @@ bool CascadedShadowMaps::fitLight(const ShadowContext& c, int i, int side) {
   o.fit.snap = p_.snap;
   o.fit.cullCasters = p_.cullCasters;
   o.fit.mapSize = side;
+  o.fit.snapper = snapper;
+  o.cullPerCascade = p_.cullPerCascade;
+  o.splitter = splitter;
   const shadow::CascadeViewer viewer{c.viewer.view(), c.viewer.fovY, c.viewerAspect(), c.viewer.nearZ, c.viewer.farZ};
   l.set = shadow::fitCascades(light.direction, c.scene.casterBoxes(), viewer, o);
-  l.keep.assign(c.scene.casts().begin(), c.scene.casts().end());
-  int culled = 0;
-  for (std::size_t k = 0; k < l.keep.size(); ++k) {
-    if (!l.keep[k]) continue;
-    bool any = false;
-    for (const shadow::LightCamera& cam : l.set.cameras) any = any || cam.casters[k];
-    l.keep[k] = any;
-    culled += !any;
+  if (!l.set.problem.empty()) {
+    stats_.extra.push_back({n + "cascades", "none: " + l.set.problem + " (lit)"});
+    return false;
   }
-  stats_.culledCasters += culled;
+  for (const shadow::LightCamera& cam : l.set.cameras) stats_.culledCasters += cam.culled;
   std::vector<double> texels;
   for (const shadow::LightCamera& cam : l.set.cameras) texels.push_back(cam.texelWorld);
   stats_.extra.push_back({n + "splits", joined(l.set.splits, "%.3g", 1.0) + " m"});
@@ -95,8 +95,8 @@ void CascadedShadowMaps::renderShadows(const ShadowContext& c) {
       continue;
     }
     std::vector<ProjectiveMapView> views;
-    for (const shadow::LightCamera& cam : l.set.cameras) views.push_back({glm::dmat4(cam.viewProj())});
-    maps_.render(c, i, views, side, l.keep, psm::homogeneousLight(c.lights[std::size_t(i)]), {}, stats_);
+    for (const shadow::LightCamera& cam : l.set.cameras) views.push_back({glm::dmat4(cam.viewProj()), cam.casters});
+    maps_.render(c, i, views, side, l.set.casters, psm::homogeneousLight(c.lights[std::size_t(i)]), {}, stats_);
   }
   for (std::size_t i = kPsmLights; i < c.lights.size(); ++i)
     if (c.lights[i].enabled)

@@ -23,14 +23,15 @@ namespace shadowlab::tech {
 inline constexpr int kMaxCascades = 4;  // uCsmFar's vec4 in shaders/common/shadow_cascades.frag
 
 struct CascadeParams {
-  ProjectiveMapParams maps;  // texels (a light's TOTAL, shared by its cascades), format, filter, bias
-  int count = 4;             // cascades: 1 is lesson 03's fitted map, 4 what engines ship
-  float lambda = 0.75f;      // the practical split scheme: 0 uniform, 1 logarithmic; 0.75 leans to the log
-  float band = 0.1f;         // the blend band, as a fraction of a cascade's depth range (0: a hard switch)
-  float farZ = 0.0f;         // > 0: the cascades end there (m); 0: at the deepest point of the scene in view
-  bool snap = true;          // texel snapping per cascade: a moving camera does not make edges crawl
-  bool cullCasters = true;   // draw only the casters that can shade some cascade
-  bool colours = false;      // the cascade-colouring view instead of the lit frame
+  ProjectiveMapParams maps;    // texels (a light's TOTAL, shared by its cascades), format, filter, bias
+  int count = 4;               // cascades: 1 is lesson 03's fitted map, 4 what engines ship
+  float lambda = 0.75f;        // the practical split scheme: 0 uniform, 1 logarithmic; 0.75 leans to the log
+  float band = 0.1f;           // the blend band, as a fraction of a cascade's depth range (0: a hard switch)
+  float farZ = 0.0f;           // > 0: the cascades end there (m); 0: at the deepest point of the scene in view
+  bool snap = true;            // texel snapping per cascade: a moving camera does not make edges crawl
+  bool cullCasters = true;     // draw only the casters that can shade some cascade
+  bool cullPerCascade = true;  // each cascade draws only the casters that can reach its own light volume
+  bool colours = false;        // the cascade-colouring view instead of the lit frame
 };
 
 class CascadedShadowMaps : public ShadowTechnique {
@@ -51,6 +52,9 @@ class CascadedShadowMaps : public ShadowTechnique {
   void describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const override;
 
   CascadeParams& params() { return p_; }
+  // A student's split scheme and texel snap (lesson 10's exercises 10.1, 10.2); empty: the reference.
+  shadow::SplitScheme splitter;
+  shadow::TexelSnapper snapper;
   ProjectiveMapSet& maps() { return maps_; }
   // Light i's cascades this frame (empty when it has none), for tests and views.
   const shadow::CascadeSet& cascades(int light) const { return lights_[std::size_t(light)].set; }
@@ -60,7 +64,6 @@ class CascadedShadowMaps : public ShadowTechnique {
   struct PerLight {
     bool fitted = false;
     shadow::CascadeSet set;
-    std::vector<char> keep;  // the union of the cascades' casters
   };
   bool fitLight(const ShadowContext& c, int i, int side);
   void pushShapes(const ShadowContext& c) const;

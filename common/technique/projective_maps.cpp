@@ -147,11 +147,12 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
     const psm::TexelStep step = psm::texelStepFactors(m, glm::dvec2(double(side)));
     l.texelStep[std::size_t(k)] = glm::vec4(step.u);
     l.clipW[std::size_t(k)] = glm::vec4(step.r);
+    const std::span<const char> drawn = maps[std::size_t(k)].keep.empty() ? keep : maps[std::size_t(k)].keep;
     if (student) {
-      stats.triangles += drawStudentBiased(c, m, side, keep, worldLight);
+      stats.triangles += drawStudentBiased(c, m, side, drawn, worldLight);
     } else {
       setBiasUniforms(m, side, worldLight);
-      stats.triangles += casters_.draw(c.scene, l.matrices[std::size_t(k)], keep, kNoCulling);
+      stats.triangles += casters_.draw(c.scene, l.matrices[std::size_t(k)], drawn, kNoCulling);
     }
     stats.texels += std::uint64_t(side) * std::uint64_t(side);
   }

@@ -43,9 +43,11 @@ struct ProjectiveMapParams {
   float normalOffset = 1.0f;  // the lookup moves this many texels (their world size there) along N, times sin(theta)
 };
 
-// One map to render: its world -> clip matrix (double, converted at the GL boundary).
+// One map to render: its world -> clip matrix (double, converted at the GL boundary), and the
+// casters it draws when it culls its own (cascades: keep[i] for scene object i; empty: the light's).
 struct ProjectiveMapView {
   glm::dmat4 worldToClip{1.0};
+  std::span<const char> keep;
 };
 
 // What the lit shader needs to pick a light's face map (fix 3): the camera whose post-projective
@@ -84,8 +86,8 @@ class ProjectiveMapSet {
   int totalSide() const;  // the side whose square is a light's texel budget
 
   // Light i's maps for this frame: `maps.size()` layers of side x side texels, drawing the scene's
-  // casters where keep[i] (empty: every caster). worldLight: (position, 1) or (-direction, 0), the
-  // direction casters move in for the world-space bias. Counts into stats.
+  // casters where keep[i] (empty: every caster), or where the map's own keep says. worldLight: (position, 1) or
+  // (-direction, 0), the direction casters move in for the world-space bias. Counts into stats.
   void render(const ShadowContext& c, int light, std::span<const ProjectiveMapView> maps, int side,
               std::span<const char> keep, const glm::dvec4& worldLight, const FaceLookup& faces, ShadowStats& stats);
   void disable(int light);  // light i has no map this frame: V = 1

@@ -17,12 +17,15 @@
 // Controls: left drag orbit, right drag pan, wheel zoom; T cycles the technique, V the view (lit,
 // visibility, maps, four-up), C the cascade colours, U equal texels, X the A/B split, O the god
 // view, P the post-projective view, M the ground-truth overlays, 1 2 the lights; F1 help.
+// Exercises (exercises.hpp): the practical split scheme, texel snapping, the cascade for a depth
+// with its blend band; `--set impl=student` runs your split scheme and snapping in technique=csm.
 #include <chrono>
 #include <cstdio>
 
 #include <imgui.h>
 
 #include "app/lesson.hpp"
+#include "exercises.hpp"
 #include "core/light_rig.hpp"
 #include "gl/gl.hpp"
 #include "technique/cascades.hpp"
@@ -59,7 +62,8 @@ struct Params {
   int texels = 3;                 // 2048^2 per light (index into UniformShadowMaps::mapSizes())
   int quarter[4] = {0, 1, 2, 3};  // the four-up view: uniform, psm, lispsm, csm
   float ambient = 0.1f;
-  Light lights[kLights];  // a sun, and a spherical spot (off) for the soft methods
+  Impl impl = Impl::Reference;  // student: your split scheme and texel snapping drive technique=csm
+  Light lights[kLights];        // a sun, and a spherical spot (off) for the soft methods
 };
 
 const char* const kSummary =
@@ -100,6 +104,10 @@ class ShowdownLesson : public Lesson {
       r.addChoice("quarter." + std::to_string(q), &p_.quarter[q], names,
                   "the four-up view's technique in quarter " + std::to_string(q) + " (top left, top right, ...)");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
+    declareImpl(r, &p_.impl, "whose split scheme and texel snapping the cascades (technique=csm) run");
+    exercises.add("10.1", "practicalSplits", "technique=csm gets no splits: the sun's cascades are gone (lit)");
+    exercises.add("10.2", "snapToTexels", "csm.snap=on: each cascade's map covers nothing: its shadows are gone");
+    exercises.add("10.3", "cascadeAt", "");  // "": the lit shader picks the cascade; not used live
     for (int i = 0; i < kTechniques; ++i) techniques_[std::size_t(i)]->declare(r, std::string(kNames[i]) + ".");
     r.setHotkey("csm.colours", "C");
     postView_.declare(r);
@@ -127,6 +135,10 @@ class ShowdownLesson : public Lesson {
   void update(const FrameInfo&) override {
     scene_.update(p_.scene);
     if (p_.equalTexels) equaliseTexels();
+    // impl=student: the student's split scheme (10.1) and texel snapping (10.2) in the cascades.
+    const bool student = p_.impl == Impl::Student;
+    csm_.splitter = student ? shadow::SplitScheme(ex10::practicalSplits) : nullptr;
+    csm_.snapper = student ? shadow::TexelSnapper(ex10::snapToTexels) : nullptr;
   }
 
   void render(const FrameInfo& f) override {
@@ -190,7 +202,8 @@ class ShowdownLesson : public Lesson {
     hybrid_.params().mapSize = std::stoi(tech::UniformShadowMaps::mapSizes()[std::size_t(p_.texels)]);
   }
 
-  // view=maps: light 0's map layers along the bottom row (PSM's faces, LiSPSM's map, the cascades), an inset.
+  // view=maps: light 0's map layers along the bottom row (PSM's faces, LiSPSM's map, the cascades),
+  // beside the post-projective inset when it is on; an inset the UI stays clear of.
   void drawMaps(const FrameInfo& f) {
     auto t = scope("map view");
     const int h = f.height / 3, x = postView_.rightOfInset(f.width, f.height);  // beside the post-projective inset

@@ -92,3 +92,107 @@ TEST_CASE("cascades: each slice's light camera holds its receivers and the near 
   o.count = 5;
   CHECK_THROWS_AS(shadow::fitCascades({0, -1, 0}, g.get(), viewer(), o), std::invalid_argument);
 }
+
+namespace {
+
+// The ground, and a row of 1 m posts along the view's axis every 4 m from z = 16 to z = -48:
+// the near cascade's light volume holds only the first few, the far one only the far ones.
+struct Posts {
+  std::vector<Aabb> boxes{{{-50, -1, -50}, {50, 0, 50}}};
+  std::vector<char> casts{1};
+  Posts() {
+    for (float z = 16.0f; z >= -48.0f; z -= 4.0f) {
+      boxes.push_back({{-0.5f, 0.0f, z - 0.5f}, {0.5f, 3.0f, z + 0.5f}});
+      casts.push_back(1);
+    }
+  }
+  shadow::CasterBoxes get() const { return {boxes, casts, {{-50, -1, -50}, {50, 4, 50}}}; }
+};
+
+int kept(const std::vector<char>& casters) {
+  int n = 0;
+  for (char c : casters) n += c != 0;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("cascades: each cascade draws only the casters that reach its light volume") {
+  const Posts scene;
+  shadow::CascadeOptions o;
+  o.count = 4;
+  o.lambda = 1.0;
+  o.fit.mapSize = 1024;
+  const glm::vec3 sun = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+  const shadow::CascadeSet set = shadow::fitCascades(sun, scene.get(), viewer(), o);
+  REQUIRE(set.cameras.size() == 4);
+  const int casters = int(scene.boxes.size());
+  int sumCulled = 0;
+  for (const shadow::LightCamera& cam : set.cameras) {
+    // Every cascade's casters are some of the union, and what it leaves out is counted.
+    for (std::size_t k = 0; k < scene.boxes.size(); ++k) CHECK((!cam.casters[k] || set.casters[k]));
+    CHECK(cam.culled == casters - kept(cam.casters));
+    // A caster left out has its box outside the cascade's light frustum: it writes no texel of it.
+    for (std::size_t k = 0; k < scene.boxes.size(); ++k)
+      if (set.casters[k] && !cam.casters[k]) {
+        const shadow::ConvexVolume box = shadow::volumeFromBox(scene.boxes[k]);
+        CHECK_FALSE(shadow::volumesMayIntersect(box, shadow::volumeFromViewProj(cam.viewProj())));
+      }
+    sumCulled += cam.culled;
+  }
+  // The first cascade (under 3 m deep) holds the ground and the post 4 m ahead, not the far ones.
+  CHECK(set.cameras[0].casters[0]);
+  CHECK_FALSE(set.cameras[0].casters[scene.boxes.size() - 1]);
+  CHECK(set.cameras[0].culled >= 10);
+  CHECK(sumCulled > 4 * set.culled);  // per cascade, more than the union leaves out
+
+  // Off: every cascade draws the union, and leaves out only what the union does.
+  o.cullPerCascade = false;
+  const shadow::CascadeSet all = shadow::fitCascades(sun, scene.get(), viewer(), o);
+  for (const shadow::LightCamera& cam : all.cameras) {
+    CHECK(cam.casters == all.casters);
+    CHECK(cam.culled == all.culled);
+  }
+  CHECK(all.casters == set.casters);
+}
+
+TEST_CASE("cascades: a split scheme that does not give count + 1 increasing distances gives no cascades") {
+  const Ground g;
+  shadow::CascadeOptions o;
+  o.count = 3;
+  o.fit.mapSize = 512;
+  o.splitter = [](double, double, int, double) { return std::vector<double>{}; };  // an untouched stub
+  shadow::CascadeSet set = shadow::fitCascades({0, -1, 0}, g.get(), viewer(), o);
+  CHECK(set.cameras.empty());
+  CHECK(set.problem == "the split scheme gave 0 distances, 4 wanted");
+  o.splitter = [](double zn, double zf, int, double) { return std::vector<double>{zn, 5.0, 3.0, zf}; };
+  set = shadow::fitCascades({0, -1, 0}, g.get(), viewer(), o);
+  CHECK(set.cameras.empty());
+  CHECK(set.problem == "the split distances are not finite and increasing at 2");
+  o.splitter = [](double, double zf, int, double) { return std::vector<double>{0.5, 2.0, 4.0, zf}; };
+  CHECK(shadow::fitCascades({0, -1, 0}, g.get(), viewer(), o).problem ==
+        "the splits do not run from the near distance to the far one");
+  o.splitter = [](double zn, double zf, int n, double l) { return psm::cascadeSplits(zn, zf, n, l); };
+  set = shadow::fitCascades({0, -1, 0}, g.get(), viewer(), o);
+  CHECK(set.problem.empty());
+  CHECK(set.cameras.size() == 3);
+}
+
+TEST_CASE("cascades: a cascade's light volume reaches back toward the light over the whole scene") {
+  // A light straight down from the origin, its box 9 to 11 m below it and 2 m wide; the scene
+  // reaches 5 m above the light. The depth pass clamps depth: a caster between the light and the
+  // near plane still writes the map, so the volume that culls must hold it.
+  shadow::LightCamera cam;
+  cam.view = shadow::lightViewAlong(glm::vec3(0.0f), {0, -1, 0});
+  cam.projection = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 9.0f, 11.0f);
+  const Aabb bounds{{-20, -20, -20}, {20, 5, 20}};
+  const shadow::ConvexVolume toward = shadow::orthoVolumeToward(cam, bounds);
+  const shadow::ConvexVolume box = shadow::volumeFromViewProj(cam.viewProj());
+  const shadow::ConvexVolume above = shadow::volumeFromBox({{-0.2f, -3.0f, -0.2f}, {0.2f, -2.0f, 0.2f}});
+  CHECK_FALSE(shadow::volumesMayIntersect(above, box));  // nearer than the near plane...
+  CHECK(shadow::volumesMayIntersect(above, toward));     // ...but it casts into the map
+  const shadow::ConvexVolume aside = shadow::volumeFromBox({{3.0f, -10.0f, 3.0f}, {4.0f, 4.0f, 4.0f}});
+  CHECK_FALSE(shadow::volumesMayIntersect(aside, toward));  // beside the map: no texel of it
+  const shadow::ConvexVolume below = shadow::volumeFromBox({{-0.2f, -19.0f, -0.2f}, {0.2f, -12.0f, 0.2f}});
+  CHECK_FALSE(shadow::volumesMayIntersect(below, toward));  // beyond the far plane: clamped to 1, never written
+}

@@ -108,7 +108,7 @@ build() {
   fi
   local bin=$tree/build/default/bin n=0
   for lesson in "$bin"/lesson_[0-9]*; do
-    # impl=reference where the lesson has exercises (lesson 10 has none, so no impl parameter).
+    # impl=reference where the lesson has exercises (an impl parameter).
     local impl=()
     "$lesson" --list-params | grep -q '^impl ' && impl=(--set impl=reference)
     env -u SHADOWLAB_ROOT SHADOWLAB_STRICT_GL=1 "$lesson" --headless --frames 2 --size 320x180 \
