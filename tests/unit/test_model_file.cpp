@@ -318,8 +318,8 @@ TEST_CASE("model: a refused OBJ names the file, the line, the reason and the val
       {kTriangle + "vn 1 0\nf 1//1 2//1 3//1\n", "line 4: vn with 2 numbers (valid: vn x y z)"},
       {"v 0 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: w is 0 (valid: a w other than 0: it divides x, y and z)"},
       // Numbers Assimp reads as NaN or infinity, refused by the loader and found again here.
-      {"v 1 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n",
-       "line 2: 'nan' is not a finite number (valid: finite numbers such as 2 or -0.5)"},
+      {"v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+       "line 1: 'nan' is not a finite number (valid: finite numbers such as 2 or -0.5)"},
       {"v 0.00001e40 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: '0.00001e40' is beyond a float's range " + range},
       {kTriangle + "vn 1e39 0 1\nf 1//1 2//1 3//1\n", "line 4: '1e39' is beyond a float's range " + range},
       {"v 1e30 0 0 1e-30\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
@@ -380,7 +380,7 @@ TEST_CASE("model: a statement Assimp skips or misreads in an OBJ it loads is a n
   const ModelFile m = loadModelFromMemory(garbled.data(), garbled.size(), "obj", "garbled.obj");
   checkInvariants(m);
   CHECK(anyNote(m,
-                "line 3: 'abc' is not a number (valid: numbers such as 2, -0.5 or 1.5e-3, a digit first); "
+                "line 3: 'abc' is not a number (valid: numbers such as 2, -0.5 or 1.5e-3, a digit first). "
                 "Assimp 5.2.5 loaded the file, skipping or misreading this statement: check the model"));
   // An indented vertex that no face uses: skipped, and said so.
   const std::string indented = kTriangle + "  v 5 5 5\nf 1 2 3\n";
@@ -395,7 +395,7 @@ TEST_CASE("model: a statement Assimp skips or misreads in an OBJ it loads is a n
 }
 
 TEST_CASE("model: the OBJ locator finds the line that explains each refusal, and none in a good file") {
-  const std::string text = "v 0 0 0\n v 1 1 1\nv 1 0 0\nvt 0 0\nv 1e39 0 0\nvn 0 0 1\nf 1 2 3 5\nf 1 2 99\n";
+  const std::string text = "v 0 0 0\n v 1 1 1\nv 1 0 0\nvt 0 0\nv 1e39 0 0\nvn 0 0 1\nf 1 2 3\nf 1 2 99\n";
   const auto line = [&](ObjFault fault) {
     const std::optional<ObjLine> at = locateObjFault(text, fault);
     return at ? at->line : 0;
