@@ -35,7 +35,7 @@ tour: build
 test: web build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE '^ex[0-9]+$$' $(CTEST_ARGS)
 	@cmake --preset sanitize >/dev/null && cmake --build --preset sanitize -j $(JOBS)
-	@cd build/sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -L unit
+	@cd build/sanitize && ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -L unit
 	@$(MAKE) --no-print-directory fuzz-build && cd build/fuzz && ctest --output-on-failure -j $(JOBS) -L fuzz
 
 # libFuzzer targets of the GL-free parsers (tests/fuzz), built with clang under ASan + UBSan.

@@ -27,6 +27,26 @@ foreach(lesson IN LISTS SHADOWLAB_LESSONS)
             -- --headless --frames 1 --size 160x90 --set camera.near=1e-4 --set camera.far=1e7)
 endforeach()
 
+# OBJ garbage (the issue's reproducers and the obj fuzz target's finding, tests/fuzz/obj/regressions)
+# through --model: refused by Assimp or by the loader on what Assimp read, naming the line (exit 1).
+set(obj_regressions ${regressions}/obj/regressions)
+set(valid_numbers "(valid: numbers such as 2, -0.5 or 1.5e-3, a digit first)")
+set(valid_range "(valid: magnitudes up to 3.4e38, exponents up to 38)")
+bad_input(01_lighting.model_exponent_nan ${l01} 1 "exponent_nan.obj': line 1: '0e999999' is beyond a float's range ${valid_range}"
+          -- --headless --frames 1 --size 160x90 --model ${obj_regressions}/exponent_nan.obj)
+bad_input(01_lighting.model_float_overflow ${l01} 1 "float_overflow_inf.obj': line 1: '1e39' is beyond a float's range ${valid_range}"
+          -- --headless --frames 1 --size 160x90 --model ${obj_regressions}/float_overflow_inf.obj)
+bad_input(01_lighting.model_sign_sign ${l01} 1 "sign_sign.obj': line 1: '+-5' is not a number ${valid_numbers}"
+          -- --headless --frames 1 --size 160x90 --model ${obj_regressions}/sign_sign.obj)
+bad_input(01_lighting.model_leak_mesh_on_throw ${l01} 1
+          "leak_mesh_on_throw.obj': line 3: a face with 1 corner (valid: f with 3 or more corners, l for lines, p for points)"
+          -- --headless --frames 1 --size 160x90 --model ${obj_regressions}/leak_mesh_on_throw.obj)
+# ...and the valid ones load (exit 0), stating what was generated: a trailing comment, a concave pentagon.
+bad_input(01_lighting.model_trailing_comment ${l01} 0 "trailing_comment.obj': 1 meshes had no normals: generated"
+          -- --headless --frames 1 --size 160x90 --model ${obj_regressions}/trailing_comment.obj)
+bad_input(01_lighting.model_concave_pentagon ${l01} 0 "concave_pentagon.obj': 1 meshes had no normals: generated"
+          -- --headless --frames 1 --size 160x90 --model ${obj_regressions}/concave_pentagon.obj)
+
 # Path files: out of range, bad headers, times after '@'.
 bad_input(01_lighting.replay_1e300 ${l01} 1 "coordinate_1e300.path:2: camera position (1e+300, 2, 8) is outside +-1000000"
           -- --headless --frames 1 --size 160x90 --replay ${regressions}/paths/regressions/coordinate_1e300.path)

@@ -24,7 +24,7 @@ for name in "${targets[@]}"; do
   [[ -d "$root/tests/fuzz/$name/regressions" ]] && corpus+=("$root/tests/fuzz/$name/regressions")
   log="$build/findings/$name.log"
   start=$(date +%s.%N)
-  ASAN_OPTIONS=detect_leaks=1 "$build/bin/fuzz_$name" -runs="$runs" -seed=1 -timeout=10 -rss_limit_mb=2048 \
+  ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions="$root/tests/lsan.supp" "$build/bin/fuzz_$name" -runs="$runs" -seed=1 -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$findings/" "$work" "${corpus[@]}" >"$log" 2>&1
   status=$?
   seconds=$(echo "$(date +%s.%N) - $start" | bc)

@@ -6,14 +6,19 @@
 
 #include <algorithm>
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <glm/gtc/matrix_transform.hpp>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <memory>
+#include <sstream>
 #include <system_error>
 
 #include "core/image.hpp"
 #include "core/mesh_gen.hpp"
+#include "core/obj_locate.hpp"
 #include "core/polygon.hpp"
 
 namespace shadowlab {
@@ -21,8 +26,49 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A refusal, and what it refused: for an OBJ file, locateObjFault then names the line at fault.
+struct Refusal : ModelError {
+  ObjFault fault;
+  Refusal(const std::string& message, ObjFault f) : ModelError(message), fault(f) {}
+};
+
+// A refusal no line of the file explains (its size, its emptiness, a scene with no triangles).
 [[noreturn]] void fail(const std::string& name, const std::string& reason) {
   throw ModelError("model '" + name + "': " + reason);
+}
+
+// A refusal of what the file says, at a line where it is an OBJ file.
+[[noreturn]] void refuse(const std::string& name, ObjFault fault, const std::string& reason) {
+  throw Refusal("model '" + name + "': " + reason, fault);
+}
+
+bool isObj(const std::string& extension) {
+  std::string e = extension;
+  for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return e == "obj" || e == ".obj";
+}
+
+// Runs `load` (Assimp decides whether the file loads). An OBJ file's refusal gets the line at fault,
+// "model 'FILE': line N: reason (valid: ...)", where the text has one that explains it. An OBJ file
+// Assimp loads is scanned too, never to refuse it: a line Assimp 5.2.5 skipped or misread without a
+// word (a vertex with a non-number, an indented statement) becomes a note, so nothing is silent.
+ModelFile withLine(const std::string& name, bool obj, const std::function<std::string()>& text,
+                   const std::function<ModelFile()>& load) {
+  try {
+    ModelFile model = load();
+    if (obj)
+      if (const std::optional<ObjLine> at = locateObjFault(text(), ObjFault::any))
+        model.notes.insert(
+            model.notes.begin(),  // first: the status line shows the first note
+            "line " + std::to_string(at->line) + ": " + at->reason +
+                ". Assimp 5.2.5 loaded the file, skipping or misreading this statement: check the model");
+    return model;
+  } catch (const Refusal& e) {
+    if (!obj) throw ModelError(e.what());
+    const std::optional<ObjLine> at = locateObjFault(text(), e.fault);
+    if (!at) throw ModelError(e.what());
+    throw ModelError("model '" + name + "': line " + std::to_string(at->line) + ": " + at->reason);
+  }
 }
 
 // Assimp's messages sometimes span lines; ours are one.
@@ -66,11 +112,14 @@ Mesh convertMesh(const aiMesh& in, const std::string& name) {
   Mesh m;
   m.positions.reserve(in.mNumVertices);
   for (unsigned i = 0; i < in.mNumVertices; ++i) {
-    if (!finite(in.mVertices[i])) fail(name, "mesh '" + std::string(in.mName.C_Str()) + "' has a non-finite vertex");
+    if (!finite(in.mVertices[i]))
+      refuse(name, ObjFault::nonFinitePosition, "mesh '" + std::string(in.mName.C_Str()) + "' has a non-finite vertex");
     m.positions.emplace_back(in.mVertices[i].x, in.mVertices[i].y, in.mVertices[i].z);
     m.normals.push_back(in.mNormals ? unitNormal(in.mNormals[i]) : glm::vec3(0, 1, 0));
     const aiVector3D uv = in.mTextureCoords[0] ? in.mTextureCoords[0][i] : aiVector3D(0, 0, 0);
-    m.uvs.emplace_back(std::isfinite(uv.x) ? uv.x : 0.0f, std::isfinite(uv.y) ? uv.y : 0.0f);
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+      refuse(name, ObjFault::nonFiniteUv, "mesh '" + std::string(in.mName.C_Str()) + "' has a non-finite uv");
+    m.uvs.emplace_back(uv.x, uv.y);
   }
   m.indices.reserve(std::size_t(in.mNumFaces) * 3);
   std::vector<glm::vec3> corners;
@@ -79,14 +128,15 @@ Mesh convertMesh(const aiMesh& in, const std::string& name) {
     if (face.mNumIndices < 3) continue;  // SortByPType put points and lines elsewhere; be sure
     corners.clear();
     for (unsigned k = 0; k < face.mNumIndices; ++k) {
-      if (face.mIndices[k] >= in.mNumVertices) fail(name, "a face indexes past its mesh's vertices");
+      if (face.mIndices[k] >= in.mNumVertices)
+        refuse(name, ObjFault::vertexIndex, "a face indexes past its mesh's vertices");
       corners.push_back(m.positions[face.mIndices[k]]);
     }
     try {
       for (const auto& t : triangulatePolygon(corners))
         for (std::uint32_t k : t) m.indices.push_back(face.mIndices[k]);
     } catch (const std::invalid_argument& e) {
-      fail(name, "mesh '" + std::string(in.mName.C_Str()) + "': " + e.what());
+      refuse(name, ObjFault::selfCrossing, "mesh '" + std::string(in.mName.C_Str()) + "': " + e.what());
     }
   }
   return m;
@@ -170,6 +220,11 @@ void sortPrimitives(Assimp::Importer& importer, const aiScene*& in, ModelFile& o
     if (mesh.mPrimitiveTypes & aiPrimitiveType_POINT) out.skippedPoints += mesh.mNumFaces;
     else if (mesh.mPrimitiveTypes & aiPrimitiveType_LINE) out.skippedLines += mesh.mNumFaces;
     else if (!mesh.HasNormals()) ++out.meshesWithoutNormals;
+    else
+      for (unsigned v = 0; v < mesh.mNumVertices; ++v)
+        if (!finite(mesh.mNormals[v]))
+          refuse(out.path, ObjFault::nonFiniteNormal,
+                 "mesh '" + std::string(mesh.mName.C_Str()) + "' has a non-finite normal");
   }
   if (out.skippedPoints || out.skippedLines)
     out.notes.push_back("skipped " + std::to_string(out.skippedPoints) + " points and " +
@@ -179,14 +234,15 @@ void sortPrimitives(Assimp::Importer& importer, const aiScene*& in, ModelFile& o
                         "from the faces (creases over " + std::to_string(int(kCreaseDegrees)) + " degrees kept)");
   importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, kCreaseDegrees);
   in = importer.ApplyPostProcessing(aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices);
-  if (!in) fail(out.path, "generating normals failed: " + oneLine(importer.GetErrorString()));
+  if (!in) refuse(out.path, ObjFault::any, "generating normals failed: " + oneLine(importer.GetErrorString()));
 }
 
 ModelFile convertScene(Assimp::Importer& importer, const aiScene* in, const std::string& name, const fs::path& folder) {
   ModelFile out;
   out.path = name;
-  if (!in) fail(name, "not a readable model file: " + oneLine(importer.GetErrorString()));
-  if ((in->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !in->mRootNode) fail(name, "the file holds no complete scene");
+  if (!in) refuse(name, ObjFault::any, "not a readable model file: " + oneLine(importer.GetErrorString()));
+  if ((in->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !in->mRootNode)
+    refuse(name, ObjFault::any, "the file holds no complete scene");
   sortPrimitives(importer, in, out);
   for (unsigned i = 0; i < in->mNumMaterials; ++i)
     out.scene.addMaterial(convertMaterial(*in->mMaterials[i], i, folder, out));
@@ -208,7 +264,8 @@ ModelFile convertScene(Assimp::Importer& importer, const aiScene* in, const std:
     fail(name, "no triangles to draw (" + std::to_string(out.skippedPoints) + " points and " +
                    std::to_string(out.skippedLines) + " lines skipped)");
   const Aabb box = out.scene.bounds();
-  if (!std::isfinite(glm::length(box.extent()))) fail(name, "its node transforms take it to infinity");
+  if (!std::isfinite(glm::length(box.extent())))
+    fail(name, "its size overflows a float (coordinates or node transforms too large)");
   out.scene.name = fs::path(name).filename().string();
   return out;
 }
@@ -225,19 +282,29 @@ ModelFile loadModelFile(const std::string& path) {
   if (bytes == 0) fail(path, "the file is empty");
   if (bytes > kMaxModelBytes)
     fail(path, std::to_string(bytes >> 20) + " MiB is over the " + std::to_string(kMaxModelBytes >> 20) + " MiB limit");
-  Assimp::Importer importer;
-  const aiScene* in = importer.ReadFile(path, kImportSteps);
   fs::path folder = fs::path(path).parent_path();
   if (folder.empty()) folder = ".";
-  return convertScene(importer, in, path, folder);
+  const auto text = [&] {
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream all;
+    all << file.rdbuf();
+    return all.str();
+  };
+  return withLine(path, isObj(fs::path(path).extension().string()), text, [&] {
+    Assimp::Importer importer;
+    return convertScene(importer, importer.ReadFile(path, kImportSteps), path, folder);
+  });
 }
 
 ModelFile loadModelFromMemory(const void* data, std::size_t size, const std::string& hint, const std::string& name) {
   if (size == 0) fail(name, "the file is empty");
   if (size > kMaxModelBytes) fail(name, "over the " + std::to_string(kMaxModelBytes >> 20) + " MiB limit");
-  Assimp::Importer importer;
-  const aiScene* in = importer.ReadFileFromMemory(data, size, kImportSteps, hint.c_str());
-  return convertScene(importer, in, name, fs::path());
+  const auto text = [&] { return std::string(static_cast<const char*>(data), size); };
+  return withLine(name, isObj(hint), text, [&] {
+    Assimp::Importer importer;
+    return convertScene(importer, importer.ReadFileFromMemory(data, size, kImportSteps, hint.c_str()), name,
+                        fs::path());
+  });
 }
 
 Scene placeOnGround(const ModelFile& model, float size, float groundSize) {

@@ -10,6 +10,20 @@
 //   points and lines      skipped, counted, said so in notes
 //   embedded textures (.glb)         not read: the diffuse colour, said so in notes
 //   empty, missing, too large, corrupt, no triangles, non-finite numbers   ModelError
+//
+// OBJ errors name the line. Assimp 5.2.5 is the one parser that decides what loads; its OBJ
+// messages name no line ("OBJ: vertex index out of range"), and it drops some bad statements
+// without a word (a vertex with a non-number in it, an indented line). So, for OBJ files only,
+// core/obj_locate reads the text again:
+//   - when the file is refused (by Assimp, or here on what Assimp produced: a NaN or infinite
+//     position, uv or normal, a face past its vertices, a polygon that crosses itself), it finds
+//     the line that explains the refusal and the message becomes
+//       model 'FILE': line N: reason (valid: ...)
+//     (where no line explains it, as for a file with no triangles, the message names no line);
+//   - when the file loads, a statement Assimp skipped or misread becomes a note naming its line.
+// The scanner never refuses a file Assimp loads, nor loads one it refuses: two parsers that
+// disagreed about what loads was the bug this design replaced. See core/obj_locate.hpp for what it
+// checks; it runs once more over the text, after Assimp, which costs little beside Assimp's parse.
 // Conventions match core/mesh.hpp: the file's axes (OBJ and glTF are both y up), uv v = 0 at the
 // image's top row (Assimp's v is flipped), unit normals.
 #include <cstddef>
@@ -22,7 +36,7 @@
 
 namespace shadowlab {
 
-// One line: "model 'FILE': reason".
+// One line: "model 'FILE': reason", or for an OBJ file "model 'FILE': line N: reason (valid: ...)".
 struct ModelError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

@@ -35,6 +35,6 @@ foreach(name IN LISTS SHADOWLAB_FUZZ_TARGETS)
   add_test(NAME fuzz.${name} COMMAND sh -c "rm -rf ${work} && mkdir -p ${work} && exec $<TARGET_FILE:fuzz_${name}> \
 -runs=${SHADOWLAB_FUZZ_TEST_RUNS} -max_total_time=${SHADOWLAB_FUZZ_TEST_SECONDS} -seed=1 -timeout=10 -rss_limit_mb=2048 \
 -print_final_stats=1 -artifact_prefix=${findings}/ ${work} ${corpus}")
-  set_tests_properties(fuzz.${name} PROPERTIES LABELS fuzz ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1"
+  set_tests_properties(fuzz.${name} PROPERTIES LABELS fuzz ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1;LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp"
                        FAIL_REGULAR_EXPRESSION "ERROR: libFuzzer|SUMMARY: .*Sanitizer|FUZZ_CHECK failed")
 endforeach()
