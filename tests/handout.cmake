@@ -19,7 +19,11 @@ add_test(NAME handout.make COMMAND bash ${CMAKE_SOURCE_DIR}/tools/handout/make_h
 set_tests_properties(handout.make PROPERTIES FIXTURES_SETUP handout)
 add_test(NAME handout.no_reference_bodies COMMAND ${check} bodies ${handout}/shadowlab)
 add_test(NAME handout.leak_detected COMMAND ${check} leak ${CMAKE_BINARY_DIR}/handout-leak)
-add_test(NAME handout.builds COMMAND ${check} build ${handout}/shadowlab-student.tar.gz /tmp/shadowlab_handout_check)
+# Unpacked outside this tree (its build must not refer into it), in a folder of this build's own:
+# two checkouts testing at once (worktrees, CI beside a developer) must not share it.
+string(MD5 build_id ${CMAKE_BINARY_DIR})
+string(SUBSTRING ${build_id} 0 12 build_id)
+add_test(NAME handout.builds COMMAND ${check} build ${handout}/shadowlab-student.tar.gz /tmp/shadowlab_handout_check_${build_id})
 add_test(NAME handout.grade_untouched COMMAND ${check} grade ${handout}/shadowlab ${handout}/grade_untouched zero)
 add_test(NAME handout.grade_reference COMMAND ${check} grade reference ${handout}/grade_reference full)
 set_tests_properties(handout.no_reference_bodies handout.builds handout.grade_untouched handout.grade_reference
