@@ -5,7 +5,7 @@
 // light's array texture (the projective maps' storage and lookup, common/projective_maps.glsl). A
 // point takes the cascade its view depth falls in; within the blend band at a cascade's far end the
 // next cascade's lookup is mixed in (psm::cascadeAt in common/algorithms/psm/cascades.cpp mirrors
-// cascadeAt below: keep the two in step).
+// cascadeAt in common/cascade_choice.glsl: keep the two in step).
 #include "common/projective_maps.glsl"
 
 uniform vec4 uCsmViewZ;            // the viewer's view-matrix row of z: view depth = -dot(row, (p, 1))
@@ -13,20 +13,10 @@ uniform float uCsmNear;            // where cascade 0 starts
 uniform vec4 uCsmFar[PSM_LIGHTS];  // where cascades 0..3 end (uPsmLayers[light] of them)
 uniform float uCsmBand;            // the blend band: this fraction of a cascade's depth range at its far end
 
-// The cascade that shades view depth `depth` of light `light` (-1: none), and the weight of the next.
-int cascadeAt(int light, float depth, out float nextWeight) {
-  nextWeight = 0.0;
-  int count = uPsmLayers[light];
-  if (count == 0 || depth < uCsmNear || depth > uCsmFar[light][count - 1]) return -1;
-  int k = 0;
-  while (k < count - 1 && depth > uCsmFar[light][k]) ++k;
-  if (k == count - 1 || uCsmBand <= 0.0) return k;
-  float zNear = k == 0 ? uCsmNear : uCsmFar[light][k - 1];
-  float width = uCsmBand * (uCsmFar[light][k] - zNear);
-  float start = uCsmFar[light][k] - width;
-  if (depth > start) nextWeight = min((depth - start) / width, 1.0);
-  return k;
-}
+// cascadeAt(light, depth, out nextWeight): the cascade of a view depth and the next one's weight in
+// the blend band. Exercise 10.3's answer in GLSL, so it lives in a file of its own, sealed in the
+// student handout.
+#include "common/cascade_choice.glsl"
 
 // The cascade of a surface point (for the cascade-colouring view, shaders/common/cascade_colours.frag).
 int cascadeOf(int light, vec3 worldPos, out float nextWeight) {

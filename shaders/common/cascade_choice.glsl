@@ -1,0 +1,18 @@
+// The cascade a view depth falls in, and the weight of the next cascade within the blend band at
+// its far end (included by shadow_cascades.frag, which declares the uniforms): exercise 10.3's answer
+// in GLSL, sealed in the student handout. Mirrors psm::cascadeAt (common/algorithms/psm/cascades.cpp);
+// keep them in step.
+// The cascade that shades view depth `depth` of light `light` (-1: none), and the weight of the next.
+int cascadeAt(int light, float depth, out float nextWeight) {
+  nextWeight = 0.0;
+  int count = uPsmLayers[light];
+  if (count == 0 || depth < uCsmNear || depth > uCsmFar[light][count - 1]) return -1;
+  int k = 0;
+  while (k < count - 1 && depth > uCsmFar[light][k]) ++k;
+  if (k == count - 1 || uCsmBand <= 0.0) return k;
+  float zNear = k == 0 ? uCsmNear : uCsmFar[light][k - 1];
+  float width = uCsmBand * (uCsmFar[light][k] - zNear);
+  float start = uCsmFar[light][k] - width;
+  if (depth > start) nextWeight = min((depth - start) / width, 1.0);
+  return k;
+}
