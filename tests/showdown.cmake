@@ -7,6 +7,7 @@
 #   gpu.showdown.*_as_lessonNN   lesson 10 holds PSM and the hybrid maps as lessons 09 and 07 do: same figures
 #   gpu.showdown.control.*       broken set-ups the same check must reject
 #   gpu.showdown.cascades_alias  four cascades alias less than one at the same total texels
+#   gpu.showdown.cascades_warp   the warp inside each cascade (csm.warp) aliases less than without it
 #   gpu.showdown.csm_cull_*      caster culling per cascade: the same picture, fewer triangles
 #   bench.10_showdown.quick      tools/showdown_bench.sh --quick: the reports, the summary, the plot
 # The bounds are the PSM cases' (tests/psm_lessons.cmake explains them): 1.5 % of the facing
@@ -53,6 +54,7 @@ showdown_case(csm_uniform_splits ok --set technique=csm --set csm.lambda=0)
 showdown_case(csm_no_band ok --set technique=csm --set csm.band=0)
 showdown_case(csm_wide_band ok --set technique=csm --set csm.band=0.5)
 showdown_case(csm_constant_bias ok --set technique=csm --set csm.bias=constant)
+showdown_case(csm_warp ok --set technique=csm --set csm.warp=true)
 # Controls: no bias at all (acne over the lit faces), and cascades that end 5 m from the eye (every
 # shadow beyond them is lost: leaks).
 showdown_case(control.csm_no_bias fail --set technique=csm --set csm.bias=constant --set csm.bias.constant=0
@@ -73,6 +75,9 @@ endforeach()
 add_test(NAME gpu.showdown.cascades_alias COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
          -DOUT_DIR=${showdown_out} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_showdown_cascades.cmake)
 set_tests_properties(gpu.showdown.cascades_alias PROPERTIES LABELS gpu TIMEOUT 300)
+add_test(NAME gpu.showdown.cascades_warp COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
+         -DOUT_DIR=${showdown_out} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_showdown_warp.cmake)
+set_tests_properties(gpu.showdown.cascades_warp PROPERTIES LABELS gpu TIMEOUT 300)
 
 if(TARGET shadowlab_bench)
   find_program(BASH bash)

@@ -8,6 +8,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "algorithms/psm/cascades.hpp"
+#include "algorithms/psm/clipping.hpp"
+#include "algorithms/psm/lispsm.hpp"
 
 namespace shadowlab::shadow {
 
@@ -69,6 +71,26 @@ CascadeSet fitCascades(const glm::vec3& direction, const CasterBoxes& scene, con
   }
   cullPerCascade(set, scene, o.cullPerCascade);
   return set;
+}
+
+std::vector<CascadeWarp> warpCascades(const CascadeSet& set, const CascadeViewer& v, const glm::vec3& direction,
+                                      std::span<const Aabb> receivers, double band) {
+  if (set.splits.size() != set.cameras.size() + 1)
+    throw std::invalid_argument("warpCascades: " + std::to_string(set.splits.size()) + " splits for " +
+                                std::to_string(set.cameras.size()) + " cascades");
+  std::vector<CascadeWarp> out(set.cameras.size());
+  std::vector<glm::dvec3> points;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    out[k].worldToClip = glm::dmat4(set.cameras[k].viewProj());
+    const double lead = k == 0 ? 0.0 : band * (set.splits[k] - set.splits[k - 1]);
+    const psm::CameraFrustum slice =
+        psm::makeCamera(glm::dmat4(v.view), double(v.fovY), double(v.aspect), set.splits[k] - lead, set.splits[k + 1]);
+    psm::receiverKeyPoints(receivers, psm::frustumFromViewProj(slice.viewProj, slice.invViewProj), points);
+    if (points.empty()) continue;
+    const psm::LispsmCamera fit = psm::fitLispsm(slice, glm::dvec3(direction), points);
+    out[k] = {fit.worldToClip, true, fit.n};
+  }
+  return out;
 }
 
 }  // namespace shadowlab::shadow

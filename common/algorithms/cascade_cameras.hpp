@@ -5,6 +5,7 @@
 // one to the whole view (fitDirectional: the receivers where the slice meets the scene's bounds, the
 // casters that can shade them, texel snapping at the cascade's own texel size).
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -56,5 +57,20 @@ double cascadeFar(const CascadeViewer& viewer, const Aabb& bounds);
 // no cameras and say why in `problem`.
 CascadeSet fitCascades(const glm::vec3& direction, const CasterBoxes& scene, const CascadeViewer& viewer,
                        const CascadeOptions& options);
+
+// Warping inside each z-partition (Lloyd et al. 2006, [Lloyd2006]): cascade k's map becomes the
+// LiSPSM camera of its own slice of the view frustum (psm::fitLispsm: n_opt from the depths the
+// slice's receivers span), fitted to the receiver volumes the slice cuts, so the perspective warp
+// spreads each cascade's texels over its depth range as LiSPSM spreads one map's over the whole
+// view. Each slice from cascade 1 on starts `band` of the previous cascade's depth range earlier:
+// the blend band looks the next cascade up there. A slice that cuts no receiver keeps its
+// orthographic camera (warped = false).
+struct CascadeWarp {
+  glm::dmat4 worldToClip{1.0};  // world -> the cascade map's clip space (OpenGL's depth -1..1)
+  bool warped = false;
+  double n = 0.0;  // the warp's n (world units); infinite where LiSPSM fell back to its uniform map
+};
+std::vector<CascadeWarp> warpCascades(const CascadeSet& set, const CascadeViewer& viewer, const glm::vec3& direction,
+                                      std::span<const Aabb> receivers, double band);
 
 }  // namespace shadowlab::shadow

@@ -39,6 +39,10 @@ void CascadedShadowMaps::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "cull_per_cascade", &p_.cullPerCascade,
         "each cascade draws only the casters that can reach its own light volume (off: all of them, in every one)");
   r.add(n + "colours", &p_.colours, "the cascade-colouring view: each point tinted by the cascade that shades it");
+  r.add(n + "warp", &p_.warp,
+        "a LiSPSM warp inside each cascade (Lloyd et al. 2006: warping plus z-partitioning); off: orthographic maps");
+  r.add(n + "receivers.tiles", &p_.receiverTiles, 1, 64,
+        "with the warp: rough receiver volumes, large objects cut into cells of scene size / tiles");
 }
 
 // ==== 1. the slices and their light cameras (GL-free: algorithms/cascade_cameras) ===============
@@ -72,8 +76,26 @@ bool CascadedShadowMaps::fitLight(const ShadowContext& c, int i, int side) {
   std::vector<double> texels;
   for (const shadow::LightCamera& cam : l.set.cameras) texels.push_back(cam.texelWorld);
   stats_.extra.push_back({n + "splits", joined(l.set.splits, "%.3g", 1.0) + " m"});
-  stats_.extra.push_back({n + "cascade texels", joined(texels, "%.3g", 100.0) + " cm"});
+  l.matrices.clear();
+  for (const shadow::LightCamera& cam : l.set.cameras) l.matrices.push_back(glm::dmat4(cam.viewProj()));
+  if (p_.warp) warpLight(c, i);
+  else stats_.extra.push_back({n + "cascade texels", joined(texels, "%.3g", 100.0) + " cm"});
   return true;
+}
+
+// The warp inside each cascade: its slice's LiSPSM camera in place of the orthographic one (the
+// casters stay the orthographic camera's: they are those that can shade the slice, whatever the map).
+void CascadedShadowMaps::warpLight(const ShadowContext& c, int i) {
+  PerLight& l = lights_[std::size_t(i)];
+  const shadow::CascadeViewer viewer{c.viewer.view(), c.viewer.fovY, c.viewerAspect(), c.viewer.nearZ, c.viewer.farZ};
+  const std::vector<shadow::CascadeWarp> warps = shadow::warpCascades(
+      l.set, viewer, c.lights[std::size_t(i)].direction, receivers_.get(c.scene, p_.receiverTiles), p_.band);
+  std::vector<double> ns;
+  for (std::size_t k = 0; k < warps.size(); ++k) {
+    if (warps[k].warped) l.matrices[k] = warps[k].worldToClip;
+    ns.push_back(warps[k].warped ? warps[k].n : 0.0);  // 0: no receiver in the slice, orthographic
+  }
+  stats_.extra.push_back({"light" + std::to_string(i) + " cascade warp n", joined(ns, "%.3g", 1.0) + " m"});
 }
 
 // ==== 2. the depth passes: one layer per cascade of the light's array =========================
@@ -95,7 +117,7 @@ void CascadedShadowMaps::renderShadows(const ShadowContext& c) {
       continue;
     }
     std::vector<ProjectiveMapView> views;
-    for (const shadow::LightCamera& cam : l.set.cameras) views.push_back({glm::dmat4(cam.viewProj()), cam.casters});
+    for (std::size_t k = 0; k < l.set.cameras.size(); ++k) views.push_back({l.matrices[k], l.set.cameras[k].casters});
     maps_.render(c, i, views, side, l.set.casters, psm::homogeneousLight(c.lights[std::size_t(i)]), {}, stats_);
   }
   for (std::size_t i = kPsmLights; i < c.lights.size(); ++i)
@@ -109,8 +131,7 @@ void CascadedShadowMaps::renderShadows(const ShadowContext& c) {
 void CascadedShadowMaps::pushShapes(const ShadowContext& c) const {
   for (const PerLight& l : lights_)
     if (l.fitted)
-      for (std::size_t k = 0; k < l.set.cameras.size(); ++k)
-        c.debug.frustum(l.set.cameras[k].viewProj(), kCascadeColours[k]);
+      for (std::size_t k = 0; k < l.matrices.size(); ++k) c.debug.frustum(glm::mat4(l.matrices[k]), kCascadeColours[k]);
 }
 
 // ==== 3. what the lit pass reads: the projective maps, the split distances, the band ===========
@@ -138,9 +159,9 @@ void CascadedShadowMaps::renderLit(const ShadowContext& c, const LitSettings& li
 void CascadedShadowMaps::describePostProjective(const ShadowContext& c, int light,
                                                 psm::PostProjectiveShapes& out) const {
   if (light < 0 || light >= kPsmLights || !lights_[std::size_t(light)].fitted) return;
-  const shadow::CascadeSet& set = lights_[std::size_t(light)].set;
-  for (std::size_t k = 0; k < set.cameras.size(); ++k)
-    out.worldFrustum(postProjectiveCamera(c, light), glm::dmat4(set.cameras[k].viewProj()), kCascadeColours[k]);
+  const PerLight& l = lights_[std::size_t(light)];
+  for (std::size_t k = 0; k < l.matrices.size(); ++k)
+    out.worldFrustum(postProjectiveCamera(c, light), l.matrices[k], kCascadeColours[k]);
 }
 
 }  // namespace shadowlab::tech

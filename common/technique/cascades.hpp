@@ -9,8 +9,9 @@
 // GL-free fit: algorithms/cascade_cameras; storage, depth pass, bias and lookup: the projective
 // maps (technique/projective_maps, shaders/common/projective_maps.glsl); the GLSL that picks the
 // cascade: shaders/common/shadow_cascades.frag. view=cascades (the `colours` switch) draws the
-// cascade-colouring view instead of the lit frame. Directional lights only: a spot or point light
-// gets no map (lit), and the header says so.
+// cascade-colouring view instead of the lit frame. warp puts a LiSPSM warp inside each cascade
+// (Lloyd et al. 2006's warping plus z-partitioning: shadow::warpCascades). Directional lights only: a spot or point
+// light gets no map (lit), and the header says so.
 #include <vector>
 
 #include "algorithms/cascade_cameras.hpp"
@@ -32,6 +33,8 @@ struct CascadeParams {
   bool cullCasters = true;     // draw only the casters that can shade some cascade
   bool cullPerCascade = true;  // each cascade draws only the casters that can reach its own light volume
   bool colours = false;        // the cascade-colouring view instead of the lit frame
+  bool warp = false;           // a LiSPSM warp inside each cascade (Lloyd et al. 2006): off, orthographic maps
+  int receiverTiles = 8;       // with the warp: the rough receiver volumes each slice's warp is fitted to
 };
 
 class CascadedShadowMaps : public ShadowTechnique {
@@ -64,13 +67,16 @@ class CascadedShadowMaps : public ShadowTechnique {
   struct PerLight {
     bool fitted = false;
     shadow::CascadeSet set;
+    std::vector<glm::dmat4> matrices;  // each cascade's world -> map clip: its camera's, or its warp's
   };
   bool fitLight(const ShadowContext& c, int i, int side);
+  void warpLight(const ShadowContext& c, int i);
   void pushShapes(const ShadowContext& c) const;
 
   CascadeParams p_;
   ProjectiveMapSet maps_;
   std::vector<PerLight> lights_ = std::vector<PerLight>(kPsmLights);
+  ReceiverVolumes receivers_;
   glm::vec4 viewZ_{0.0f};
   float near_ = 0.1f;
   LitPass colours_{"cascades: colouring view", "common/scene.vert", "common/cascade_colours.frag"};

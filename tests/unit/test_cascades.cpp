@@ -3,6 +3,7 @@
 // cameras on a small scene whose answers follow from the geometry.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -195,4 +196,58 @@ TEST_CASE("cascades: a cascade's light volume reaches back toward the light over
   CHECK_FALSE(shadow::volumesMayIntersect(aside, toward));  // beside the map: no texel of it
   const shadow::ConvexVolume below = shadow::volumeFromBox({{-0.2f, -19.0f, -0.2f}, {0.2f, -12.0f, 0.2f}});
   CHECK_FALSE(shadow::volumesMayIntersect(below, toward));  // beyond the far plane: clamped to 1, never written
+}
+
+namespace {
+
+glm::dvec3 mapPoint(const glm::dmat4& worldToClip, const glm::dvec3& p) {
+  const glm::dvec4 h = worldToClip * glm::dvec4(p, 1.0);
+  return glm::dvec3(h) / h.w;
+}
+
+}  // namespace
+
+TEST_CASE("cascades: the warp inside each cascade holds its slice's receivers and refines the slice's near end") {
+  const Ground g;
+  shadow::CascadeOptions o;
+  o.count = 4;
+  o.lambda = 1.0;
+  o.fit.mapSize = 1024;
+  const glm::vec3 sun = glm::normalize(glm::vec3(0.6f, -0.8f, 0.0f));  // across the view: LiSPSM warps most
+  const shadow::CascadeSet set = shadow::fitCascades(sun, g.get(), viewer(), o);
+  const double band = 0.2;
+  const std::vector<shadow::CascadeWarp> warps = shadow::warpCascades(set, viewer(), sun, g.boxes, band);
+  REQUIRE(warps.size() == 4);
+  for (std::size_t k = 0; k < 4; ++k) {
+    CAPTURE(k);
+    REQUIRE(warps[k].warped);
+    CHECK(std::isfinite(warps[k].n));
+    CHECK(warps[k].n > 0.0);
+    // The slice's points on the view's axis, from where the previous cascade's blend band starts
+    // to the slice's far end, are in the warped map (the ground holds the whole axis).
+    const double lead = k == 0 ? 0.0 : band * (set.splits[k] - set.splits[k - 1]);
+    for (double t : {0.0, 0.5, 1.0}) {
+      const double depth = (set.splits[k] - lead) * (1.0 - t) + set.splits[k + 1] * t;
+      const glm::dvec3 q = mapPoint(warps[k].worldToClip, {0.0, 2.0, 20.0 - depth});
+      CHECK(glm::all(glm::lessThanEqual(glm::abs(q), glm::dvec3(1.0 + 1e-6))));
+    }
+    // The warp: 10 cm across the view cover more of the map at the slice's near end than at its
+    // far end (an orthographic cascade covers the same at both).
+    const double zn = 20.0 - set.splits[k], zf = 20.0 - set.splits[k + 1];
+    const auto across = [&](const glm::dmat4& m, double z) {
+      return glm::length(mapPoint(m, {0.05, 2.0, z}) - mapPoint(m, {-0.05, 2.0, z}));
+    };
+    const glm::dmat4 ortho(set.cameras[k].viewProj());
+    CHECK(across(ortho, zn) == doctest::Approx(across(ortho, zf)).epsilon(1e-4));
+    CHECK(across(warps[k].worldToClip, zn) > 1.2 * across(warps[k].worldToClip, zf));
+  }
+  // Receivers only 40 m ahead and beyond: the near slices cut none and keep their orthographic cameras.
+  const std::vector<Aabb> far{{{-50, -1, -50}, {50, 4, -20}}};
+  const std::vector<shadow::CascadeWarp> some = shadow::warpCascades(set, viewer(), sun, far, band);
+  CHECK_FALSE(some[0].warped);
+  CHECK(some[0].worldToClip == glm::dmat4(set.cameras[0].viewProj()));
+  CHECK(some[3].warped);
+  shadow::CascadeSet broken = set;
+  broken.splits.pop_back();
+  CHECK_THROWS_AS(shadow::warpCascades(broken, viewer(), sun, g.boxes, band), std::invalid_argument);
 }
