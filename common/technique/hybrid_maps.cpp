@@ -196,7 +196,9 @@ void HybridShadowMaps::renderShadows(const ShadowContext& c) {
 
 // ==== 5. what the lit pass reads: per light its matrix, texel size, levels, root and records ========
 std::vector<std::string> HybridShadowMaps::shaderDefines() const {
-  return {"HYBRID_FILTER " + std::to_string(int(p_.filter))};
+  std::vector<std::string> defines{"HYBRID_FILTER " + std::to_string(int(p_.filter))};
+  if (studentDescent) defines.push_back("SHADOWLAB_STUDENT_DESCENT");
+  return defines;
 }
 
 void HybridShadowMaps::bindLight(const gl::Program& p, int i, int unitRoot, int unitRecords) const {

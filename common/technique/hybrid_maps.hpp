@@ -61,6 +61,10 @@ class HybridShadowMaps : public ShadowTechnique {
   std::vector<std::string> shaderDefines() const override;
   void bindVisibility(const gl::Program& lit, int firstUnit) const override;
   void unbindVisibility(int firstUnit) const override;
+  // Lesson 07's GLSL exercise 07.5 (impl=student): the index descent from the student's
+  // shaders/07_hybrid_maps/exercises.glsl in the visibility (shaderDefines() add
+  // SHADOWLAB_STUDENT_DESCENT).
+  bool studentDescent = false;
 
   // ---- the steps of renderShadows, for a lesson that tells them one by one --------------------------
   void fitLights(const ShadowContext& c);    // 1. light cameras (GL-free)

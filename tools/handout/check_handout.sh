@@ -173,7 +173,7 @@ leak() {
   # shaders (a geometry shader, an include file, a one-line port).
   for f in common/algorithms/lighting.cpp shaders/02_shadow_maps/exercises_reference.glsl \
     shaders/03_shadow_quality/exercises_reference.glsl tests/grading/ex09_reference.cpp \
-    shaders/04_shadow_volumes/exercises_reference.glsl \
+    shaders/04_shadow_volumes/exercises_reference.glsl shaders/07_hybrid_maps/exercises_reference.glsl \
     shaders/05_soft_shadows/exercises_reference.glsl shaders/common/volumes/volume.geom \
     shaders/common/shadow_bias_slope.glsl shaders/common/soft_answers.glsl; do
     rm -rf "$dir"
