@@ -74,13 +74,17 @@ fingerprints() {
     sort -u | comm -23 - <(grep -vE '^\s*(#|$)' tools/handout/allowed_lines.txt | sed -E 's/[[:space:]]+#=.*$//' | normalize | sort -u)
 }
 
+# Each line, and the inside of a one-line definition on it (`... { inner }`: what oneLinersOf
+# fingerprints), so an answer written on one line is found too.
+withInsides() { sed -nE 'p; s/^[^{]*\{ ?(.*[^ ]) ?\}[^{}]*$/\1/p'; }
+
 bodies() {
   local handout=$1 found=0
   work=$handout
   fingerprints >"$handout.fingerprints"
   echo "$(wc -l <"$handout.fingerprints") lines of reference implementations to look for"
   while IFS= read -r -d '' f; do
-    if grep -qI . "$f" 2>/dev/null; then normalize <"$f"; else strings -n 8 "$f" | normalize; fi |
+    if grep -qI . "$f" 2>/dev/null; then normalize <"$f"; else strings -n 8 "$f" | normalize; fi | withInsides |
       sort -u | comm -12 - "$handout.fingerprints" | sed "s|^|${f#"$handout"/}: |"
   done < <(find "$handout" -type f -print0) >"$handout.matches"
   found=$(wc -l <"$handout.matches")
@@ -185,6 +189,15 @@ leak() {
     fi
     echo "a handout holding $f fails the check ($(wc -l <"$dir.matches") reference lines found)"
   done
+  # An answer written as a one-line definition: exercise 04.5's reference, joined onto one line.
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  grep -vE '^\s*(//|$)' shaders/04_shadow_volumes/exercises_reference.glsl | tr -s '\n ' ' ' >"$dir/one_line.glsl"
+  if (bodies "$dir" >/dev/null); then
+    echo "FAIL: a handout holding a one-line definition of an answer passed the check: $(cat "$dir/one_line.glsl")"
+    exit 1
+  fi
+  echo "a handout holding an answer on one line fails the check ($(wc -l <"$dir.matches") reference lines found)"
 }
 
 cmd=${1:-}
