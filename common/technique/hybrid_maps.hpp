@@ -113,6 +113,10 @@ class HybridShadowMaps : public ShadowTechnique {
   HybridBuilder builder_{"hybrid maps"};
   gl::Texture dummy_;  // an RGBA32UI texel bound where a light has no map
   gl::Program levelsView_{"hybrid maps: levels view", {"common/fullscreen.vert", "common/hybrid/levels_view.frag"}};
+  // The same view through the student's descent (studentDescent): required only while it is in use.
+  gl::Program levelsViewStudent_{"hybrid maps: levels view (student GLSL)",
+                                 {"common/fullscreen.vert", "common/hybrid/levels_view.frag"},
+                                 {"SHADOWLAB_STUDENT_DESCENT"}};
   gl::VertexArray vao_;
   LitPass sceneView_{"hybrid maps: scene view", "common/scene.vert", "common/hybrid/scene_view.frag"};
   ShadowStats stats_;
