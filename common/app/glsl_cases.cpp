@@ -45,7 +45,13 @@ std::vector<gl::Texture> uploadFixtures(const GlslExerciseSet& set) {
     gl::Texture t = gl::makeTexture(GL_TEXTURE_2D, "GLSL case fixture " + f.sampler);
     glBindTexture(GL_TEXTURE_2D, t.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, f.width, f.height, 0, GL_RED, GL_FLOAT, f.values.data());
+    if (f.words.empty())
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, f.width, f.height, 0, GL_RED, GL_FLOAT, f.values.data());
+    else if (f.channels == 4)
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32UI, f.width, f.height, 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
+                   f.words.data());
+    else
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, f.width, f.height, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, f.words.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -10,6 +10,7 @@
 //
 // Cases are registered by tests/grading/glsl/exNN_glsl.cpp (public) and
 // tests/grading/hidden/exNN_glsl_hidden.cpp (hidden, made when the grader runs: they use its seed).
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -32,11 +33,14 @@ struct GlslCase {
 };
 
 // An R32F texture the cases read through `sampler` (declared by the prelude as sampler2D):
-// GL_NEAREST, clamped to the edge, row 0 at v = 0.
+// GL_NEAREST, clamped to the edge, row 0 at v = 0. With `words` instead of `values`, an integer
+// texture (a usampler2D): R32UI, or RGBA32UI with channels = 4 (four words a texel).
 struct GlslFixture {
   std::string sampler;
   int width = 0, height = 0;
   std::vector<float> values;
+  std::vector<std::uint32_t> words;
+  int channels = 1;
 };
 
 // A render of the whole lesson, headless, with the student's shader (impl=student) and with the

@@ -46,6 +46,8 @@ void HybridShadowMaps::init() {
   casters_.build();
   builder_.init();
   levelsView_.build();
+  levelsViewStudent_.setRequired([this] { return studentDescent; });
+  levelsViewStudent_.build();
   vao_ = gl::makeVertexArray("hybrid maps: views");
   const std::uint32_t zero[4] = {0, 0, 0, 0};
   dummy_ = gl::makeTexture(GL_TEXTURE_2D, "hybrid maps: no map");
@@ -196,7 +198,9 @@ void HybridShadowMaps::renderShadows(const ShadowContext& c) {
 
 // ==== 5. what the lit pass reads: per light its matrix, texel size, levels, root and records ========
 std::vector<std::string> HybridShadowMaps::shaderDefines() const {
-  return {"HYBRID_FILTER " + std::to_string(int(p_.filter))};
+  std::vector<std::string> defines{"HYBRID_FILTER " + std::to_string(int(p_.filter))};
+  if (studentDescent) defines.push_back("SHADOWLAB_STUDENT_DESCENT");
+  return defines;
 }
 
 void HybridShadowMaps::bindLight(const gl::Program& p, int i, int unitRoot, int unitRecords) const {
@@ -244,15 +248,16 @@ void HybridShadowMaps::drawLevels(int light, int x, int y, int width, int height
   glGetIntegerv(GL_VIEWPORT, viewport);
   glViewport(x, y, width, height);
   glDisable(GL_DEPTH_TEST);
-  levelsView_.use();
-  levelsView_.set("uRoot", 0);
-  levelsView_.set("uRecords", 1);
-  levelsView_.set("uLevels", m->levels);
-  levelsView_.set("uSize", m->sourceSize);
+  const gl::Program& view = studentDescent ? levelsViewStudent_ : levelsView_;  // GLSL exercise 07.5
+  view.use();
+  view.set("uRoot", 0);
+  view.set("uRecords", 1);
+  view.set("uLevels", m->levels);
+  view.set("uSize", m->sourceSize);
   const hybrid::DepthSpace space = mergeRule(light).space;
-  levelsView_.set("uPerspective", space.perspective);
-  levelsView_.set("uNear", space.nearZ);
-  levelsView_.set("uFar", space.farZ);
+  view.set("uPerspective", space.perspective);
+  view.set("uNear", space.nearZ);
+  view.set("uFar", space.farZ);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, m->root.id());
   glBindSampler(0, 0);

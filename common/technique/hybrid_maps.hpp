@@ -61,6 +61,10 @@ class HybridShadowMaps : public ShadowTechnique {
   std::vector<std::string> shaderDefines() const override;
   void bindVisibility(const gl::Program& lit, int firstUnit) const override;
   void unbindVisibility(int firstUnit) const override;
+  // Lesson 07's GLSL exercise 07.5 (impl=student): the index descent from the student's
+  // shaders/07_hybrid_maps/exercises.glsl in the visibility (shaderDefines() add
+  // SHADOWLAB_STUDENT_DESCENT).
+  bool studentDescent = false;
 
   // ---- the steps of renderShadows, for a lesson that tells them one by one --------------------------
   void fitLights(const ShadowContext& c);    // 1. light cameras (GL-free)
@@ -109,6 +113,10 @@ class HybridShadowMaps : public ShadowTechnique {
   HybridBuilder builder_{"hybrid maps"};
   gl::Texture dummy_;  // an RGBA32UI texel bound where a light has no map
   gl::Program levelsView_{"hybrid maps: levels view", {"common/fullscreen.vert", "common/hybrid/levels_view.frag"}};
+  // The same view through the student's descent (studentDescent): required only while it is in use.
+  gl::Program levelsViewStudent_{"hybrid maps: levels view (student GLSL)",
+                                 {"common/fullscreen.vert", "common/hybrid/levels_view.frag"},
+                                 {"SHADOWLAB_STUDENT_DESCENT"}};
   gl::VertexArray vao_;
   LitPass sceneView_{"hybrid maps: scene view", "common/scene.vert", "common/hybrid/scene_view.frag"};
   ShadowStats stats_;

@@ -46,7 +46,8 @@ void StencilVolumes::declare(ParamRegistry& r, const std::string& n) {
 }
 
 void StencilVolumes::init() {
-  for (gl::Program* p : {&ambient_, &volume_, &volumeGs_, &heat_}) p->build();
+  for (gl::Program* p : {&ambient_, &volume_, &heat_}) p->build();
+  volumeGs_.build();
   emptyVao_ = gl::makeVertexArray("volumes: fullscreen triangle");
   lineVao_ = gl::makeVertexArray("volumes: silhouette lines");
   lineBuffer_ = gl::makeBuffer(GL_ARRAY_BUFFER, "volumes: silhouette lines");

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "algorithms/shadow_volume.hpp"
+#include "app/exercise_program.hpp"
 #include "technique/technique.hpp"
 
 namespace shadowlab::tech {
@@ -60,6 +61,9 @@ class StencilVolumes : public ShadowTechnique {
   void renderLit(const ShadowContext& c, const LitSettings& lit) override;
 
   StencilVolumeHooks hooks;
+  // Lesson 04's GLSL exercise 04.5 (impl=student): the extrusion to infinity from the student's
+  // shaders/04_shadow_volumes/exercises.glsl in the geometry shader (silhouettes=gpu).
+  bool studentExtrusion = false;
   StencilVolumeParams& params() { return p_; }
   // The stencil view's colour key (none in the other views).
   std::optional<Legend> legend() const;
@@ -112,8 +116,10 @@ class StencilVolumes : public ShadowTechnique {
   gl::Program ambient_{"volumes: depth + ambient", {"common/scene.vert", "common/volumes/ambient.frag"}};
   gl::ProgramVariants lit_{"volumes: lit", {"common/scene.vert", "common/volumes/lit.frag"}};  // per light kind
   gl::Program volume_{"volumes: volume", {"common/volumes/volume.vert", "common/volumes/volume.frag"}};
-  gl::Program volumeGs_{"volumes: volume gs",
-                        {"common/volumes/volume_gs.vert", "common/volumes/volume.geom", "common/volumes/volume.frag"}};
+  ExerciseProgram volumeGs_{
+      "volumes: volume gs",
+      {"common/volumes/volume_gs.vert", "common/volumes/volume.geom", "common/volumes/volume.frag"},
+      [this] { return studentExtrusion; }};
   gl::Program heat_{"volumes: stencil heatmap", {"common/fullscreen.vert", "common/volumes/heat.frag"}};
   gl::VertexArray emptyVao_, lineVao_;
   gl::Buffer lineBuffer_;

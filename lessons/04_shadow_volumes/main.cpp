@@ -18,7 +18,8 @@
 // heatmap, silhouettes), Z the method (auto, z-pass, z-fail), S CPU/GPU silhouettes, T two-sided
 // stencil, A animates the point light, M the ground-truth error overlay; F1 help.
 // Exercises (exercises.hpp): silhouettes, the infinite projection, the stencil ops, the near-plane
-// test. `--set impl=student` runs YOUR versions in the lesson.
+// test; in GLSL (shaders/04_shadow_volumes/exercises.glsl) the extrusion to infinity.
+// `--set impl=student` runs YOUR versions in the lesson.
 #include <cmath>
 #include <iostream>
 
@@ -75,6 +76,8 @@ class ShadowVolumeLesson : public Lesson {
     exercises.add("04.3", "stencilOps", "the stencil never counts: nothing is shadowed");
     exercises.add("04.4", "volumeMayReachNearPlane",
                   "method=auto never picks z-fail: wrong shadows with the camera in a volume");
+    exercises.addGlsl("04.5", "extrudeToInfinity",
+                      "silhouettes=gpu extrudes nothing: the volumes have no length, nothing is shadowed");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: the light shadows never take away");
     r.add("specular", &p_.specular, 0, 1, "ks");
     r.add("shininess", &p_.shininess, 1, 256, "the specular exponent");
@@ -87,7 +90,10 @@ class ShadowVolumeLesson : public Lesson {
 
   LessonInfo info() const override { return {"04", "04_shadow_volumes", "Shadow volumes", kSummary, 3, kHelp, true}; }
 
-  void init() override { volumes_.init(); }
+  void init() override {
+    volumes_.studentExtrusion = p_.impl == Impl::Student;  // a broken exercises.glsl stops a headless run at once
+    volumes_.init();
+  }
 
   MeasureSource measureSource() override {
     return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}};
@@ -101,6 +107,7 @@ class ShadowVolumeLesson : public Lesson {
     }
     // impl=student: the student's silhouette test, projection, stencil ops and near-plane test.
     volumes_.hooks = {};
+    volumes_.studentExtrusion = p_.impl == Impl::Student;  // GLSL exercise 04.5 (silhouettes=gpu)
     if (p_.impl == Impl::Student)
       volumes_.hooks = {ex04::stencilOps, &ex04::isSilhouette, ex04::infinitePerspective,
                         ex04::volumeMayReachNearPlane};

@@ -77,6 +77,7 @@ class HybridMapsLesson : public Lesson {
     exercises.add("07.2", "sweepLevel: one level of the sweep", "the lesson stops: the sweep returns a 0x0 grid");
     exercises.add("07.3", "descend: the index descent", "");
     exercises.add("07.4", "linearDepth", "");
+    exercises.addGlsl("07.5", "hybridDescend: the index descent", "every tap reads depth 1.0: no shadows");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     r.add("edge_band.texels", &p_.bandTexels, 0.5f, 16, "measured near an edge: within this many texels of a boundary");
     r.add("edge_band.map_size", &p_.bandMapSize, 0, 8192,
@@ -110,6 +111,7 @@ class HybridMapsLesson : public Lesson {
         return ex07::sweepLevel(children, rule.eps0);
       };
     else hybrid_.sweep = nullptr;
+    hybrid_.studentDescent = p_.impl == Impl::Student;  // GLSL exercise 07.5: your descent, every tap
   }
 
   void render(const FrameInfo& f) override {

@@ -148,7 +148,9 @@ namespace {
 
 // A probe: for every source texel of the map, the GLSL descent's depth bits, level and steps
 // (shaders/common/hybrid_descent.glsl), written into an RGBA32UI target of the map's size. The
-// shader lives in a scratch shader root next to a copy of the include it tests.
+// shader lives in a scratch shader root next to copies of the includes it tests (the descent
+// itself is exercise 07.5's reference, 07_hybrid_maps/exercises_reference.glsl; the preprocessor
+// expands both sides of its #ifdef, so the student's file is copied too).
 const char* kProbe = R"(#version 410 core
 #include "common/hybrid_descent.glsl"
 uniform usampler2D uRoot, uRecords;
@@ -163,8 +165,11 @@ void main() {
 std::vector<std::uint32_t> probe(const tech::HybridMapGpu& map) {
   const fs::path root = fs::temp_directory_path() / "shadowlab_hybrid_probe";
   fs::create_directories(root / "shaders/common");
-  fs::copy_file(fs::path(configuredSourceRoot()) / "shaders/common/hybrid_descent.glsl",
-                root / "shaders/common/hybrid_descent.glsl", fs::copy_options::overwrite_existing);
+  fs::create_directories(root / "shaders/07_hybrid_maps");
+  for (const char* f : {"common/hybrid_descent.glsl", "common/hybrid_texel.glsl", "07_hybrid_maps/exercises.glsl",
+                        "07_hybrid_maps/exercises_reference.glsl"})
+    fs::copy_file(fs::path(configuredSourceRoot()) / "shaders" / f, root / "shaders" / f,
+                  fs::copy_options::overwrite_existing);
   fs::copy_file(fs::path(configuredSourceRoot()) / "shaders/common/fullscreen.vert",
                 root / "shaders/common/fullscreen.vert", fs::copy_options::overwrite_existing);
   std::ofstream(root / "shaders/probe.frag") << kProbe;

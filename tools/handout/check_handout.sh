@@ -74,13 +74,17 @@ fingerprints() {
     sort -u | comm -23 - <(grep -vE '^\s*(#|$)' tools/handout/allowed_lines.txt | sed -E 's/[[:space:]]+#=.*$//' | normalize | sort -u)
 }
 
+# Each line, and the inside of a one-line definition on it (`... { inner }`: what oneLinersOf
+# fingerprints), so an answer written on one line is found too.
+withInsides() { sed -nE 'p; s/^[^{]*\{ ?(.*[^ ]) ?\}[^{}]*$/\1/p'; }
+
 bodies() {
   local handout=$1 found=0
   work=$handout
   fingerprints >"$handout.fingerprints"
   echo "$(wc -l <"$handout.fingerprints") lines of reference implementations to look for"
   while IFS= read -r -d '' f; do
-    if grep -qI . "$f" 2>/dev/null; then normalize <"$f"; else strings -n 8 "$f" | normalize; fi |
+    if grep -qI . "$f" 2>/dev/null; then normalize <"$f"; else strings -n 8 "$f" | normalize; fi | withInsides |
       sort -u | comm -12 - "$handout.fingerprints" | sed "s|^|${f#"$handout"/}: |"
   done < <(find "$handout" -type f -print0) >"$handout.matches"
   found=$(wc -l <"$handout.matches")
@@ -173,6 +177,7 @@ leak() {
   # shaders (a geometry shader, an include file, a one-line port).
   for f in common/algorithms/lighting.cpp shaders/02_shadow_maps/exercises_reference.glsl \
     shaders/03_shadow_quality/exercises_reference.glsl tests/grading/ex09_reference.cpp \
+    shaders/04_shadow_volumes/exercises_reference.glsl shaders/07_hybrid_maps/exercises_reference.glsl \
     shaders/05_soft_shadows/exercises_reference.glsl shaders/common/volumes/volume.geom \
     shaders/common/shadow_bias_slope.glsl shaders/common/soft_answers.glsl; do
     rm -rf "$dir"
@@ -184,6 +189,15 @@ leak() {
     fi
     echo "a handout holding $f fails the check ($(wc -l <"$dir.matches") reference lines found)"
   done
+  # An answer written as a one-line definition: exercise 04.5's reference, joined onto one line.
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  grep -vE '^\s*(//|$)' shaders/04_shadow_volumes/exercises_reference.glsl | tr -s '\n ' ' ' >"$dir/one_line.glsl"
+  if (bodies "$dir" >/dev/null); then
+    echo "FAIL: a handout holding a one-line definition of an answer passed the check: $(cat "$dir/one_line.glsl")"
+    exit 1
+  fi
+  echo "a handout holding an answer on one line fails the check ($(wc -l <"$dir.matches") reference lines found)"
 }
 
 cmd=${1:-}

@@ -20,7 +20,16 @@ uniform bool uTwoSided;
 bool facesLight(vec3 a, vec3 b, vec3 c) {
   return dot(cross(b - a, c - a), uLight.xyz - a * uLight.w) > 0.0;
 }
-vec4 atInfinity(vec3 p) { return uViewProj * vec4(p * uLight.w - uLight.xyz, 0.0); }
+// The extrusion, extrudeToInfinity(p, light): exercise 04.5 (GLSL). The student's with
+// impl=student in lesson 04 (StencilVolumes::studentExtrusion builds this shader with
+// SHADOWLAB_STUDENT_GLSL), else the reference (sealed in the student handout).
+#ifdef SHADOWLAB_STUDENT_GLSL
+#include "04_shadow_volumes/exercises.glsl"
+#else
+#include "04_shadow_volumes/exercises_reference.glsl"
+#endif
+
+vec4 atInfinity(vec3 p) { return uViewProj * extrudeToInfinity(p, uLight); }
 vec4 onCaster(vec3 p) { return uViewProj * vec4(p, 1.0); }
 
 void main() {

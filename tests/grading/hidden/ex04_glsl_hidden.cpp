@@ -1,0 +1,39 @@
+// Hidden GLSL cases for lesson 04 (instructor tree only): random extrusions, and the lesson
+// rendered from random cameras and suns with silhouettes=gpu, with the seed the grader chooses.
+#include <cmath>
+#include <random>
+
+#include <glm/glm.hpp>
+
+#include "../glsl/ex04_glsl_cases.hpp"
+#include "app/glsl_cases.hpp"
+#include "grading/cases.hpp"
+
+namespace {
+using shadowlab::glslFloat;
+
+shadowlab::HiddenGlsl hidden() {
+  shadowlab::HiddenGlsl h;
+  std::mt19937_64 rng(shadowlab::grading::seedFor("ex04 GLSL hidden"));
+  for (int i = 0; i < 24; ++i)
+    h.cases.push_back(
+        shadowlab::ex04glsl::randomExtrusion(rng, "ex04.5: hidden random extrusions " + std::to_string(i), i % 2 == 1));
+  std::uniform_real_distribution<float> u(0, 1);
+  for (int i = 0; i < 2; ++i) {
+    const float a = 6.2832f * u(rng);
+    const glm::vec3 sun = glm::normalize(glm::vec3(std::cos(a), -(0.5f + u(rng)), std::sin(a)));
+    h.renders.push_back(
+        {"ex04.5: hidden render " + std::to_string(i) + ": a random sun and camera, silhouettes=gpu",
+         {"--set", "silhouettes=gpu", "--set",
+          "light0.direction=" + glslFloat(sun.x) + " " + glslFloat(sun.y) + " " + glslFloat(sun.z), "--set",
+          "camera.yaw=" + glslFloat(6.2832f * u(rng)), "--set", std::string("method=") + (i == 0 ? "z_fail" : "auto")},
+         8,
+         0.001,
+         0.05,
+         true});
+  }
+  return h;
+}
+
+const bool registered = (shadowlab::registerHiddenGlslCases("04_shadow_volumes", hidden), true);
+}  // namespace
