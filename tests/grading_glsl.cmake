@@ -108,7 +108,8 @@ if(TARGET lesson_04_shadow_volumes)
            -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_exercises.cmake)
   set_tests_properties(gpu.04_shadow_volumes.stub_banner_black PROPERTIES LABELS gpu)
 endif()
-foreach(lesson IN ITEMS 02_shadow_maps 03_shadow_quality 05_soft_shadows 06_texture_filtering)
+foreach(lesson IN ITEMS 02_shadow_maps 03_shadow_quality 05_soft_shadows 06_texture_filtering
+                        08_psm 09_psm_fixes)
   if(TARGET glsl_lesson_${lesson})
     string(SUBSTRING ${lesson} 0 2 nn)
     add_test(NAME gpu.${lesson}.exercises_panel_reference COMMAND ${CMAKE_COMMAND}

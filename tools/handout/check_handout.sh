@@ -173,7 +173,8 @@ leak() {
   # shaders (a geometry shader, an include file, a one-line port).
   for f in common/algorithms/lighting.cpp shaders/02_shadow_maps/exercises_reference.glsl \
     shaders/03_shadow_quality/exercises_reference.glsl tests/grading/ex09_reference.cpp \
-    shaders/05_soft_shadows/exercises_reference.glsl shaders/common/volumes/volume.geom \
+    shaders/05_soft_shadows/exercises_reference.glsl shaders/08_psm/exercises_reference.glsl \
+    shaders/09_psm_fixes/exercises_reference.glsl shaders/common/volumes/volume.geom \
     shaders/common/shadow_bias_slope.glsl shaders/common/soft_answers.glsl; do
     rm -rf "$dir"
     mkdir -p "$dir"
