@@ -30,15 +30,15 @@ inline std::string glsl(const FaceCall& c) {
 // The layer a call returns, by the library's cubeFaceOf (algorithms/psm/cube_faces.hpp: the
 // faces with a map as the hidden set).
 inline int layerOf(const glm::dvec3& q, const glm::dvec4& light, const std::array<int, 6>& layers) {
-  psm::PostProjectiveLight l;
+  psm::PostProjectiveLight post;  // a point light's kind (in front, behind) does not matter here
   if (light.w == 0) {
-    l.kind = psm::PostLightKind::Direction;
-    l.direction = glm::normalize(glm::dvec3(light));
-  } else l.position = glm::dvec3(light);
+    post.kind = psm::PostLightKind::Direction;
+    post.direction = glm::normalize(glm::dvec3(light));
+  } else post.position = glm::dvec3(light);
   unsigned mask = 0;
   for (int f = 0; f < 6; ++f)
     if (layers[std::size_t(f)] >= 0) mask |= 1u << f;
-  const int f = psm::cubeFaceOf(q, l, mask);
+  const int f = psm::cubeFaceOf(q, post, mask);
   return f < 0 ? -1 : layers[std::size_t(f)];
 }
 
