@@ -218,6 +218,8 @@ std::vector<std::string> ProjectiveMapSet::shaderDefines() const {
   std::vector<std::string> defines;
   if (anyFaces()) defines.push_back("PSM_FACES");
   if (p_.normalOffset > 0) defines.push_back("PSM_NORMAL_OFFSET");
+  if (studentLookup) defines.push_back("SHADOWLAB_STUDENT_PSM_LOOKUP");
+  if (studentFaces) defines.push_back("SHADOWLAB_STUDENT_PSM_FACES");
   return defines;
 }
 

@@ -100,6 +100,10 @@ class ProjectiveMapSet {
   // reference in the depth pass's vertex shader.
   std::function<glm::dvec3(const glm::dmat4&, const glm::dvec3&, const glm::dvec3&, double, double, double)>
       studentBias;
+  // The GLSL exercises (impl=student): lesson 08's map lookup (08.3, psmMapCoords) and lesson 09's
+  // face choice (09.6, cubeFaceLayer) from the student's shaders/NN_name/exercises.glsl
+  // (shaderDefines() add SHADOWLAB_STUDENT_PSM_LOOKUP / SHADOWLAB_STUDENT_PSM_FACES).
+  bool studentLookup = false, studentFaces = false;
   // The layers of light i side by side in (x, y, w, h) of the bound framebuffer (view=map).
   void drawLayers(int light, int x, int y, int w, int h);
 

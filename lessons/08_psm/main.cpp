@@ -15,7 +15,8 @@
 //
 // Controls: orbit/pan/zoom with the mouse; T the technique, V the view, P the post-projective view,
 // O the god view, M ground truth, Y turns the camera (turn.speed); F1 help. Exercises (exercises.hpp):
-// the post-projective light, the virtual camera's slide; `--set impl=student` runs yours.
+// the post-projective light, the virtual camera's slide; in GLSL (shaders/08_psm/exercises.glsl)
+// the lookup in the map; `--set impl=student` runs yours.
 #include <algorithm>
 
 #include "app/lesson.hpp"
@@ -99,6 +100,7 @@ class OriginalPsmLesson : public Lesson {
     declareImpl(r, &p_.impl, "whose post-projective light and virtual camera slide the PSM runs");
     exercises.add("08.1", "postProjectiveLight", "the PSM's light is a direction along +z: its shadows are wrong");
     exercises.add("08.2", "virtualCameraShift: the slide", "no slide: casters behind the camera cast no shadow");
+    exercises.addGlsl("08.3", "psmMapCoords", "every point is outside the maps: no shadows");
     r.add("equal_texels", &p_.equalTexels, "the uniform map gets the PSM's map_size (the same texels)");
     r.add("turn", &p_.turn, "turn the camera (turn.speed): a caster leaves the view").hotkey = "Y";
     r.add("turn.speed", &p_.turnSpeed, -1, 1, "how fast the camera turns, radians per second");
@@ -134,6 +136,7 @@ class OriginalPsmLesson : public Lesson {
     psm::PsmSwitches& steps = psm_.studentSteps();
     steps.toPostProjective = student ? decltype(steps.toPostProjective)(studentLight) : nullptr;
     steps.virtualShift = student ? decltype(steps.virtualShift)(studentShift) : nullptr;
+    psm_.maps().studentLookup = student;  // GLSL exercise 08.3: your lookup in the map
   }
 
   void render(const FrameInfo& f) override {

@@ -18,7 +18,8 @@
 // Controls: orbit/pan/zoom with the mouse; I fix 1, C fix 2, F cycles fix 3, B the bias, T the
 // technique, V the view, P the post-projective view, O the god view, M ground truth, 1 2 the
 // lights; F1 help. Exercises (exercises.hpp): the inverse projection, the smallest cone, the face
-// test, the texel-size bias, LiSPSM's n_opt; `--set impl=student` runs yours in the lesson.
+// test, the texel-size bias, LiSPSM's n_opt; in GLSL (shaders/09_psm_fixes/exercises.glsl) the
+// face map a point is looked up in; `--set impl=student` runs yours in the lesson.
 #include <numbers>
 
 #include "algorithms/psm/post_shapes.hpp"
@@ -94,6 +95,7 @@ class PsmFixesLesson : public Lesson {
     exercises.add("09.3", "cubeFaceVisible", "fix 3 (fix.faces) sees no face of the unit cube: those shadows vanish");
     exercises.add("09.4", "texelSizeBias", "bias=world moves every caster vertex to the origin: its shadows vanish");
     exercises.add("09.5", "lispsmOptimalN", "technique=lispsm gets n = 0: its map is wrong");
+    exercises.addGlsl("09.6", "cubeFaceLayer", "fix 3's face maps are never looked up: their shadows vanish");
     r.add("equal_texels", &p_.equalTexels,
           "LiSPSM and the uniform map get the PSM's map_size (a light's total texels)");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
@@ -141,6 +143,7 @@ class PsmFixesLesson : public Lesson {
     steps.faceVisible = student ? decltype(steps.faceVisible)(studentFaceVisible) : nullptr;
     psm_.maps().studentBias = student ? decltype(psm_.maps().studentBias)(ex09::texelSizeBias) : nullptr;
     lispsm_.optimalN = student ? decltype(lispsm_.optimalN)(ex09::lispsmOptimalN) : nullptr;
+    psm_.maps().studentFaces = student;  // GLSL exercise 09.6: your face choice (fix.faces)
   }
 
   void render(const FrameInfo& f) override {

@@ -22,6 +22,15 @@ uniform vec4 uPsmClipW[PSM_LIGHTS * PSM_MAPS];
 uniform float uPsmNormalOffset;
 uniform Light uLights[MAX_LIGHTS];
 
+// A point's place in a map, psmMapCoords: exercise 08.3 (GLSL). The student's with impl=student in
+// lesson 08 (the maps' shaderDefines() add SHADOWLAB_STUDENT_PSM_LOOKUP), else the reference
+// (sealed in the student handout).
+#ifdef SHADOWLAB_STUDENT_PSM_LOOKUP
+#include "08_psm/exercises.glsl"
+#else
+#include "08_psm/exercises_reference.glsl"
+#endif
+
 // V of light `light` from its map `layer` at the surface point; texelCoords: the point's texel
 // coordinates in that map (vec2(0) outside it).
 float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, out vec2 texelCoords) {
@@ -38,9 +47,9 @@ float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, out vec2 tex
     q += N * uPsmNormalOffset * texel * sqrt(1.0 - c * c);
   }
 #endif
-  vec4 h = uPsmMatrix[map] * vec4(q, 1.0);
-  if (!(h.w > 0.0)) return 1.0;  // outside every light frustum: nothing known, lit
-  vec3 p = h.xyz / h.w * 0.5 + 0.5;
+  vec4 m = psmMapCoords(uPsmMatrix[map], q);  // (u, v, depth, 1), or vec4(0.0)
+  if (m.w == 0.0) return 1.0;                 // outside every light frustum: nothing known, lit
+  vec3 p = m.xyz;
   texelCoords = p.xy * uPsmSize[light];
   if (p.z > 1.0) return 1.0;
   return texture(uPsmMaps[light], vec4(p.xy, float(layer), p.z - uPsmConstantBias));

@@ -41,10 +41,10 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   vec2 plane = softReceiverPlane(dx, dy, r, i);
   float bias = softBias(r);
   float a = softRotation(gl_FragCoord.xy);
-  mat2 turn = mat2(cos(a), sin(a), -sin(a), cos(a));
+  mat2 turn = softTapTurn(a);
 #ifdef PCSS
   float near = uSoftDepthRange[i].x, tanHalf = uSoftTanHalfFov[i], R = uSoftRadius[i];
-  float search = min(R * max(r.z - near, 0.0) / (2.0 * tanHalf * near * r.z), uMaxSearch);
+  float search = softPcssSearchUv(R, r.z, near, tanHalf, uMaxSearch);
   vec2 found = blockerSearch(i, r.uv, r.z, plane, bias, search, turn);  // (mean distance, count)
   if (found.y == 0.0) return softHorizon(i, worldPos, N);  // nothing can hide the light: no filter paid
   if (found.y == float(SEARCH_TAPS)) return 0.0;           // the whole search region blocks it: umbra

@@ -15,28 +15,21 @@ uniform vec4 uPsmPostLight[PSM_LIGHTS];         // the light there: (position, 1
 uniform int uPsmLayerOfFace[PSM_LIGHTS * 6];    // faces 0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z; -1: none
 
 // The hidden face the ray from the light through the point leaves the cube by (for a direction:
-// the ray through the point along -direction): algorithms/psm/cube_faces.cpp, cubeFaceOf.
+// the ray through the point along -direction), cubeFaceLayer: exercise 09.6 (GLSL). The student's
+// with impl=student in lesson 09 (the maps' shaderDefines() add SHADOWLAB_STUDENT_PSM_FACES), else
+// the reference (sealed in the student handout).
+#ifdef SHADOWLAB_STUDENT_PSM_FACES
+#include "09_psm_fixes/exercises.glsl"
+#else
+#include "09_psm_fixes/exercises_reference.glsl"
+#endif
+
 int faceLayer(int i, vec3 worldPos) {
   vec4 h = uPsmCamera[i] * vec4(worldPos, 1.0);
   vec3 q = h.xyz / h.w;  // a visible point: in front of the camera, w > 0
-  vec4 L = uPsmPostLight[i];
-  vec3 v = L.w == 0.0 ? -L.xyz : q - L.xyz;
-  vec3 o = L.w == 0.0 ? q : L.xyz;
-  float best = 3.0e38;
-  int layer = -1;
-  for (int f = 0; f < 6; ++f) {
-    int k = uPsmLayerOfFace[i * 6 + f];
-    vec3 n = vec3(0.0);
-    n[f / 2] = (f % 2 == 0) ? 1.0 : -1.0;
-    float nv = dot(n, v);
-    if (k < 0 || nv <= 0.0) continue;
-    float t = (1.0 - dot(n, o)) / nv;
-    if (t < best) {
-      best = t;
-      layer = k;
-    }
-  }
-  return layer;
+  int layers[6];
+  for (int f = 0; f < 6; ++f) layers[f] = uPsmLayerOfFace[i * 6 + f];
+  return cubeFaceLayer(q, uPsmPostLight[i], layers);
 }
 #endif
 

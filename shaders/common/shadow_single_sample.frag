@@ -69,15 +69,15 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
     return hard * softHorizon(i, worldPos, N);  // not the plane: the hard shadow
 #endif
   float near = uSoftDepthRange[i].x, tanHalf = uSoftTanHalfFov[i], R = uSoftRadius[i];
-  float search = min(R * max(r.z - near, 0.0) / (2.0 * tanHalf * near * r.z), uMaxSearch);
+  float search = softPcssSearchUv(R, r.z, near, tanHalf, uMaxSearch);
   float a = softRotation(gl_FragCoord.xy);
-  mat2 turn = mat2(cos(a), sin(a), -sin(a), cos(a));
+  mat2 turn = softTapTurn(a);
   float zMean = meanBlockerDepth(i, r, plane, bias, search, turn);
   if (zMean <= 0.0) return hard * softHorizon(i, worldPos, N);
   // Step 2: the taps again, over the penumbra these blockers can throw (the hull's thickness at
   // their mean depth; for plateaus the full width 2r, stretched by 1 / (n.L) on the plane), so
   // they are dense where the nearest blocker is.
-  float hull = R * max(r.z - zMean, 0.0) / (zMean * 2.0 * r.z * tanHalf);
+  float hull = softPcssRadiusUv(R, r.z, zMean, tanHalf);
 #ifdef HAINES
   hull *= 2.0 / max(N.y * normalize(uLights[i].position - worldPos).y, 0.2);
 #endif

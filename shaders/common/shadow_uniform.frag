@@ -10,6 +10,8 @@
 // light needs; without them the same code reads the uniforms (the generic variant).
 #include "common/light.glsl"
 #include "common/shadow_bias.glsl"
+// softTapTurn, the Poisson taps' per-pixel turn (exercise 05.4's rotation: sealed in the handout).
+#include "common/soft_answers.glsl"
 
 const int SHADOW_NONE = 0, SHADOW_ORTHO = 1, SHADOW_PERSPECTIVE = 2, SHADOW_CUBE = 3;
 
@@ -88,7 +90,7 @@ float filtered2D(int map, vec3 p, float bias, vec2 dzduv, float size) {
   float texel = 1.0 / size, sum = 0.0;
   if (FILTER == 2) return pcfKernel(map, p.xy, ref, dzduv, texel, PCF_N);
   float a = rotationAngle(gl_FragCoord.xy);
-  mat2 R = mat2(cos(a), sin(a), -sin(a), cos(a));
+  mat2 R = softTapTurn(a);
   for (int i = 0; i < 16; ++i) {
     vec2 o = R * POISSON[i] * uPoissonRadius * texel;
     sum += tap2D(map, vec3(p.xy + o, ref + dot(dzduv, o)));

@@ -21,6 +21,17 @@ cd "$root"
 # A line as compared: comments and surrounding space dropped, inner space collapsed.
 normalize() { sed -E 's|//.*$||; s/^[[:space:]]+//; s/[[:space:]]+$//; s/[[:space:]]+/ /g'; }
 
+# A line's shape, for the GLSL answers: the line as compared, less a leading `return ` or
+# declaration (`TYPE NAME = `) and the trailing `;`, with every name that is not called (variables,
+# their members) one `_`. An answer copied with other variable names or into a declaration keeps
+# its shape (`mat2 turn = mat2(cos(a), ...)` is `return mat2(cos(a), ...)`).
+shape() {
+  normalize | perl -pe 's/^return //; s/^(const )?[A-Za-z_][A-Za-z0-9_]* [A-Za-z_][A-Za-z0-9_]* = //; s/;$//;
+    s/\b[A-Za-z_][A-Za-z0-9_]*\b(?!\s*\()/_/g; s/_(\._)+/_/g'
+}
+# Shapes specific enough to be an answer, not plumbing: 30 characters or more, four names or more.
+answerShapes() { awk 'length($0) >= 30 && gsub(/_/, "_") >= 4'; }
+
 # The reference implementations: the bodies of the functions the reference exercises call
 # (tests/grading/exNN_reference.cpp -> common/algorithms), those files' own bodies, and the sealed
 # shader files; every line of them long enough to be an answer rather than a brace or a loop head.
@@ -66,12 +77,19 @@ fingerprints() {
   sealed=$(sed -E 's/#.*//; s/^\s+|\s+$//g' tools/handout/sealed_shaders.txt | grep . | sed 's|^|shaders/|')
   # shellcheck disable=SC2086
   { bodyOf '[A-Za-z_]+' $sealed; oneLinersOf '[A-Za-z_]+' $sealed; } >>"$work.bodies"
+  # shellcheck disable=SC2086
+  { bodyOf '[A-Za-z_]+' $sealed; oneLinersOf '[A-Za-z_]+' $sealed; } >"$work.glsl_bodies"
   glslAnswers | while read -r file name; do
     bodyOf "$name" "$file"
     oneLinersOf "$name" "$file"
-  done >>"$work.bodies"
+  done | tee -a "$work.glsl_bodies" >>"$work.bodies"
   normalize <"$work.bodies" | awk 'length($0) >= 24' | grep -vE '^(for \(|\}|if \(.*\) (continue|break);$)' |
-    sort -u | comm -23 - <(grep -vE '^\s*(#|$)' tools/handout/allowed_lines.txt | sed -E 's/[[:space:]]+#=.*$//' | normalize | sort -u)
+    sort -u | comm -23 - <(allowedLines | normalize | sort -u)
+}
+allowedLines() { grep -vE '^\s*(#|$)' tools/handout/allowed_lines.txt | sed -E 's/[[:space:]]+#=.*$//'; }
+# The GLSL answers' shapes (after fingerprints): found in a handout's text, an answer rewritten.
+shapeFingerprints() {
+  shape <"$work.glsl_bodies" | answerShapes | sort -u | comm -23 - <(allowedLines | shape | sort -u)
 }
 
 # Each line, and the inside of a one-line definition on it (`... { inner }`: what oneLinersOf
@@ -82,10 +100,13 @@ bodies() {
   local handout=$1 found=0
   work=$handout
   fingerprints >"$handout.fingerprints"
-  echo "$(wc -l <"$handout.fingerprints") lines of reference implementations to look for"
+  shapeFingerprints >"$handout.shapes"
+  echo "$(wc -l <"$handout.fingerprints") lines of reference implementations and $(wc -l <"$handout.shapes") shapes of GLSL answers to look for"
   while IFS= read -r -d '' f; do
-    if grep -qI . "$f" 2>/dev/null; then normalize <"$f"; else strings -n 8 "$f" | normalize; fi | withInsides |
-      sort -u | comm -12 - "$handout.fingerprints" | sed "s|^|${f#"$handout"/}: |"
+    if grep -qI . "$f" 2>/dev/null; then
+      normalize <"$f" | withInsides | sort -u | comm -12 - "$handout.fingerprints" | sed "s|^|${f#"$handout"/}: |"
+      shape <"$f" | sort -u | comm -12 - "$handout.shapes" | sed "s|^|${f#"$handout"/}: (shape) |"
+    else strings -n 8 "$f" | normalize | withInsides | sort -u | comm -12 - "$handout.fingerprints" | sed "s|^|${f#"$handout"/}: |"; fi
   done < <(find "$handout" -type f -print0) >"$handout.matches"
   found=$(wc -l <"$handout.matches")
   if [ "$found" -gt 0 ]; then
@@ -178,7 +199,8 @@ leak() {
   for f in common/algorithms/lighting.cpp shaders/02_shadow_maps/exercises_reference.glsl \
     shaders/03_shadow_quality/exercises_reference.glsl tests/grading/ex09_reference.cpp \
     shaders/04_shadow_volumes/exercises_reference.glsl shaders/07_hybrid_maps/exercises_reference.glsl \
-    shaders/05_soft_shadows/exercises_reference.glsl shaders/common/volumes/volume.geom \
+    shaders/05_soft_shadows/exercises_reference.glsl shaders/08_psm/exercises_reference.glsl \
+    shaders/09_psm_fixes/exercises_reference.glsl shaders/common/volumes/volume.geom \
     shaders/common/shadow_bias_slope.glsl shaders/common/soft_answers.glsl; do
     rm -rf "$dir"
     mkdir -p "$dir"
@@ -198,6 +220,24 @@ leak() {
     exit 1
   fi
   echo "a handout holding an answer on one line fails the check ($(wc -l <"$dir.matches") reference lines found)"
+  # Answers rewritten, as shipped shaders once held them readable: exercise 05.4's rotation in a
+  # declaration, 05.3's radius for a blocker on the near plane (the search region, operands
+  # reordered) and at the mean blocker (the single-sample hull), other variable names each time.
+  local line
+  while IFS= read -r line; do
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    printf 'float f(float a) {\n%s\n}\n' "$line" >"$dir/rewritten.frag"
+    if (bodies "$dir" >/dev/null); then
+      echo "FAIL: a handout holding \`$line\` passed the check"
+      exit 1
+    fi
+    echo "a handout holding \`$line\` fails the check"
+  done <<'GLSL'
+  mat2 turn = mat2(cos(a), sin(a), -sin(a), cos(a));
+  float search = min(R * max(r.z - near, 0.0) / (2.0 * tanHalf * near * r.z), uMaxSearch);
+  float hull = R * max(r.z - zMean, 0.0) / (zMean * 2.0 * r.z * tanHalf);
+GLSL
 }
 
 cmd=${1:-}
