@@ -85,6 +85,11 @@ std::vector<Column> columns(const std::vector<ReportRow>& rows) {
   c.push_back({"cpu_ms", true, [=](const ReportRow& r) { return num(r.cpuMs); }});
   c.push_back({"shadow_triangles", true, [=](const ReportRow& r) { return count(r.shadowTriangles); }});
   c.push_back({"shadow_texels", true, [=](const ReportRow& r) { return count(r.shadowTexels); }});
+  auto skipped = [](std::int64_t v) { return v < 0 ? std::string() : std::to_string(v); };
+  c.push_back({"culled_casters", true, [=](const ReportRow& r) { return skipped(r.culledCasters); }});
+  c.push_back({"cube_faces_skipped", true, [=](const ReportRow& r) { return skipped(r.skippedFaces); }});
+  c.push_back({"maps_reused", true, [=](const ReportRow& r) { return skipped(r.reusedMaps); }});
+  c.push_back({"draw_calls", true, [=](const ReportRow& r) { return skipped(r.drawCalls); }});
   auto hard = [&](const char* name, std::function<std::string(const HardShadowErrors&)> f) {
     c.push_back({name, true, [=](const ReportRow& r) { return r.hasHard ? f(r.hard) : std::string(); }});
   };
@@ -353,6 +358,11 @@ std::string toJson(const std::vector<ReportRow>& rows, const std::string& title)
     j["cpuMs"] = finite(r.cpuMs);
     j["shadowTriangles"] = r.shadowTriangles;
     j["shadowTexels"] = r.shadowTexels;
+    auto skipped = [](std::int64_t v) { return v < 0 ? json(nullptr) : json(v); };  // null: not reported
+    j["culledCasters"] = skipped(r.culledCasters);
+    j["cubeFacesSkipped"] = skipped(r.skippedFaces);
+    j["mapsReused"] = skipped(r.reusedMaps);
+    j["drawCalls"] = skipped(r.drawCalls);
     if (r.hasHard)
       j["hard"] = {{"facingPixels", r.hard.facingPixels},
                    {"referenceShadowed", r.hard.referenceShadowed},

@@ -26,6 +26,10 @@ struct ReportRow {
   double cpuMs = 0;
   std::uint64_t shadowTriangles = 0;  // triangles drawn into shadow maps
   std::uint64_t shadowTexels = 0;     // texels of every shadow map rendered
+  // Skipped work, as the lesson's header counts it; -1: the lesson did not report it (a technique
+  // that culls nothing, or no counters at all). Maps reused is 0 when the lesson reports counters
+  // without it (the header shows it only once a map was reused).
+  std::int64_t culledCasters = -1, skippedFaces = -1, reusedMaps = -1, drawCalls = -1;
   bool hasHard = false;
   HardShadowErrors hard;
   bool hasSoft = false;

@@ -30,6 +30,10 @@ ReportRow hardRow(const std::string& scene, const std::string& technique, double
   r.cpuMs = 0.25;
   r.shadowTriangles = 12000;
   r.shadowTexels = 1024 * 1024;
+  r.culledCasters = 37;
+  r.skippedFaces = 2;
+  r.reusedMaps = 1;
+  r.drawCalls = 412;
   r.hasHard = true;
   r.hard.facingPixels = 1000;
   r.hard.misclassifiedPct = misclassifiedPct;
@@ -150,6 +154,13 @@ TEST_CASE("measure.report: CSV, JSON and HTML are written and agree") {
   CHECK(table[0][column("gpu_ms:blocker")].empty());
   CHECK(table[4][column("misclassified_pct")].empty());
   CHECK(table[1][column("m_share_above_1")] == "0.375");
+  // Skipped work: the counts where the lesson reported them, empty where not (the soft row).
+  CHECK(table[0][column("culled_casters")] == "37");
+  CHECK(table[0][column("cube_faces_skipped")] == "2");
+  CHECK(table[0][column("maps_reused")] == "1");
+  CHECK(table[0][column("draw_calls")] == "412");
+  CHECK(table[4][column("culled_casters")].empty());
+  CHECK(table[4][column("draw_calls")].empty());
 
   // JSON carries the same rows.
   REQUIRE(json["rows"].size() == rows.size());
@@ -157,6 +168,9 @@ TEST_CASE("measure.report: CSV, JSON and HTML are written and agree") {
   CHECK(json["rows"][3]["hard"]["misclassifiedPct"].get<double>() == 1.0);
   CHECK(json["rows"][4]["soft"]["rmse"].get<double>() == 0.0625);
   CHECK(json["title"] == "Unit test run");
+  CHECK(json["rows"][0]["culledCasters"].get<int>() == 37);
+  CHECK(json["rows"][0]["mapsReused"].get<int>() == 1);
+  CHECK(json["rows"][4]["culledCasters"].is_null());
 
   // HTML: self-contained, a scatter per scene, the front A, B, D (C loses to B) listed and marked.
   CHECK(html.find("<script") == std::string::npos);

@@ -178,8 +178,15 @@ void readFigures(const nlohmann::json& j, measure::ReportRow& row) {
     if (b.contains("aliasing")) row.bandAliasing = aliasingFrom(b["aliasing"]);
   }
   for (const auto& [name, value] : j.at("counters").items()) {
-    if (name == "shadow triangles") row.shadowTriangles = leadingNumber(value.get<std::string>());
+    if (name == "shadow triangles") {
+      row.shadowTriangles = leadingNumber(value.get<std::string>());
+      row.reusedMaps = std::max<std::int64_t>(row.reusedMaps, 0);  // a technique's counters: none reused unless said
+    }
     if (name == "shadow texels") row.shadowTexels = leadingNumber(value.get<std::string>());
+    if (name == "culled casters") row.culledCasters = std::int64_t(leadingNumber(value.get<std::string>()));
+    if (name == "cube faces skipped") row.skippedFaces = std::int64_t(leadingNumber(value.get<std::string>()));
+    if (name == "maps reused") row.reusedMaps = std::int64_t(leadingNumber(value.get<std::string>()));
+    if (name == "draw calls") row.drawCalls = std::int64_t(leadingNumber(value.get<std::string>()));
   }
 }
 
