@@ -20,6 +20,13 @@ while(model_runs)
              -- --headless --frames 2 --size 640x360 --strict-gl --model ${models}/${file}
              --screenshot ${shots}/${name}_model.png)
     set_tests_properties(gpu.${name}.model PROPERTIES LABELS gpu)
+    # The picture itself, guarded: tests/data/golden/models/NN_name/default.png (recorded as the
+    # lesson's preset goldens are: SHADOWLAB_RECORD_GOLDEN=missing ctest -R model_golden).
+    add_test(NAME gpu.${name}.model_golden COMMAND lesson_check $<TARGET_FILE:lesson_${name}>
+             --png ${shots}/${name}_model_golden.png --golden ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/models/${name}
+             -- --headless --frames 2 --size 320x180 --strict-gl --model ${models}/${file}
+             --screenshot ${shots}/${name}_model_golden.png)
+    set_tests_properties(gpu.${name}.model_golden PROPERTIES LABELS gpu)
   endif()
 endwhile()
 
