@@ -12,8 +12,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <iomanip>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include "app/ab_split.hpp"
 #include "app/context.hpp"
@@ -83,7 +85,7 @@ class Runner {
     if (Exit e = startExercises()) return *e;
     if (Exit e = openOutputs()) return *e;
     for (int frame = 0; cl_.frames < 0 || frame < cl_.frames; ++frame) {
-      if (context_->shouldClose()) break;
+      if (context_->shouldClose() || input_.quit) break;
       if (Exit e = runFrame(frame)) return *e;
     }
     return teardown();
@@ -112,7 +114,8 @@ class Runner {
       params_.assignAll(cl_.sets);  // one change: checked once, whatever the order
       if (cl_.model.empty() && sceneIsModel(params_))
         throw CliError("scene=model draws the file given with --model FILE (OBJ + MTL, glTF 2.0); none given");
-      homeCamera_ = lesson_.camera;      // Home comes back here
+      homeCamera_ = lesson_.camera;  // Home comes back here
+      keys_ = KeyScript(cl_.keys);
     } catch (const std::exception& e) {  // CliError, ParamError
       std::cerr << info_.name << ": " << e.what() << '\n';
       return 2;
@@ -285,7 +288,10 @@ class Runner {
     const double dt = cl_.headless ? 1.0 / 60.0 : std::min(start - last_, 0.1);
     last_ = start;
     time_ += dt;
-    if (context_->window()) handleInput(float(dt));
+    keys_.beginFrame(input_);
+    if (frame == cl_.dropFrame && !cl_.drop.empty()) dropFiles(input_, {cl_.drop});
+    if (context_->window() || !keys_.empty() || !cl_.drop.empty()) handleInput(float(dt));
+    reportScriptedKey(keys_.endFrame());
     for (gl::Program* p : gl::livePrograms()) p->reloadIfChanged();
     if (context_->width() != width_ || context_->height() != height_) {
       width_ = context_->width();
@@ -320,12 +326,28 @@ class Runner {
     return std::nullopt;
   }
 
-  // Mouse onto the camera (or the A/B divider), keys onto the framework and the hotkeys.
+  // --keys: what a step did, on stderr (tests read it): the camera, and the parameter its key drives.
+  void reportScriptedKey(const std::string& step) const {
+    if (step.empty()) return;
+    const glm::vec3 eye = lesson_.camera.position(), ahead = lesson_.camera.forward();
+    std::ostringstream line;
+    line << std::fixed << std::setprecision(4) << info_.name << ": --keys " << step << ": eye " << eye.x << ' ' << eye.y
+         << ' ' << eye.z << ", forward " << ahead.x << ' ' << ahead.y << ' ' << ahead.z << ", camera "
+         << (input_.fly ? "fly" : "orbit");
+    for (const Param& p : params_.params())
+      if (!p.hotkey.empty() && step.rfind(p.hotkey, 0) == 0 && (step.size() == 1 || step[1] == '*'))
+        line << ", " << p.name << '=' << params_.get(p.name);
+    std::cerr << line.str() << '\n';
+  }
+
+  // Mouse onto the camera (or the A/B divider), keys onto the framework and the hotkeys. Headless,
+  // --keys and --drop feed the same Input (no mouse).
   void handleInput(float dt) {
     GLFWwindow* w = context_->window();
     float divider = ab_.divider();
-    applyMouse(w, input_, ui_.wantsMouse(), lesson_.camera, ab_.enabled() ? &divider : nullptr);
-    if (!ui_.wantsKeyboard()) applyFlyKeys(w, input_, lesson_.camera, dt);
+    if (w) applyMouse(w, input_, ui_.wantsMouse(), lesson_.camera, ab_.enabled() ? &divider : nullptr);
+    const auto held = [&](int key) { return (w && glfwGetKey(w, key) == GLFW_PRESS) || keys_.held(key); };
+    if (!ui_.wantsKeyboard()) applyFlyKeys(held, input_, lesson_.camera, dt);
     if (input_.resetCamera) {
       lesson_.camera = homeCamera_;
       input_.resetCamera = false;
@@ -572,6 +594,7 @@ class Runner {
   FrameBudget budget_;
   Ui ui_;
   Input input_;
+  KeyScript keys_;  // --keys
   BenchLog bench_;
   measure::CameraLightPath recording_, replay_;
   double replayAt_ = -1;

@@ -18,22 +18,12 @@ void onScroll(GLFWwindow*, double, double y) {
 
 void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   if (!g_input || action != GLFW_PRESS) return;
-  const bool ctrl = mods & GLFW_MOD_CONTROL;
-  if (key == GLFW_KEY_F1) g_input->help = !g_input->help;
-  else if (key == GLFW_KEY_F11) g_input->toggleFullscreen = true;
-  else if (key == GLFW_KEY_F12) g_input->screenshot = true;
-  else if (ctrl && (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD)) ++g_input->uiScaleSteps;
-  else if (ctrl && (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT)) --g_input->uiScaleSteps;
-  else if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
-  else if (key == GLFW_KEY_TAB) g_input->fly = !g_input->fly;
-  else if (key == GLFW_KEY_HOME) g_input->resetCamera = true;
-  else if (key == GLFW_KEY_H && !ctrl) g_input->uiHidden = !g_input->uiHidden;
-  else if (!ctrl) g_input->pressed.push_back(key);
+  pressKey(*g_input, key, mods);
+  if (g_input->quit) glfwSetWindowShouldClose(w, GLFW_TRUE);
 }
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
-  if (g_input)
-    for (int i = 0; i < count; ++i) g_input->dropped.emplace_back(paths[i]);
+  if (g_input) dropFiles(*g_input, std::vector<std::string>(paths, paths + count));
 }
 
 // Window width in the cursor's coordinates (screen coordinates, not framebuffer pixels).
@@ -44,6 +34,48 @@ double windowWidth(GLFWwindow* w) {
 }
 
 }  // namespace
+
+void pressKey(Input& input, int key, int mods) {
+  const bool ctrl = mods & GLFW_MOD_CONTROL;
+  if (key == GLFW_KEY_F1) input.help = !input.help;
+  else if (key == GLFW_KEY_F11) input.toggleFullscreen = true;
+  else if (key == GLFW_KEY_F12) input.screenshot = true;
+  else if (ctrl && (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD)) ++input.uiScaleSteps;
+  else if (ctrl && (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT)) --input.uiScaleSteps;
+  else if (key == GLFW_KEY_ESCAPE) input.quit = true;
+  else if (key == GLFW_KEY_TAB) input.fly = !input.fly;
+  else if (key == GLFW_KEY_HOME) input.resetCamera = true;
+  else if (key == GLFW_KEY_H && !ctrl) input.uiHidden = !input.uiHidden;
+  else if (!ctrl) input.pressed.push_back(key);
+}
+
+void dropFiles(Input& input, const std::vector<std::string>& paths) {
+  input.dropped.insert(input.dropped.end(), paths.begin(), paths.end());
+}
+
+int scriptedKeyCode(const std::string& name) {
+  if (name == "Tab") return GLFW_KEY_TAB;
+  if (name == "Home") return GLFW_KEY_HOME;
+  if (name == "F1") return GLFW_KEY_F1;
+  if (name.size() == 1 && name[0] >= 'A' && name[0] <= 'Z') return GLFW_KEY_A + (name[0] - 'A');
+  if (name.size() == 1 && name[0] >= '0' && name[0] <= '9') return GLFW_KEY_0 + (name[0] - '0');
+  return GLFW_KEY_UNKNOWN;  // core/cli's parseKeyScript accepts no other name
+}
+
+void KeyScript::beginFrame(Input& input) {
+  if (left_ > 0 || next_ >= steps_.size()) return;
+  key_ = scriptedKeyCode(steps_[next_].name);
+  left_ = steps_[next_].frames;
+  pressKey(input, key_, 0);
+}
+
+bool KeyScript::held(int key) const { return left_ > 0 && key == key_; }
+
+std::string KeyScript::endFrame() {
+  if (left_ == 0 || --left_ > 0) return "";
+  const ScriptedKey& step = steps_[next_++];
+  return step.frames > 1 ? step.name + "*" + std::to_string(step.frames) : step.name;
+}
 
 void installInputCallbacks(GLFWwindow* window, Input* input) {
   g_input = input;
@@ -82,11 +114,10 @@ void applyMouse(GLFWwindow* w, Input& input, bool uiHasMouse, OrbitCamera& camer
   input.haveLast = true;
 }
 
-void applyFlyKeys(GLFWwindow* w, const Input& input, OrbitCamera& camera, float seconds) {
+void applyFlyKeys(const std::function<bool(int)>& held, const Input& input, OrbitCamera& camera, float seconds) {
   if (!input.fly) return;
-  const auto held = [w](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0f : 0.0f; };
-  const glm::vec3 local(held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_E) - held(GLFW_KEY_Q),
-                        held(GLFW_KEY_W) - held(GLFW_KEY_S));
+  const auto axis = [&](int plus, int minus) { return (held(plus) ? 1.0f : 0.0f) - (held(minus) ? 1.0f : 0.0f); };
+  const glm::vec3 local(axis(GLFW_KEY_D, GLFW_KEY_A), axis(GLFW_KEY_E, GLFW_KEY_Q), axis(GLFW_KEY_W, GLFW_KEY_S));
   // Speed scales with how far the camera looks: a city block and a tabletop feel alike.
   if (local != glm::vec3(0.0f)) camera.fly(local * (input.flySpeed * 0.5f * camera.distance * seconds));
 }

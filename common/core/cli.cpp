@@ -1,5 +1,6 @@
 #include "core/cli.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 
@@ -29,6 +30,10 @@ constexpr Flag kFlags[] = {
     {"--show-ui", nullptr, "headless: draw the UI into the screenshot"},
     {"--ui-layout", "FILE", "write the last frame's UI rectangles (header, panel, help, A/B labels) as JSON"},
     {"--show-help", nullptr, "draw the F1 help (and the UI) from the first frame, e.g. into a screenshot"},
+    {"--keys", "LIST",
+     "press keys through the window's key handler, one after the other from the first frame: \"Tab,W*10,Home\" "
+     "(KEY*N: held N frames; A-Z, 0-9, Tab, Home, F1); tests and slides script the fly camera and hotkeys"},
+    {"--drop", "FILE[@N]", "drop FILE on the window before frame N (default 1), as dragging it there does"},
     {"--fullscreen", nullptr, "start fullscreen (F11 toggles)"},
     {"--strict-gl", nullptr, "fail (exit 3) on any OpenGL error (tests set it)"},
     {"--list-params", nullptr, "list every parameter with its range, default and purpose"},
@@ -54,7 +59,30 @@ int toInt(const std::string& flag, const std::string& v, int lo, int hi) {
   return out;
 }
 
+bool keyNameValid(const std::string& k) {
+  if (k.size() == 1) return (k[0] >= 'A' && k[0] <= 'Z') || (k[0] >= '0' && k[0] <= '9');
+  return k == "Tab" || k == "Home" || k == "F1";
+}
+
 }  // namespace
+
+std::vector<ScriptedKey> parseKeyScript(const std::string& list) {
+  std::vector<ScriptedKey> keys;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    const std::string step = list.substr(start, comma - start);
+    const std::size_t star = step.find('*');
+    ScriptedKey k{step.substr(0, star)};
+    if (!keyNameValid(k.name))
+      throw CliError("--keys: '" + step + "' is not a key (valid: A-Z, 0-9, Tab, Home, F1, each as KEY or KEY*N to " +
+                     "hold it N frames, separated by commas, e.g. \"Tab,W*10,Home\")");
+    if (star != std::string::npos) k.frames = toInt("--keys " + k.name, step.substr(star + 1), 1, kMaxKeyFrames);
+    keys.push_back(k);
+    start = comma + 1;
+  }
+  return keys;
+}
 
 CommandLine parseCommandLine(const std::vector<std::string>& args) {
   CommandLine cl;
@@ -109,7 +137,17 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
     } else if (flag == "--show-ui") cl.showUi = true;
     else if (flag == "--show-help") cl.showUi = cl.showHelp = true;
     else if (flag == "--ui-layout") cl.uiLayout = value;
-    else if (flag == "--fullscreen") cl.fullscreen = true;
+    else if (flag == "--keys") cl.keys = parseKeyScript(value);
+    else if (flag == "--drop") {
+      // FILE@N where N is digits; a file name with an '@' of its own stays whole.
+      auto at = value.rfind('@');
+      if (at != std::string::npos &&
+          (at + 1 == value.size() || value.find_first_not_of("0123456789", at + 1) != std::string::npos))
+        at = std::string::npos;
+      cl.drop = value.substr(0, at);
+      if (at != std::string::npos) cl.dropFrame = toInt("--drop " + cl.drop, value.substr(at + 1), 0, 100000000);
+      if (cl.drop.empty()) throw CliError("--drop: '" + value + "' names no file: --drop FILE[@N]");
+    } else if (flag == "--fullscreen") cl.fullscreen = true;
     else if (flag == "--strict-gl") cl.strictGl = true;
     else if (flag == "--list-params") cl.listParams = true;
     else if (flag == "--list-presets") cl.listPresets = true;
@@ -120,6 +158,15 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
   }
   if (cl.headless && !framesGiven) cl.frames = 3;
   if (!cl.record.empty() && !cl.replay.empty()) throw CliError("--record and --replay exclude each other");
+  // A step or a drop past the last frame would never happen: say so rather than run without it.
+  long keyFrames = 0;
+  for (const ScriptedKey& k : cl.keys) keyFrames += k.frames;
+  if (cl.frames > 0 && keyFrames > cl.frames)
+    throw CliError("--keys: the steps take " + std::to_string(keyFrames) + " frames, the run has " +
+                   std::to_string(cl.frames) + " (--frames N)");
+  if (!cl.drop.empty() && cl.frames > 0 && cl.dropFrame >= cl.frames)
+    throw CliError("--drop " + cl.drop + "@" + std::to_string(cl.dropFrame) + ": the run has frames 0 to " +
+                   std::to_string(cl.frames - 1) + " (--frames N)");
   return cl;
 }
 

@@ -17,6 +17,14 @@ struct CliError : std::runtime_error {
 // allow it; the context also checks the GL limits of the machine (gl::framebufferSizeProblem).
 inline constexpr int kMaxFramebufferSide = 8192;
 
+// One step of --keys: a key pressed through the window's key handler, then held for `frames` frames
+// (the fly camera moves while W, A, S, D, Q or E is held). Names: A-Z, 0-9, Tab, Home, F1.
+struct ScriptedKey {
+  std::string name;
+  int frames = 1;
+};
+inline constexpr int kMaxKeyFrames = 100000;
+
 struct CommandLine {
   bool headless = false;
   int width = 1280, height = 720;
@@ -34,10 +42,16 @@ struct CommandLine {
   bool showHelp = false;  // the F1 help open from the first frame (implies showUi)
   std::string uiLayout;   // the last frame's UI rectangles, JSON (tests: nothing overlaps)
   bool fullscreen = false;
+  std::vector<ScriptedKey> keys;  // --keys "Tab,W*10,Home": pressed one after the other, from frame 0
+  std::string drop;               // --drop FILE[@N]: dropped on the window before frame N (default 1)
+  int dropFrame = 1;
   bool listParams = false, listPresets = false, listHotkeys = false, help = false, info = false;
   bool exercises = false;  // print each exercise's state from the public cases (needs a GL context), exit
   bool strictGl = false;   // any GL error fails the run (tests); also SHADOWLAB_STRICT_GL=1
 };
+
+// "Tab,W*10,Home" into its steps. Throws CliError naming the bad step and the valid names.
+std::vector<ScriptedKey> parseKeyScript(const std::string& list);
 
 // argv[0] is skipped. Throws CliError.
 CommandLine parseCommandLine(const std::vector<std::string>& args);

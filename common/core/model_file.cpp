@@ -237,6 +237,43 @@ void sortPrimitives(Assimp::Importer& importer, const aiScene*& in, ModelFile& o
   if (!in) refuse(out.path, ObjFault::any, "generating normals failed: " + oneLine(importer.GetErrorString()));
 }
 
+// Real models are rarely closed 2-manifolds (a chimney without a lid, a one-sided leaf, flipped
+// faces). Back-face culled, such a surface vanishes wherever the camera or the light looks at its
+// inner side, while the ground truth (Embree culls nothing) still hits it, so the measured error of
+// a loaded model counted walls that were simply not drawn. Every object whose mesh is open
+// (core/mesh's analyseTopology, as lesson 04 counts open edges) gets a two-sided material: the lit
+// pass flips the normal toward the eye and neither it nor the casters cull (gl/scene_draw,
+// technique/casters). A material a closed mesh shares is copied first, so closed meshes keep their
+// culling. Returns how many meshes were open.
+std::size_t drawOpenMeshesTwoSided(Scene& scene) {
+  std::vector<char> open(scene.meshes.size());
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    open[i] = !analyseTopology(scene.meshes[i]).closed();
+    count += open[i] ? 1 : 0;
+  }
+  std::vector<int> twoSidedCopy(scene.materials.size(), -1);  // material -> its two-sided version
+  for (SceneObject& o : scene.objects) {
+    if (!open[o.mesh] || scene.materials[o.material].twoSided) continue;
+    if (twoSidedCopy[o.material] < 0) {
+      const bool sharedWithClosed = std::any_of(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& c) {
+        return c.material == o.material && !open[c.mesh];
+      });
+      Material m = scene.materials[o.material];
+      m.twoSided = true;
+      if (sharedWithClosed) {
+        m.name += " (two-sided)";
+        twoSidedCopy[o.material] = int(scene.addMaterial(std::move(m)));
+      } else {
+        scene.materials[o.material] = std::move(m);
+        twoSidedCopy[o.material] = int(o.material);
+      }
+    }
+    o.material = std::uint32_t(twoSidedCopy[o.material]);
+  }
+  return count;
+}
+
 ModelFile convertScene(Assimp::Importer& importer, const aiScene* in, const std::string& name, const fs::path& folder) {
   ModelFile out;
   out.path = name;
@@ -266,6 +303,10 @@ ModelFile convertScene(Assimp::Importer& importer, const aiScene* in, const std:
   const Aabb box = out.scene.bounds();
   if (!std::isfinite(glm::length(box.extent())))
     fail(name, "its size overflows a float (coordinates or node transforms too large)");
+  if (const std::size_t open = drawOpenMeshesTwoSided(out.scene))
+    out.notes.push_back(std::to_string(open) + " of " + std::to_string(out.scene.meshes.size()) +
+                        " meshes are open (not closed 2-manifolds): drawn two-sided, both faces lit and "
+                        "casting, none culled");
   out.scene.name = fs::path(name).filename().string();
   return out;
 }

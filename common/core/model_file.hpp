@@ -9,6 +9,9 @@
 //   missing or unreadable textures   the material's diffuse colour is used, named in notes
 //   points and lines      skipped, counted, said so in notes
 //   embedded textures (.glb)         not read: the diffuse colour, said so in notes
+//   open meshes (not closed 2-manifolds: boundary, non-manifold or flipped edges)   their objects'
+//                         materials made two-sided (a copy where a closed mesh shares one): both
+//                         faces drawn, lit and casting, as the ground truth sees them; noted
 //   empty, missing, too large, corrupt, no triangles, non-finite numbers   ModelError
 //
 // OBJ errors name the line. Assimp 5.2.5 is the one parser that decides what loads; its OBJ

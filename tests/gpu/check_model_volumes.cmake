@@ -27,8 +27,9 @@ endfunction()
 
 file(MAKE_DIRECTORY ${OUT_DIR})
 # Views from the side the shadow falls on (the sun travels -0.4 -1 -0.3; the default camera sees the
-# chimney hide its own shadow). Not from above: through the open top the camera sees the walls' back
-# faces, which the lit pass culls and the rays hit, a visibility difference and no shadow's.
+# chimney hide its own shadow). From above, through the open top, the camera sees the walls' inner
+# sides: core/model_file draws open meshes two-sided since, and gpu.model.open_two_sided measures
+# that view (check_model_two_sided.cmake).
 measure(behind exact --set camera.yaw=3.14)
 measure(beside exact --set camera.yaw=4.71)
 measure(beside_gpu_silhouettes exact --set camera.yaw=4.71 --set silhouettes=gpu)

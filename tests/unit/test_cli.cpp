@@ -70,6 +70,30 @@ TEST_CASE("cli: an empty value is an error, never a silently dropped output") {
 TEST_CASE("cli: help lists every flag") {
   const std::string help = commandLineHelp("lesson_01");
   for (const char* flag : {"--headless", "--size", "--frames", "--screenshot", "--set", "--preset", "--bench",
-                           "--list-params", "--list-presets", "--help"})
+                           "--list-params", "--list-presets", "--keys", "--drop", "--help"})
     CHECK(help.find(flag) != std::string::npos);
+}
+
+TEST_CASE("cli: --keys scripts key steps, --drop a file and its frame; bad ones name the value") {
+  const CommandLine cl = parse({"--headless", "--frames", "20", "--keys", "Tab,W*10,Home,7,F1", "--drop", "a@b.obj@4"});
+  REQUIRE(cl.keys.size() == 5);
+  CHECK(cl.keys[0].name == "Tab");
+  CHECK(cl.keys[0].frames == 1);
+  CHECK(cl.keys[1].name == "W");
+  CHECK(cl.keys[1].frames == 10);
+  CHECK(cl.keys[3].name == "7");
+  CHECK(cl.keys[4].name == "F1");
+  CHECK(cl.drop == "a@b.obj");
+  CHECK(cl.dropFrame == 4);
+  const CommandLine plain = parse({"--drop", "me@home.obj"});  // no @N: the whole name, frame 1
+  CHECK(plain.drop == "me@home.obj");
+  CHECK(plain.dropFrame == 1);
+  CHECK(errorOf({"--keys", "Tab,,W"}).rfind("--keys: '' is not a key (valid: A-Z, 0-9, Tab, Home, F1", 0) == 0);
+  CHECK(errorOf({"--keys", "Shift"}).rfind("--keys: 'Shift' is not a key", 0) == 0);
+  CHECK(errorOf({"--keys", "W*0"}) == "--keys W: '0' is not a whole number in [1, 100000]");
+  CHECK(errorOf({"--keys", "W*x"}) == "--keys W: 'x' is not a whole number in [1, 100000]");
+  CHECK(errorOf({"--headless", "--keys", "W*3"}) == "no error");  // three frames, three steps held
+  CHECK(errorOf({"--headless", "--keys", "W*4"}) == "--keys: the steps take 4 frames, the run has 3 (--frames N)");
+  CHECK(errorOf({"--headless", "--drop", "m.obj@3"}) == "--drop m.obj@3: the run has frames 0 to 2 (--frames N)");
+  CHECK(errorOf({"--drop", "@2"}) == "--drop: '@2' names no file: --drop FILE[@N]");
 }

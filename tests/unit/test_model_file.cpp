@@ -471,3 +471,38 @@ TEST_CASE("model: the current model: each load a new generation, a failed load k
   CHECK(currentModel()->scene.name == "cube.obj");
   CHECK(analyseTopology(flatten(loadModelFile(kModels + "tent.obj").scene)).boundaryEdges == 4);
 }
+
+TEST_CASE("model: open meshes are drawn two-sided, closed ones keep back-face culling") {
+  // Without it a wall seen from its open side was culled while the ground truth still hit it.
+  const auto twoSided = [](const ModelFile& m, std::size_t object) {
+    return m.scene.materials.at(m.scene.objects.at(object).material).twoSided;
+  };
+  const ModelFile chimney = loadModelFile(kModels + "chimney.obj");  // four walls, no top, no bottom
+  REQUIRE(chimney.scene.objects.size() == 1);
+  CHECK(twoSided(chimney, 0));
+  CHECK(anyNote(chimney, "1 of 1 meshes are open (not closed 2-manifolds): drawn two-sided"));
+  CHECK(twoSided(loadModelFile(kModels + "tent.obj"), 0));  // a pyramid without its floor
+  for (const char* closed : {"cube.obj", "tetrahedron.glb", "no_normals.obj"}) {
+    CAPTURE(closed);
+    const ModelFile m = loadModelFile(kModels + closed);
+    for (std::size_t i = 0; i < m.scene.objects.size(); ++i) CHECK_FALSE(twoSided(m, i));
+    CHECK_FALSE(anyNote(m, "open"));
+  }
+  // One material shared by a closed tetrahedron and an open triangle: the open one gets a two-sided
+  // copy, the closed one keeps the culled original.
+  const std::string shared =
+      "o closed\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n"
+      "o open\nv 3 0 0\nv 4 0 0\nv 3 1 0\nf 5 6 7\n";
+  const ModelFile both = loadModelFromMemory(shared.data(), shared.size(), "obj");
+  REQUIRE(both.scene.objects.size() == 2);
+  std::size_t open = 0, closed = 0;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const bool isOpen = !analyseTopology(both.scene.meshes.at(both.scene.objects[i].mesh)).closed();
+    (isOpen ? open : closed) = i;
+  }
+  REQUIRE(open != closed);
+  CHECK(twoSided(both, open));
+  CHECK_FALSE(twoSided(both, closed));
+  CHECK(both.scene.objects[open].material != both.scene.objects[closed].material);
+  CHECK(anyNote(both, "1 of 2 meshes are open"));
+}
