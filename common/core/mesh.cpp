@@ -80,17 +80,20 @@ std::vector<std::uint32_t> weldPositions(const std::vector<glm::vec3>& positions
   };
   struct CellHash {
     std::size_t operator()(const Cell& c) const {
-      return std::size_t(c.x * 73856093ll) ^ std::size_t(c.y * 19349663ll) ^ std::size_t(c.z * 83492791ll);
+      // Unsigned: the products wrap instead of overflowing.
+      return std::size_t(std::uint64_t(c.x) * 73856093ull) ^ std::size_t(std::uint64_t(c.y) * 19349663ull) ^
+             std::size_t(std::uint64_t(c.z) * 83492791ull);
     }
   };
   std::unordered_map<Cell, std::vector<std::uint32_t>, CellHash> grid;
   grid.reserve(positions.size());
   std::vector<glm::vec3> reps;
   const float eps2 = epsilon * epsilon;
-  auto cellOf = [&](const glm::vec3& p) {
-    return Cell{std::int64_t(std::floor(double(p.x) / epsilon)), std::int64_t(std::floor(double(p.y) / epsilon)),
-                std::int64_t(std::floor(double(p.z) / epsilon))};
-  };
+  // A coordinate / epsilon beyond 2^62 (a loaded model's 1e19, found by fuzzing) is clamped
+  // before the conversion, which would be undefined: far points then share an edge cell, and the
+  // distance test below still tells them apart.
+  auto axisCell = [&](float v) { return std::int64_t(std::clamp(std::floor(double(v) / epsilon), -0x1p62, 0x1p62)); };
+  auto cellOf = [&](const glm::vec3& p) { return Cell{axisCell(p.x), axisCell(p.y), axisCell(p.z)}; };
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const glm::vec3& p = positions[i];
     const Cell c = cellOf(p);

@@ -248,6 +248,23 @@ TEST_CASE("mesh_gen: invalid tessellations are rejected with the parameter named
   } catch (const std::invalid_argument& e) { CHECK(std::string(e.what()).find("sides") != std::string::npos); }
 }
 
+TEST_CASE("mesh: topology of a mesh far beyond any grid cell welds as near the origin") {
+  // 1.5e19 / the weld epsilon is past 2^63: the cell index once overflowed its conversion
+  // (undefined; found by fuzzing a model file). Two triangles sharing an edge, with a duplicated
+  // vertex the weld must merge, at the origin and out there give the same topology.
+  for (float at : {0.0f, 1.5e19f, -3e38f}) {
+    CAPTURE(at);
+    Mesh m;
+    const float s = at == 0.0f ? 1.0f : std::abs(at) * 1e-3f;  // a size the floats can still tell apart
+    m.positions = {{at, at, 0}, {at + s, at, 0}, {at, at + s, 0}, {at + s, at, 0}, {at + s, at + s, 0}};
+    m.indices = {0, 1, 2, 2, 3, 4};  // vertex 3 repeats vertex 1: the shared edge 1-2 once welded
+    const Topology t = analyseTopology(m);
+    CHECK(t.edges == 5);
+    CHECK(t.boundaryEdges == 4);
+    CHECK(t.inconsistentEdges == 0);
+  }
+}
+
 TEST_CASE("mesh: topology analysis on hand-made cases") {
   Mesh tri;
   tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
