@@ -109,7 +109,7 @@ if(TARGET lesson_04_shadow_volumes)
   set_tests_properties(gpu.04_shadow_volumes.stub_banner_black PROPERTIES LABELS gpu)
 endif()
 foreach(lesson IN ITEMS 02_shadow_maps 03_shadow_quality 04_shadow_volumes 05_soft_shadows 06_texture_filtering
-                        07_hybrid_maps 08_psm 09_psm_fixes)
+                        07_hybrid_maps 08_psm 09_psm_fixes 10_showdown)
   if(TARGET glsl_lesson_${lesson})
     string(SUBSTRING ${lesson} 0 2 nn)
     add_test(NAME gpu.${lesson}.exercises_panel_reference COMMAND ${CMAKE_COMMAND}

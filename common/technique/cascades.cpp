@@ -28,6 +28,12 @@ std::string joined(const std::vector<double>& values, const char* format, double
 
 }  // namespace
 
+std::vector<std::string> CascadedShadowMaps::shaderDefines() const {
+  std::vector<std::string> defines = maps_.shaderDefines();
+  if (studentChoice) defines.push_back("SHADOWLAB_STUDENT_CASCADES");
+  return defines;
+}
+
 void CascadedShadowMaps::declare(ParamRegistry& r, const std::string& n) {
   maps_.declare(r, n);
   r.add(n + "cascades", &p_.count, 1, kMaxCascades, "how many slices of the view's depth, each with its own map");

@@ -46,7 +46,7 @@ class CascadedShadowMaps : public ShadowTechnique {
   void renderShadows(const ShadowContext& c) override;
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "common/shadow_cascades.frag"; }
-  std::vector<std::string> shaderDefines() const override { return maps_.shaderDefines(); }
+  std::vector<std::string> shaderDefines() const override;
   void bindVisibility(const gl::Program& lit, int firstUnit) const override;
   void unbindVisibility(int firstUnit) const override { maps_.unbind(firstUnit); }
   // The cascade-colouring view draws the frame itself.
@@ -58,6 +58,9 @@ class CascadedShadowMaps : public ShadowTechnique {
   // A student's split scheme and texel snap (lesson 10's exercises 10.1, 10.2); empty: the reference.
   shadow::SplitScheme splitter;
   shadow::TexelSnapper snapper;
+  // The GLSL exercise (impl=student): lesson 10's cascade choice (10.4, cascadeAt) from the
+  // student's shaders/10_showdown/exercises.glsl (shaderDefines() add SHADOWLAB_STUDENT_CASCADES).
+  bool studentChoice = false;
   ProjectiveMapSet& maps() { return maps_; }
   // Light i's cascades this frame (empty when it has none), for tests and views.
   const shadow::CascadeSet& cascades(int light) const { return lights_[std::size_t(light)].set; }

@@ -18,7 +18,8 @@
 // visibility, maps, four-up), C the cascade colours, U equal texels, X the A/B split, O the god
 // view, P the post-projective view, M the ground-truth overlays, 1 2 the lights; F1 help.
 // Exercises (exercises.hpp): the practical split scheme, texel snapping, the cascade for a depth
-// with its blend band; `--set impl=student` runs your split scheme and snapping in technique=csm.
+// with its blend band; in GLSL (shaders/10_showdown/exercises.glsl) the same choice in the shader;
+// `--set impl=student` runs your split scheme, snapping and shader choice in technique=csm.
 #include <chrono>
 #include <cstdio>
 
@@ -107,7 +108,8 @@ class ShowdownLesson : public Lesson {
     declareImpl(r, &p_.impl, "whose split scheme and texel snapping the cascades (technique=csm) run");
     exercises.add("10.1", "practicalSplits", "technique=csm gets no splits: the sun's cascades are gone (lit)");
     exercises.add("10.2", "snapToTexels", "csm.snap=on: each cascade's map covers nothing: its shadows are gone");
-    exercises.add("10.3", "cascadeAt", "");  // "": the lit shader picks the cascade; not used live
+    exercises.add("10.3", "cascadeAt", "");  // "": the lit shader picks the cascade (10.4); not used live
+    exercises.addGlsl("10.4", "cascadeAt", "technique=csm: no point falls in a cascade: the sun casts no shadow");
     for (int i = 0; i < kTechniques; ++i) techniques_[std::size_t(i)]->declare(r, std::string(kNames[i]) + ".");
     r.setHotkey("csm.colours", "C");
     postView_.declare(r);
@@ -139,6 +141,7 @@ class ShowdownLesson : public Lesson {
     const bool student = p_.impl == Impl::Student;
     csm_.splitter = student ? shadow::SplitScheme(ex10::practicalSplits) : nullptr;
     csm_.snapper = student ? shadow::TexelSnapper(ex10::snapToTexels) : nullptr;
+    csm_.studentChoice = student;  // GLSL exercise 10.4: your cascade choice in the shader
   }
 
   void render(const FrameInfo& f) override {

@@ -5,7 +5,7 @@
 // light's array texture (the projective maps' storage and lookup, common/projective_maps.glsl). A
 // point takes the cascade its view depth falls in; within the blend band at a cascade's far end the
 // next cascade's lookup is mixed in (psm::cascadeAt in common/algorithms/psm/cascades.cpp mirrors
-// cascadeAt in common/cascade_choice.glsl: keep the two in step).
+// cascadeAt in 10_showdown/exercises_reference.glsl: keep the two in step).
 #include "common/projective_maps.glsl"
 
 uniform vec4 uCsmViewZ;            // the viewer's view-matrix row of z: view depth = -dot(row, (p, 1))
@@ -14,9 +14,14 @@ uniform vec4 uCsmFar[PSM_LIGHTS];  // where cascades 0..3 end (uPsmLayers[light]
 uniform float uCsmBand;            // the blend band: this fraction of a cascade's depth range at its far end
 
 // cascadeAt(light, depth, out nextWeight): the cascade of a view depth and the next one's weight in
-// the blend band. Exercise 10.3's answer in GLSL, so it lives in a file of its own, sealed in the
-// student handout.
-#include "common/cascade_choice.glsl"
+// the blend band: exercise 10.4 (GLSL), exercise 10.3's answer in the shader. The student's with
+// impl=student in lesson 10 (the cascades' shaderDefines() add SHADOWLAB_STUDENT_CASCADES), else the
+// reference (sealed in the student handout).
+#ifdef SHADOWLAB_STUDENT_CASCADES
+#include "10_showdown/exercises.glsl"
+#else
+#include "10_showdown/exercises_reference.glsl"
+#endif
 
 // The cascade of a surface point (for the cascade-colouring view, shaders/common/cascade_colours.frag).
 int cascadeOf(int light, vec3 worldPos, out float nextWeight) {

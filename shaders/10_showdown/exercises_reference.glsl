@@ -1,7 +1,8 @@
-// The cascade a view depth falls in, and the weight of the next cascade within the blend band at
-// its far end (included by shadow_cascades.frag, which declares the uniforms): exercise 10.3's answer
-// in GLSL, sealed in the student handout. Mirrors psm::cascadeAt (common/algorithms/psm/cascades.cpp);
+// Lesson 10, GLSL exercise: the reference (sealed in the student handout; exercises.glsl says what
+// the function does). shadow_cascades.frag includes this file unless SHADOWLAB_STUDENT_CASCADES is
+// set; it reads that shader's uniforms. Mirrors psm::cascadeAt (common/algorithms/psm/cascades.cpp);
 // keep them in step.
+
 // The cascade that shades view depth `depth` of light `light` (-1: none), and the weight of the next.
 int cascadeAt(int light, float depth, out float nextWeight) {
   nextWeight = 0.0;

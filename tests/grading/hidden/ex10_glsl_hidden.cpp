@@ -1,0 +1,28 @@
+// Hidden GLSL cases for lesson 10 (instructor tree only): random cascade choices, and the lesson
+// rendered (technique=csm) from random cameras and suns, with the seed the grader chooses.
+#include <random>
+#include <string>
+#include <vector>
+
+#include "../glsl/ex10_glsl_cases.hpp"
+#include "random_view.hpp"
+#include "app/glsl_cases.hpp"
+#include "grading/cases.hpp"
+
+namespace {
+shadowlab::HiddenGlsl hidden() {
+  shadowlab::HiddenGlsl h;
+  std::mt19937_64 rng(shadowlab::grading::seedFor("ex10 GLSL hidden"));
+  for (int i = 0; i < 24; ++i)
+    h.cases.push_back(shadowlab::ex10glsl::randomChoices(rng, "ex10.4: hidden random choices " + std::to_string(i)));
+  for (int i = 0; i < 2; ++i) {
+    std::vector<std::string> args{"--set", "technique=csm"};
+    for (std::string& a : shadowlab::glslcases::randomSunAndCamera(rng, 0.6f)) args.push_back(std::move(a));
+    h.renders.push_back(
+        {"ex10.4: hidden render " + std::to_string(i) + ": a random sun and camera", args, 8, 0.001, 0.05, true});
+  }
+  return h;
+}
+
+const bool registered = (shadowlab::registerHiddenGlslCases("10_showdown", hidden), true);
+}  // namespace
