@@ -11,6 +11,7 @@
 # And the proof that each grader is valid (label validity, part of `make test`):
 #   validity.exNN.reference  every case (public and hidden) passes on the reference
 #   validity.exNN.stubs      every case fails on the untouched stubs: a stub scores 0
+#   validity.exNN.stubs_seeds the same with each of 40 seeds (grading runs draw theirs at random)
 # The stub check needs the stubs untouched: their SHA-256 is recorded in grading/pristine.sha256.
 # A student who edited exercises.cpp gets the check left out (with a message); CI configures with
 # SHADOWLAB_REQUIRE_PRISTINE_STUBS=ON so a changed stub without an updated hash fails loudly.
@@ -90,6 +91,10 @@ foreach(stub IN LISTS EXERCISE_STUBS)
   if(found GREATER -1)
     add_test(NAME validity.ex${nn}.stubs COMMAND grade_ex${nn} --expect-stub-scores-zero)
     set_tests_properties(validity.ex${nn}.stubs PROPERTIES LABELS validity)
+    add_test(NAME validity.ex${nn}.stubs_seeds
+             COMMAND ${CMAKE_COMMAND} -DGRADER=$<TARGET_FILE:grade_ex${nn}> -DFIRST=1 -DLAST=40
+                     -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_stub_seeds.cmake)
+    set_tests_properties(validity.ex${nn}.stubs_seeds PROPERTIES LABELS validity)
   elseif(SHADOWLAB_REQUIRE_PRISTINE_STUBS)
     message(FATAL_ERROR "${stub_rel} differs from its recorded pristine hash; if the stubs changed on purpose, run `make stub-hashes`")
   else()

@@ -6,7 +6,8 @@
 # ctest: "exNN.k GLSL" per GLSL exercise (label exNN, for students); and, proving the grader
 # valid (label validity, in make test): validity.exNN_glsl.reference (the reference GLSL as the
 # student's file passes every case), validity.exNN_glsl.stubs (the untouched stubs score 0; needs
-# the pristine hash of exercises.glsl) and validity.exNN_glsl.compile_error (a file that does not
+# the pristine hash of exercises.glsl), validity.exNN_glsl.stubs_seeds (the same with each of 10
+# seeds, renders left out) and validity.exNN_glsl.compile_error (a file that does not
 # compile scores 0, its compiler error in the report).
 if(SHADOWLAB_UNIT_ONLY)
   return()
@@ -72,6 +73,11 @@ foreach(cases IN LISTS GLSL_CASE_FILES)
   if(found GREATER -1)
     add_test(NAME validity.ex${nn}_glsl.stubs COMMAND ${grade_glsl} --expect-stub-scores-zero)
     set_tests_properties(validity.ex${nn}_glsl.stubs PROPERTIES LABELS validity)
+    # Each of 10 seeds, the cases without the renders (those redraw placements that show too
+    # little to grade: grading::renderInformative, unit-tested).
+    add_test(NAME validity.ex${nn}_glsl.stubs_seeds COMMAND ${grade_glsl} --expect-stub-scores-zero --cases-only
+                                                             --seeds=1-10)
+    set_tests_properties(validity.ex${nn}_glsl.stubs_seeds PROPERTIES LABELS validity)
   elseif(SHADOWLAB_REQUIRE_PRISTINE_STUBS)
     message(FATAL_ERROR "shaders/${lesson}/exercises.glsl differs from its recorded pristine hash; if the stubs changed on purpose, run `make stub-hashes`")
   else()

@@ -57,6 +57,11 @@ struct GlslRender {
   double figureTolerance = 0.05;
   bool measure = false;
   bool hidden = false;
+  // A random placement (hidden renders): the arguments drawn again for attempt 1, 2, ... The
+  // grader redraws while the reference's render of the last arguments shows too little to tell
+  // any answer from the stub's (a camera facing a wall, no shadow in view): a draw like that
+  // would let an untouched stub pass. Empty: a fixed view, graded as it is.
+  std::function<std::vector<std::string>(int attempt)> redraw;
 };
 
 struct GlslExerciseSet {

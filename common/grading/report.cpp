@@ -5,6 +5,8 @@
 #include <fstream>
 #include <map>
 
+#include "grading/checks.hpp"
+
 namespace shadowlab::grading {
 namespace {
 
@@ -243,6 +245,27 @@ bool stubsScoreZero(const std::vector<RunResult>& runs, std::ostream& out, std::
     if (e.points == 0)
       out << "validity: " << e.id << " scores 0 on the stub, as it must (" << e.cases() << " cases fail)\n";
   return bad == 0;
+}
+
+bool renderInformative(const nlohmann::json& j, std::string& why) {
+  if (!j.is_object()) return why = "no ground-truth figures", false;
+  auto number = [](const nlohmann::json& o, const char* key) {
+    return o.is_object() && o.contains(key) && o[key].is_number() ? o[key].get<double>() : 0.0;
+  };
+  const double pixels = std::max(number(j, "width") * number(j, "height"), 1.0);
+  if (j.contains("hard")) {
+    const double facing = number(j["hard"], "facing_pixels"), shadowed = number(j["hard"], "reference_shadowed");
+    why = show(100 * facing / pixels) + "% of the view faces the light, " +
+          show(100 * shadowed / std::max(facing, 1.0)) + "% of that in shadow";
+    return facing >= 0.25 * pixels && shadowed >= 0.02 * facing && shadowed <= 0.98 * facing;
+  }
+  if (j.contains("soft")) {
+    const double seen = number(j["soft"], "pixels"), umbra = number(j["soft"], "umbra_pixels");
+    why = show(100 * seen / pixels) + "% of the view measured, " + show(100 * umbra / std::max(seen, 1.0)) +
+          "% of that umbra";
+    return seen >= 0.25 * pixels && umbra >= 0.01 * seen;
+  }
+  return why = "no hard or soft shadow figures", false;
 }
 
 }  // namespace shadowlab::grading

@@ -6,19 +6,25 @@
 //
 //   grade_exNN_glsl --lesson-binary=PATH [--student=tree|reference|DIR] [--exercise=NN.k]
 //                   [--seed=N] [--images=DIR] [--results-json=F] [--score-json=F] [--junit=F]
-//                   [--gradescope=F] [--expect-stub-scores-zero]
+//                   [--gradescope=F] [--expect-stub-scores-zero] [--cases-only] [--seeds=FROM-TO]
 //
 // --student: whose exercises.glsl: this tree's (default), the reference file (validity), or
 // DIR/shaders/<lesson>/exercises.glsl (a submission). The last two run against a copy of the
 // shader tree (SHADOWLAB_ROOT) with that file in place. A file that does not compile fails every
-// case with the compiler's error. Exit: 0 all passed, 1 a case failed (or none ran), 2 bad usage.
+// case with the compiler's error. --cases-only leaves the renders out; --seeds runs the cases once
+// per seed FROM..TO in one context (with --expect-stub-scores-zero: proof that no random hidden
+// case is one the untouched stub passes by chance, whatever seed a grading run draws). Exit: 0 all passed, 1 a case
+// failed (or none ran), 2 bad usage.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -44,8 +50,17 @@ namespace {
 struct Options {
   std::string lessonBinary, student = "tree", exercise, images;
   grading::ReportFiles reports;
-  bool expectStubsScoreZero = false;
+  bool expectStubsScoreZero = false, casesOnly = false;
+  std::uint64_t seedFrom = 0, seedTo = 0;  // --seeds; seedTo == 0: the one seed in use
 };
+
+bool parseSeed(const std::string& text, std::uint64_t& out) {
+  char* end = nullptr;
+  const unsigned long long s = std::strtoull(text.c_str(), &end, 10);
+  if (text.empty() || *end || text[0] == '-') return false;
+  out = s;
+  return true;
+}
 
 bool value(const std::string& arg, const char* flag, std::string& out) {
   const std::string f = std::string(flag) + "=";
@@ -57,7 +72,7 @@ bool value(const std::string& arg, const char* flag, std::string& out) {
 int parse(int argc, char** argv, Options& o) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    std::string seed;
+    std::string seed, seeds;
     if (value(a, "--lesson-binary", o.lessonBinary) || value(a, "--student", o.student) ||
         value(a, "--exercise", o.exercise) || value(a, "--images", o.images) ||
         value(a, "--results-json", o.reports.results) || value(a, "--score-json", o.reports.score) ||
@@ -65,17 +80,26 @@ int parse(int argc, char** argv, Options& o) {
       continue;
     if (a == "--expect-stub-scores-zero") {
       o.expectStubsScoreZero = true;
+    } else if (a == "--cases-only") {
+      o.casesOnly = true;
     } else if (value(a, "--seed", seed)) {
-      char* end = nullptr;
-      const unsigned long long s = std::strtoull(seed.c_str(), &end, 10);
-      if (seed.empty() || *end || seed[0] == '-') {
+      std::uint64_t s = 0;
+      if (!parseSeed(seed, s)) {
         std::cerr << "--seed='" << seed << "' is not a non-negative integer\n";
         return 2;
       }
       grading::setSeed(s);
+    } else if (value(a, "--seeds", seeds)) {
+      const auto dash = seeds.find('-');
+      if (dash == std::string::npos || !parseSeed(seeds.substr(0, dash), o.seedFrom) ||
+          !parseSeed(seeds.substr(dash + 1), o.seedTo) || o.seedTo < o.seedFrom) {
+        std::cerr << "--seeds='" << seeds << "' is not FROM-TO, two non-negative integers with FROM <= TO\n";
+        return 2;
+      }
     } else {
-      std::cerr << "unknown argument '" << a << "'; valid: --lesson-binary --student --exercise --seed --images "
-                << "--results-json --score-json --junit --gradescope --expect-stub-scores-zero\n";
+      std::cerr << "unknown argument '" << a << "'; valid: --lesson-binary --student --exercise --seed --seeds "
+                << "--images --results-json --score-json --junit --gradescope --expect-stub-scores-zero "
+                << "--cases-only\n";
       return 2;
     }
   }
@@ -176,7 +200,13 @@ std::string compareRenders(const GlslRender& r, const Render& mine, const Render
   return why;
 }
 
-grading::CaseResult renderCase(const Options& o, const std::string& lesson, const GlslRender& r, int index) {
+// Whether the reference's render can grade the answer (grading::renderInformative).
+bool informative(const Render& ref, std::string& why) {
+  std::ifstream in(ref.measure);
+  return grading::renderInformative(nlohmann::json::parse(in, nullptr, false), why);
+}
+
+grading::CaseResult renderCase(const Options& o, const std::string& lesson, GlslRender r, int index) {
   grading::CaseResult c;
   c.name = r.name;
   c.exercise = grading::exerciseOf(r.name);
@@ -187,9 +217,24 @@ grading::CaseResult renderCase(const Options& o, const std::string& lesson, cons
                                         : fs::path(o.images);
   const fs::path caseDir = dir / (lesson + "_render_" + std::to_string(index));
   fs::create_directories(caseDir);
-  const Render mine = renderLesson(o, r, true, caseDir), ref = renderLesson(o, r, false, caseDir);
+  Render ref = renderLesson(o, r, false, caseDir);
+  std::string why, redrawn;
+  constexpr int kDraws = 8;
+  for (int attempt = 1; r.redraw && r.measure && ref.exit == 0 && !informative(ref, why) && attempt <= kDraws;
+       ++attempt) {
+    redrawn += "\n  drawn again:" + commandLine(r) + " (" + why + ")";
+    std::cout << "[shadowlab] " << r.name << ": placement drawn again, the reference's render of" << commandLine(r)
+              << " shows too little to grade (" << why << ")\n";
+    r.args = r.redraw(attempt);
+    ref = renderLesson(o, r, false, caseDir);
+  }
+  const bool uninformative = r.redraw && r.measure && ref.exit == 0 && !informative(ref, why);
+  const Render mine = renderLesson(o, r, true, caseDir);
   const std::string what = "lesson " + lesson + commandLine(r) + ", impl=student against impl=reference (320x180)";
-  if (ref.exit != 0)
+  if (uninformative)
+    c.output = what + "\n  no placement in " + std::to_string(kDraws + 1) +
+               " draws shows enough to grade (a grader bug): " + why + redrawn;
+  else if (ref.exit != 0)
     c.output = what + "\n  the reference run failed (a grader bug), exit " + std::to_string(ref.exit) + ": " + ref.log;
   else if (mine.exit != 0)
     c.output = what + "\n  your run failed, exit " + std::to_string(mine.exit) + ":\n" + mine.log;
@@ -197,7 +242,7 @@ grading::CaseResult renderCase(const Options& o, const std::string& lesson, cons
   c.passed = c.output.empty();
   if (!c.passed && c.output.rfind("lesson ", 0) != 0) {
     savePng((caseDir / "difference.png").string(), diffImage(loadImage(mine.png, 3), loadImage(ref.png, 3), 4.0f));
-    c.output = what + c.output + "\n  images: " + caseDir.string() + "/{student,reference,difference}.png";
+    c.output = what + c.output + "\n  images: " + caseDir.string() + "/{student,reference,difference}.png" + redrawn;
   }
   if (o.images.empty()) fs::remove_all(dir);
   return c;
@@ -218,7 +263,7 @@ grading::RunResult grade(const Options& o, const std::string& lesson) {
     auto context = createHeadlessContext({64, 64, "GLSL cases", false, false});
     run.cases = runGlslCases(*set).cases;
   }
-  for (std::size_t i = 0; i < set->renders.size(); ++i)
+  for (std::size_t i = 0; i < set->renders.size() && !o.casesOnly; ++i)
     run.cases.push_back(renderCase(o, lesson, set->renders[i], int(i)));
   run.testCasesRun = int(run.cases.size());
   return run;
@@ -252,6 +297,30 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (!root.empty()) setenv("SHADOWLAB_ROOT", root.c_str(), 1);
+  if (o.seedTo != 0 || o.seedFrom != 0) {  // --seeds: the cases once per seed, every failure named
+    int bad = 0;
+    for (std::uint64_t s = o.seedFrom;; ++s) {
+      grading::setSeed(s);
+      const grading::RunResult run = grade(o, lesson);
+      std::ostringstream quiet;
+      if (run.cases.empty()) {
+        std::cerr << "[shadowlab] no GLSL case ran with seed " << s << "\n";
+        ++bad;
+      } else if (o.expectStubsScoreZero ? !grading::stubsScoreZero({run}, quiet, std::cerr)
+                                        : std::any_of(run.cases.begin(), run.cases.end(),
+                                                      [](const grading::CaseResult& c) { return !c.passed; })) {
+        std::cerr << "[shadowlab] seed " << s << ": " << (o.expectStubsScoreZero ? "a stub passes" : "a case fails")
+                  << " (replay: --seed=" << s << ")\n";
+        ++bad;
+      }
+      if (s == o.seedTo) break;  // FROM-TO may end at the largest seed
+    }
+    if (!root.empty()) fs::remove_all(root);
+    std::cout << "[shadowlab] " << o.seedTo - o.seedFrom + 1 << " seeds (" << o.seedFrom << "-" << o.seedTo
+              << "): " << bad << (o.expectStubsScoreZero ? " where a stub passed a case" : " with a failing case")
+              << "\n";
+    return bad == 0 ? 0 : 1;
+  }
   const grading::RunResult run = grade(o, lesson);
   if (!root.empty()) fs::remove_all(root);
   print(run);

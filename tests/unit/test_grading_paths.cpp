@@ -1,8 +1,9 @@
 // grading/cases: the file names reports give a case (JUnit class names, failure lines), relative to
-// the tree whichever way the compiler was given the file.
+// the tree whichever way the compiler was given the file; grading/report: which renders can grade.
 #include <doctest/doctest.h>
 
 #include "grading/cases.hpp"
+#include "grading/report.hpp"
 #include "test_support.hpp"
 
 using shadowlab::grading::repositoryRelative;
@@ -18,4 +19,31 @@ TEST_CASE("grading: reports name files relative to the source tree") {
   CHECK(repositoryRelative("/usr/include/doctest/doctest.h") == "/usr/include/doctest/doctest.h");
   CHECK(repositoryRelative(root + "-other/x.cpp") == root + "-other/x.cpp");
   CHECK(repositoryRelative("") == "");
+}
+
+// A hidden render whose random placement shows nothing to grade is drawn again (glsl_grader): the
+// reference run of lesson 09 at seed 20 (camera.yaw facing a wall at arm's length, one pixel facing
+// the light, none in shadow) let the untouched stub of exercise 09.6 pass a hidden render.
+TEST_CASE("grading: a hidden render is graded only where the reference shows shadow to tell apart") {
+  using shadowlab::grading::renderInformative;
+  std::string why;
+  const auto hard = [](int facing, int shadowed) {
+    return nlohmann::json{
+        {"width", 320}, {"height", 180}, {"hard", {{"facing_pixels", facing}, {"reference_shadowed", shadowed}}}};
+  };
+  CHECK_FALSE(renderInformative(hard(1, 0), why));  // seed 20's view
+  CHECK(why.find("faces the light") != std::string::npos);
+  CHECK(renderInformative(hard(57487, 6000), why));         // lesson 09's usual view: a tenth in shadow
+  CHECK_FALSE(renderInformative(hard(57487, 500), why));    // under 2% in shadow: "lit" everywhere passes
+  CHECK_FALSE(renderInformative(hard(57487, 57000), why));  // nearly all in shadow
+  CHECK_FALSE(renderInformative(hard(10000, 3000), why));   // under a quarter of the view faces the light
+  CHECK(renderInformative(hard(14400, 2000), why));         // a quarter exactly
+  const auto soft = [](int seen, int umbra) {
+    return nlohmann::json{{"width", 320}, {"height", 180}, {"soft", {{"pixels", seen}, {"umbra_pixels", umbra}}}};
+  };
+  CHECK(renderInformative(soft(50000, 2000), why));
+  CHECK_FALSE(renderInformative(soft(50000, 100), why));
+  CHECK_FALSE(renderInformative(nlohmann::json{{"width", 320}, {"height", 180}}, why));
+  CHECK_FALSE(renderInformative(nlohmann::json::parse("not json", nullptr, false), why));
+  CHECK(why == "no ground-truth figures");
 }

@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include "app/glsl_cases.hpp"
+#include "random_view.hpp"
 #include "grading/cases.hpp"
 
 namespace {
@@ -37,20 +38,21 @@ shadowlab::HiddenGlsl hidden() {
     h.cases.push_back({"ex02.5: hidden random lookups " + std::to_string(i), e + ")", std::nullopt, 0, 4,
                        "uCaseMap: 4x2, row 0 (v < 0.5) 0.2 0.8 0.8 0.8, row 1 0.8 0.8 0.3 0.8"});
   }
-  for (int i = 0; i < 2; ++i) {
-    const float a = 6.2832f * u(rng);
-    const glm::vec3 light(18 * std::cos(a), 18 + 12 * u(rng), 18 * std::sin(a));
-    const glm::vec3 dir = glm::normalize(glm::vec3(0, 1.5f, 0) - light);
-    auto v3 = [](const glm::vec3& v) { return glslFloat(v.x) + " " + glslFloat(v.y) + " " + glslFloat(v.z); };
-    h.renders.push_back(
-        {"ex02.5: hidden render " + std::to_string(i) + ": a random spot and camera (compare=manual)",
-         {"--set", "compare=manual", "--set", "light0.position=" + v3(light), "--set", "light0.direction=" + v3(dir),
-          "--set", "camera.yaw=" + glslFloat(6.2832f * u(rng)), "--set", "bias=" + glslFloat(0.002f * u(rng))},
-         8,
-         0.001,
-         0.05,
-         true});
-  }
+  for (int i = 0; i < 2; ++i)
+    h.renders.push_back(shadowlab::glslcases::randomRender(
+        rng, "ex02.5: hidden render " + std::to_string(i) + ": a random spot and camera (compare=manual)",
+        [](std::mt19937_64& r) {
+          std::uniform_real_distribution<float> v(0, 1);
+          const float a = 6.2832f * v(r);
+          const glm::vec3 light(18 * std::cos(a), 18 + 12 * v(r), 18 * std::sin(a));
+          const glm::vec3 dir = glm::normalize(glm::vec3(0, 1.5f, 0) - light);
+          auto v3 = [](const glm::vec3& x) { return glslFloat(x.x) + " " + glslFloat(x.y) + " " + glslFloat(x.z); };
+          return std::vector<std::string>{"--set", "compare=manual",
+                                          "--set", "light0.position=" + v3(light),
+                                          "--set", "light0.direction=" + v3(dir),
+                                          "--set", "camera.yaw=" + glslFloat(6.2832f * v(r)),
+                                          "--set", "bias=" + glslFloat(0.002f * v(r))};
+        }));
   return h;
 }
 

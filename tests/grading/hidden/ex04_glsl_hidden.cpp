@@ -7,6 +7,7 @@
 
 #include "../glsl/ex04_glsl_cases.hpp"
 #include "app/glsl_cases.hpp"
+#include "random_view.hpp"
 #include "grading/cases.hpp"
 
 namespace {
@@ -18,20 +19,15 @@ shadowlab::HiddenGlsl hidden() {
   for (int i = 0; i < 24; ++i)
     h.cases.push_back(
         shadowlab::ex04glsl::randomExtrusion(rng, "ex04.5: hidden random extrusions " + std::to_string(i), i % 2 == 1));
-  std::uniform_real_distribution<float> u(0, 1);
-  for (int i = 0; i < 2; ++i) {
-    const float a = 6.2832f * u(rng);
-    const glm::vec3 sun = glm::normalize(glm::vec3(std::cos(a), -(0.5f + u(rng)), std::sin(a)));
-    h.renders.push_back(
-        {"ex04.5: hidden render " + std::to_string(i) + ": a random sun and camera, silhouettes=gpu",
-         {"--set", "silhouettes=gpu", "--set",
-          "light0.direction=" + glslFloat(sun.x) + " " + glslFloat(sun.y) + " " + glslFloat(sun.z), "--set",
-          "camera.yaw=" + glslFloat(6.2832f * u(rng)), "--set", std::string("method=") + (i == 0 ? "z_fail" : "auto")},
-         8,
-         0.001,
-         0.05,
-         true});
-  }
+  for (int i = 0; i < 2; ++i)
+    h.renders.push_back(shadowlab::glslcases::randomRender(
+        rng, "ex04.5: hidden render " + std::to_string(i) + ": a random sun and camera, silhouettes=gpu",
+        [i](std::mt19937_64& r) {
+          std::vector<std::string> args{"--set", "silhouettes=gpu", "--set",
+                                        std::string("method=") + (i == 0 ? "z_fail" : "auto")};
+          for (std::string& a : shadowlab::glslcases::randomSunAndCamera(r, 0.5f)) args.push_back(std::move(a));
+          return args;
+        }));
   return h;
 }
 

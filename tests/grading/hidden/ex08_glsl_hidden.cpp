@@ -15,12 +15,13 @@ shadowlab::HiddenGlsl hidden() {
   std::mt19937_64 rng(shadowlab::grading::seedFor("ex08 GLSL hidden"));
   for (int i = 0; i < 24; ++i)
     h.cases.push_back(shadowlab::ex08glsl::randomLookups(rng, "ex08.3: hidden random lookups " + std::to_string(i)));
-  for (int i = 0; i < 2; ++i) {
-    std::vector<std::string> args{"--set", "technique=psm"};
-    for (std::string& a : shadowlab::glslcases::randomSunAndCamera(rng, 0.6f)) args.push_back(std::move(a));
-    h.renders.push_back(
-        {"ex08.3: hidden render " + std::to_string(i) + ": a random sun and camera", args, 8, 0.001, 0.05, true});
-  }
+  for (int i = 0; i < 2; ++i)
+    h.renders.push_back(shadowlab::glslcases::randomRender(
+        rng, "ex08.3: hidden render " + std::to_string(i) + ": a random sun and camera", [](std::mt19937_64& r) {
+          std::vector<std::string> args{"--set", "technique=psm"};
+          for (std::string& a : shadowlab::glslcases::randomSunAndCamera(r, 0.6f)) args.push_back(std::move(a));
+          return args;
+        }));
   return h;
 }
 

@@ -15,12 +15,14 @@ shadowlab::HiddenGlsl hidden() {
   std::mt19937_64 rng(shadowlab::grading::seedFor("ex09 GLSL hidden"));
   for (int i = 0; i < 24; ++i)
     h.cases.push_back(shadowlab::ex09glsl::randomFaces(rng, "ex09.6: hidden random faces " + std::to_string(i)));
-  for (int i = 0; i < 2; ++i) {
-    std::vector<std::string> args{"--set", "fix.faces=always", "--set", "bias=constant"};
-    for (std::string& a : shadowlab::glslcases::randomSunAndCamera(rng, 0.6f)) args.push_back(std::move(a));
-    h.renders.push_back({"ex09.6: hidden render " + std::to_string(i) + ": face maps, a random sun and camera", args, 8,
-                         0.001, 0.05, true});
-  }
+  for (int i = 0; i < 2; ++i)
+    h.renders.push_back(shadowlab::glslcases::randomRender(
+        rng, "ex09.6: hidden render " + std::to_string(i) + ": face maps, a random sun and camera",
+        [](std::mt19937_64& r) {
+          std::vector<std::string> args{"--set", "fix.faces=always", "--set", "bias=constant"};
+          for (std::string& a : shadowlab::glslcases::randomSunAndCamera(r, 0.6f)) args.push_back(std::move(a));
+          return args;
+        }));
   return h;
 }
 

@@ -15,12 +15,13 @@ shadowlab::HiddenGlsl hidden() {
   std::mt19937_64 rng(shadowlab::grading::seedFor("ex10 GLSL hidden"));
   for (int i = 0; i < 24; ++i)
     h.cases.push_back(shadowlab::ex10glsl::randomChoices(rng, "ex10.4: hidden random choices " + std::to_string(i)));
-  for (int i = 0; i < 2; ++i) {
-    std::vector<std::string> args{"--set", "technique=csm"};
-    for (std::string& a : shadowlab::glslcases::randomSunAndCamera(rng, 0.6f)) args.push_back(std::move(a));
-    h.renders.push_back(
-        {"ex10.4: hidden render " + std::to_string(i) + ": a random sun and camera", args, 8, 0.001, 0.05, true});
-  }
+  for (int i = 0; i < 2; ++i)
+    h.renders.push_back(shadowlab::glslcases::randomRender(
+        rng, "ex10.4: hidden render " + std::to_string(i) + ": a random sun and camera", [](std::mt19937_64& r) {
+          std::vector<std::string> args{"--set", "technique=csm"};
+          for (std::string& a : shadowlab::glslcases::randomSunAndCamera(r, 0.6f)) args.push_back(std::move(a));
+          return args;
+        }));
   return h;
 }
 
