@@ -253,17 +253,16 @@ bool renderInformative(const nlohmann::json& j, std::string& why) {
     return o.is_object() && o.contains(key) && o[key].is_number() ? o[key].get<double>() : 0.0;
   };
   const double pixels = std::max(number(j, "width") * number(j, "height"), 1.0);
+  auto share = [&](double n) { return show(100 * n / pixels) + "%"; };
   if (j.contains("hard")) {
     const double facing = number(j["hard"], "facing_pixels"), shadowed = number(j["hard"], "reference_shadowed");
-    why = show(100 * facing / pixels) + "% of the view faces the light, " +
-          show(100 * shadowed / std::max(facing, 1.0)) + "% of that in shadow";
-    return facing >= 0.25 * pixels && shadowed >= 0.02 * facing && shadowed <= 0.98 * facing;
+    why = share(shadowed) + " of the view in shadow, " + share(facing - shadowed) + " lit";
+    return shadowed >= 0.02 * pixels && facing - shadowed >= 0.02 * pixels;
   }
   if (j.contains("soft")) {
     const double seen = number(j["soft"], "pixels"), umbra = number(j["soft"], "umbra_pixels");
-    why = show(100 * seen / pixels) + "% of the view measured, " + show(100 * umbra / std::max(seen, 1.0)) +
-          "% of that umbra";
-    return seen >= 0.25 * pixels && umbra >= 0.01 * seen;
+    why = share(umbra) + " of the view umbra, " + share(seen - umbra) + " penumbra or lit";
+    return umbra >= 0.005 * pixels && seen - umbra >= 0.02 * pixels;
   }
   return why = "no hard or soft shadow figures", false;
 }

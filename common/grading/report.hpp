@@ -70,10 +70,9 @@ bool writeReports(const ReportFiles& files, const std::vector<RunResult>& runs, 
 bool stubsScoreZero(const std::vector<RunResult>& runs, std::ostream& out, std::ostream& err);
 
 // Whether a hidden render at a random placement can grade a GLSL answer, from the reference run's
-// ground-truth figures (the lesson's --measure file): most of the view faces the light and part of
-// it, not all, is in shadow (hard: 25% of the pixels facing, 2% to 98% of those shadowed), or some
-// of it is umbra (soft: 25% measured, 1% of those umbra). A stub that answers "lit" everywhere then
-// differs from the reference on at least 0.5% of the view, five times the renders' tolerance. `why`
+// ground-truth figures (the lesson's --measure file): at least 2% of the view in shadow and 2% lit
+// (hard), or 0.5% umbra and 2% not (soft). A stub that answers "lit" (or "shadowed") everywhere then
+// differs from the reference on 0.5% of the view or more, five times the renders' tolerance. `why`
 // gets the figures in words. False for figures that are not there.
 bool renderInformative(const nlohmann::json& figures, std::string& why);
 

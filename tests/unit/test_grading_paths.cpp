@@ -31,18 +31,22 @@ TEST_CASE("grading: a hidden render is graded only where the reference shows sha
     return nlohmann::json{
         {"width", 320}, {"height", 180}, {"hard", {{"facing_pixels", facing}, {"reference_shadowed", shadowed}}}};
   };
-  CHECK_FALSE(renderInformative(hard(1, 0), why));  // seed 20's view
-  CHECK(why.find("faces the light") != std::string::npos);
-  CHECK(renderInformative(hard(57487, 6000), why));         // lesson 09's usual view: a tenth in shadow
-  CHECK_FALSE(renderInformative(hard(57487, 500), why));    // under 2% in shadow: "lit" everywhere passes
-  CHECK_FALSE(renderInformative(hard(57487, 57000), why));  // nearly all in shadow
-  CHECK_FALSE(renderInformative(hard(10000, 3000), why));   // under a quarter of the view faces the light
-  CHECK(renderInformative(hard(14400, 2000), why));         // a quarter exactly
+  CHECK_FALSE(renderInformative(hard(1, 0), why));               // seed 20's view
+  CHECK(why.rfind("0% of the view in shadow, 0.0017", 0) == 0);  // 1 pixel of 57600 lit
+  CHECK(renderInformative(hard(57487, 6000), why));              // lesson 09's usual view: a tenth in shadow
+  CHECK(renderInformative(hard(10000, 3000), why));              // a sixth of the view faces the light
+  CHECK_FALSE(renderInformative(hard(57487, 500), why));         // "lit" everywhere would pass
+  CHECK_FALSE(renderInformative(hard(57487, 57000), why));       // "shadowed" everywhere would
+  CHECK(renderInformative(hard(2304, 1152), why));               // 2% of 320 x 180 each, exactly
+  CHECK_FALSE(renderInformative(hard(2303, 1152), why));
+  CHECK_FALSE(renderInformative(hard(2303, 1151), why));
   const auto soft = [](int seen, int umbra) {
     return nlohmann::json{{"width", 320}, {"height", 180}, {"soft", {{"pixels", seen}, {"umbra_pixels", umbra}}}};
   };
   CHECK(renderInformative(soft(50000, 2000), why));
-  CHECK_FALSE(renderInformative(soft(50000, 100), why));
+  CHECK_FALSE(renderInformative(soft(50000, 100), why));  // under 0.5% umbra
+  CHECK(renderInformative(soft(50000, 288), why));        // 0.5% of 320 x 180
+  CHECK_FALSE(renderInformative(soft(2500, 2000), why));  // umbra nearly all that is seen
   CHECK_FALSE(renderInformative(nlohmann::json{{"width", 320}, {"height", 180}}, why));
   CHECK_FALSE(renderInformative(nlohmann::json::parse("not json", nullptr, false), why));
   CHECK(why == "no ground-truth figures");
