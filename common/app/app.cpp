@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -27,6 +28,7 @@
 #include "app/outputs.hpp"
 #include "app/ui.hpp"
 #include "core/cli.hpp"
+#include "core/model_file.hpp"
 #include "core/param_checks.hpp"
 #include "core/paths.hpp"
 #include "gl/caps.hpp"
@@ -79,7 +81,10 @@ class Runner {
 
   int run(int argc, char** argv) {
     if (Exit e = parse(argc, argv)) return *e;
-    if (!cl_.model.empty() && !loadModelReporting(cl_.model, info_.name)) return 1;  // a bad file: exit 1
+    if (!cl_.model.empty()) {
+      if (!loadModelReporting(cl_.model, info_.name)) return 1;  // a bad file: exit 1
+      if (!cameraSetOnCommandLine()) aimAtModel();
+    }
     if (Exit e = openContext()) return *e;
     if (Exit e = initLesson()) return *e;
     if (Exit e = startExercises()) return *e;
@@ -121,6 +126,21 @@ class Runner {
       return 2;
     }
     return std::nullopt;
+  }
+
+  // A model made the scene (--model, a dropped file): the camera looks at it from where it fills
+  // most of the view (core/model_file's frameModel), the lesson's yaw and pitch kept; Home comes
+  // back here. --set camera.target or camera.distance on the command line wins over it.
+  void aimAtModel() {
+    const ModelFraming f = frameModel(placeOnGround(*currentModel()), lesson_.camera.fovY);
+    lesson_.camera.target = f.target;
+    lesson_.camera.distance = f.distance;
+    homeCamera_ = lesson_.camera;
+  }
+  bool cameraSetOnCommandLine() const {
+    return std::any_of(cl_.sets.begin(), cl_.sets.end(), [](const std::string& a) {
+      return a.rfind("camera.target", 0) == 0 || a.rfind("camera.distance", 0) == 0;
+    });
   }
 
   // A key bound twice (framework keys included) or on a kind it cannot drive: the lesson is wrong,
@@ -354,7 +374,11 @@ class Runner {
       status_ = "camera reset";
     }
     if (divider != ab_.divider()) ab_.setDivider(divider);
-    if (!input_.dropped.empty()) status_ = loadDroppedModel(input_.dropped.back(), params_, info_.name);
+    if (!input_.dropped.empty()) {
+      const std::uint64_t generation = currentModelGeneration();
+      status_ = loadDroppedModel(input_.dropped.back(), params_, info_.name);
+      if (currentModelGeneration() != generation) aimAtModel();
+    }
     input_.dropped.clear();
     if (input_.uiScaleSteps != 0) {
       ui_.setScale(ui_.scale() * std::pow(1.15f, float(input_.uiScaleSteps)));

@@ -348,6 +348,15 @@ ModelFile loadModelFromMemory(const void* data, std::size_t size, const std::str
   });
 }
 
+ModelFraming frameModel(const Scene& placed, float fovY) {
+  Aabb box;
+  for (std::size_t i = 1; i < placed.objects.size(); ++i) box.extend(placed.objectBounds(i));
+  if (box.empty()) return {};
+  const float radius = std::max(0.5f * glm::length(box.extent()), 1e-3f);
+  const float halfAngle = std::atan(0.45f * std::tan(0.5f * fovY));  // the sphere's, seen from the camera
+  return {box.center(), radius / std::sin(halfAngle)};
+}
+
 Scene placeOnGround(const ModelFile& model, float size, float groundSize) {
   Scene scene;
   scene.name = "model " + model.scene.name;

@@ -72,6 +72,16 @@ ModelFile loadModelFromMemory(const void* data, std::size_t size, const std::str
 // shadows and casts none (as the procedural scenes' grounds): object 0, mesh 0 and material 0.
 Scene placeOnGround(const ModelFile& model, float size = 4.0f, float groundSize = 30.0f);
 
+// Where a lesson's camera looks at a placed model (placeOnGround's scene: object 0 the ground, left
+// out): the centre of the model's box, from a distance at which the box's bounding sphere spans 45%
+// of the view's height (vertical field of view fovY, radians), whatever the yaw and pitch. The app
+// aims the camera so when --model or a dropped file makes the model the scene.
+struct ModelFraming {
+  glm::vec3 target{0.0f};
+  float distance = 1.0f;
+};
+ModelFraming frameModel(const Scene& placed, float fovY);
+
 // The process's current model: what scene=model draws in every lesson (technique/scene_cache). The
 // app loads it from --model or a file dropped on the window; each load bumps the generation, so
 // scene caches rebuild. A failed load throws ModelError and keeps the previous model.

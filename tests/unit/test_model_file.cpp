@@ -461,6 +461,27 @@ TEST_CASE("model: placed on the ground: the largest side the given size, centred
   CHECK(tent.objectBounds(1).extent().x == doctest::Approx(3.0f));
 }
 
+TEST_CASE("model: framed for the camera: its box's centre, its bounding sphere 45% of the view") {
+  const float fovY = 0.873f;  // OrbitCamera's 50 degrees
+  const Scene cube = placeOnGround(loadModelFile(kModels + "cube.obj"), 4.0f);
+  const ModelFraming f = frameModel(cube, fovY);
+  CHECK(f.target.x == doctest::Approx(0.0f));
+  CHECK(f.target.y == doctest::Approx(2.0f));  // half of the 4 m cube standing on y = 0
+  CHECK(f.target.z == doctest::Approx(0.0f));
+  // The sphere through the cube's corners (radius 2 sqrt 3) seen under 45% of the half-angle's tangent.
+  const float radius = 2.0f * std::sqrt(3.0f);
+  CHECK(std::tan(std::asin(radius / f.distance)) == doctest::Approx(0.45f * std::tan(0.5f * fovY)));
+  CHECK(f.distance == doctest::Approx(16.87f).epsilon(0.01));  // 2 sqrt 3 / sin(atan(0.45 tan 25 deg))
+  // A tall model is framed at its middle height; a wider view comes closer.
+  const Scene tent = placeOnGround(loadModelFile(kModels + "tent.obj"), 3.0f);
+  CHECK(frameModel(tent, fovY).target.y == doctest::Approx(0.5f * tent.objectBounds(1).extent().y));
+  CHECK(frameModel(cube, 1.2f).distance < f.distance);
+  // Only the ground: nothing to frame, the default pose.
+  Scene ground = cube;
+  ground.objects.resize(1);
+  CHECK(frameModel(ground, fovY).distance == doctest::Approx(1.0f));
+}
+
 TEST_CASE("model: the current model: each load a new generation, a failed load keeps the previous one") {
   const std::uint64_t before = currentModelGeneration();
   loadCurrentModel(kModels + "cube.obj");
