@@ -142,38 +142,37 @@ TEST_CASE("psm cone: hand sets and the hemisphere limit") {
   CHECK_FALSE(smallestEnclosingCone(d).valid);
 }
 
-TEST_CASE("psm cone: random sets match the brute force, also for 1e-9 rad cones") {
-  std::mt19937_64 rng(shadowlab::test::seedFor("psm cone random"));
+namespace {
+// Sets of minCount + i % countRange directions around random centres, spread 1e-9 to 0.13 across,
+// against the brute force; returns how many sets fit in a hemisphere (the ones compared).
+int checkRandomCones(const char* seedName, int sets, int minCount, int countRange) {
+  std::mt19937_64 rng(shadowlab::test::seedFor(seedName));
   std::normal_distribution<double> g(0.0, 1.0);
-  for (int i = 0; i < 300; ++i) {
+  int compared = 0;
+  for (int i = 0; i < sets; ++i) {
     const glm::dvec3 centre = glm::normalize(glm::dvec3(g(rng), g(rng), g(rng)));
     const double spread = std::pow(10.0, -9.0 + 9.0 * (i % 10) / 10.0);
     std::vector<glm::dvec3> d;
-    for (int k = 0; k < 2 + i % 7; ++k) d.push_back(centre + spread * glm::dvec3(g(rng), g(rng), g(rng)));
+    for (int k = 0; k < minCount + i % countRange; ++k)
+      d.push_back(centre + spread * glm::dvec3(g(rng), g(rng), g(rng)));
     const Cone brute = smallestEnclosingConeBruteForce(d);
     std::vector<glm::dvec3> copy = d;
     const Cone fast = smallestEnclosingCone(copy);
     if (!brute.valid) continue;
+    ++compared;
     CHECK(fast.valid);
     CHECK(std::abs(fast.halfAngle - brute.halfAngle) <= 1e-7 * brute.halfAngle + 1e-15);
   }
+  return compared;
+}
+}  // namespace
+
+TEST_CASE("psm cone: random sets match the brute force, also for 1e-9 rad cones") {
+  checkRandomCones("psm cone random", 300, 2, 7);
 }
 
 TEST_CASE("psm cone: 16 and more directions (extremes, then the points outside) match the brute force") {
-  std::mt19937_64 rng(shadowlab::test::seedFor("psm cone core set"));
-  std::normal_distribution<double> g(0.0, 1.0);
-  for (int i = 0; i < 60; ++i) {
-    const glm::dvec3 centre = glm::normalize(glm::dvec3(g(rng), g(rng), g(rng)));
-    const double spread = std::pow(10.0, -9.0 + 9.0 * (i % 10) / 10.0);
-    std::vector<glm::dvec3> d;
-    for (int k = 0; k < 16 + i % 17; ++k) d.push_back(centre + spread * glm::dvec3(g(rng), g(rng), g(rng)));
-    const Cone brute = smallestEnclosingConeBruteForce(d);
-    std::vector<glm::dvec3> copy = d;
-    const Cone fast = smallestEnclosingCone(copy);
-    REQUIRE(brute.valid);
-    CHECK(fast.valid);
-    CHECK(std::abs(fast.halfAngle - brute.halfAngle) <= 1e-7 * brute.halfAngle + 1e-15);
-  }
+  CHECK(checkRandomCones("psm cone core set", 60, 16, 17) == 60);  // spreads up to 0.13: all in a hemisphere
 }
 
 TEST_CASE("psm cone: boundary points the extremes miss still shape the cone") {
