@@ -1,6 +1,7 @@
 // Unit tests for common/algorithms/psm: conventions, clipping, cone, cameras (hand-derived values).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -141,21 +142,77 @@ TEST_CASE("psm cone: hand sets and the hemisphere limit") {
   CHECK_FALSE(smallestEnclosingCone(d).valid);
 }
 
-TEST_CASE("psm cone: random sets match the brute force, also for 1e-9 rad cones") {
-  std::mt19937_64 rng(shadowlab::test::seedFor("psm cone random"));
+namespace {
+// Sets of minCount + i % countRange directions around random centres, spread 1e-9 to 0.13 across,
+// against the brute force; returns how many sets fit in a hemisphere (the ones compared).
+int checkRandomCones(const char* seedName, int sets, int minCount, int countRange) {
+  std::mt19937_64 rng(shadowlab::test::seedFor(seedName));
   std::normal_distribution<double> g(0.0, 1.0);
-  for (int i = 0; i < 300; ++i) {
+  int compared = 0;
+  for (int i = 0; i < sets; ++i) {
     const glm::dvec3 centre = glm::normalize(glm::dvec3(g(rng), g(rng), g(rng)));
     const double spread = std::pow(10.0, -9.0 + 9.0 * (i % 10) / 10.0);
     std::vector<glm::dvec3> d;
-    for (int k = 0; k < 2 + i % 7; ++k) d.push_back(centre + spread * glm::dvec3(g(rng), g(rng), g(rng)));
+    for (int k = 0; k < minCount + i % countRange; ++k)
+      d.push_back(centre + spread * glm::dvec3(g(rng), g(rng), g(rng)));
     const Cone brute = smallestEnclosingConeBruteForce(d);
     std::vector<glm::dvec3> copy = d;
     const Cone fast = smallestEnclosingCone(copy);
     if (!brute.valid) continue;
+    ++compared;
     CHECK(fast.valid);
     CHECK(std::abs(fast.halfAngle - brute.halfAngle) <= 1e-7 * brute.halfAngle + 1e-15);
   }
+  return compared;
+}
+}  // namespace
+
+TEST_CASE("psm cone: random sets match the brute force, also for 1e-9 rad cones") {
+  checkRandomCones("psm cone random", 300, 2, 7);
+}
+
+TEST_CASE("psm cone: 16 and more directions (extremes, then the points outside) match the brute force") {
+  CHECK(checkRandomCones("psm cone core set", 60, 16, 17) == 60);  // spreads up to 0.13: all in a hemisphere
+}
+
+TEST_CASE("psm cone: boundary points the extremes miss still shape the cone") {
+  // A ring of 35 directions 0.3 rad around +z, every fifth one pushed out to 0.5 rad (7 outer
+  // ones, no two opposite), then 200 directions near the axis: the extremes taken first need not
+  // be the outer ones, and the cone is right only if the points outside their ball are refitted.
+  std::vector<glm::dvec3> d;
+  for (int k = 0; k < 35; ++k) {
+    const double phi = 2.0 * std::numbers::pi * k / 35.0, theta = k % 5 == 0 ? 0.5 : 0.3;
+    d.push_back({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
+  }
+  for (int k = 0; k < 200; ++k) d.push_back({1e-3 * (k % 7 - 3), 1e-3 * (k % 5 - 2), 1.0});
+  std::vector<glm::dvec3> copy = d;
+  const Cone c = smallestEnclosingCone(copy);
+  CHECK(c.valid);
+  CHECK(c.halfAngle == doctest::Approx(0.5).epsilon(1e-12));  // 7 points at 0.5 rad, evenly spread
+  CHECK(c.axis.z == doctest::Approx(1.0).epsilon(1e-12));
+  // The same cone in every input order.
+  for (int r = 0; r < 5; ++r) {
+    std::rotate(d.begin(), d.begin() + 37, d.end());
+    copy = d;
+    CHECK(smallestEnclosingCone(copy).halfAngle == doctest::Approx(0.5).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("psm cone: 16 and more directions outside any hemisphere, or one bad, are reported") {
+  std::vector<glm::dvec3> d;
+  for (int k = 0; k < 30; ++k) {
+    const double phi = 2.0 * std::numbers::pi * k / 30.0;
+    d.push_back({std::cos(phi), std::sin(phi), 0.1 * (k % 3 - 1)});  // a belt round the sphere
+  }
+  std::vector<glm::dvec3> copy = d;
+  CHECK_FALSE(smallestEnclosingCone(copy).valid);
+  d.assign(20, glm::dvec3(0.0, 0.0, 1.0));
+  copy = d;
+  CHECK(smallestEnclosingCone(copy).halfAngle == doctest::Approx(0.0));  // all the same
+  d[17] = glm::dvec3(0.0);
+  CHECK_THROWS_WITH_AS(smallestEnclosingCone(d), doctest::Contains("direction 17"), std::invalid_argument);
+  d[17] = glm::dvec3(std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0);
+  CHECK_THROWS_WITH_AS(smallestEnclosingCone(d), doctest::Contains("direction 17"), std::invalid_argument);
 }
 
 TEST_CASE("psm camera: the inverse projection's depth is a / Z, and [0,1] is (1 + a/Z) / 2") {

@@ -1,6 +1,7 @@
 #include "algorithms/psm/clipping.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -76,8 +77,13 @@ int clipPolygon(const glm::dvec3* in, int n, const Plane& plane, glm::dvec3* out
 }
 
 std::size_t clipBoxToFrustum(const Aabb& box, const Frustum& frustum, std::vector<glm::dvec3>& out) {
-  validateBox(box);
   const glm::dvec3 lo(box.min), hi(box.max);
+  // The common case in three comparisons per axis; validateBox names what is wrong otherwise.
+  const glm::dvec3 size = hi - lo;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (!(size.x >= 0.0 && size.x < inf && size.y >= 0.0 && size.y < inf && size.z >= 0.0 && size.z < inf) ||
+      !(size.x > 0.0 || size.y > 0.0 || size.z > 0.0)) [[unlikely]]
+    validateBox(box);
   const std::size_t before = out.size();
   // Per plane: every corner outside (reject), every corner inside (the plane cannot cut the box),
   // or it straddles. Only straddled planes cut: most boxes are wholly inside (their 8 corners),
@@ -91,7 +97,9 @@ std::size_t clipBoxToFrustum(const Aabb& box, const Frustum& frustum, std::vecto
     if (p.distance(near) < 0.0) straddled[count++] = k;
   }
   if (count == 0) {
-    for (int i = 0; i < 8; ++i) out.emplace_back((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+    out.resize(before + 8);
+    glm::dvec3* c = out.data() + before;
+    for (int i = 0; i < 8; ++i) c[i] = glm::dvec3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
     return 8;
   }
   // Vertices of B ∩ F lie on a face of B or a face of F: clip B's faces by the straddled planes of

@@ -87,35 +87,94 @@ Cone coneFromAxis(const glm::dvec3& axis, std::span<const glm::dvec3> units) {
   return cone;
 }
 
-glm::dvec3 unitChecked(const glm::dvec3& v, std::size_t i) {
+// Cold and out of line: the normalising loops stay free of its string work.
+[[gnu::cold, gnu::noinline]] glm::dvec3 unitChecked(const glm::dvec3& v, std::size_t i) {
   if (!isFinite(v)) throw std::invalid_argument("direction " + std::to_string(i) + " is not finite");
   const double len = glm::length(v);
   if (!(len > 0.0)) throw std::invalid_argument("direction " + std::to_string(i) + " is the zero vector");
   return v / len;
 }
 
-// A head start for Welzl: moves the directions most likely to be on the cone's boundary to the
-// front of p and returns how many. About the mean direction a0: the least and most u.e1, u.e2 (e1,
-// e2 across a0) and the least u.a0, so that the first ball is nearly the last and hardly any later
-// point restarts the loops (measured: 1,000 receiver boxes, 6,134 directions, one pass of tests
-// after the head). Welzl's expected linear time holds for any head; the rest is shuffled.
-std::size_t leadExtremes(std::span<glm::dvec3> p, const glm::dvec3& sum) {
-  const std::size_t n = p.size();
-  if (n < 16) return 0;
-  const double len = glm::length(sum);
-  if (!(len > 0.0)) return 0;
-  const glm::dvec3 a0 = sum / len, e1 = anyPerpendicular(a0), e2 = glm::cross(a0, e1);
-  std::size_t ext[5] = {};
-  double best[5] = {-1e300, -1e300, -1e300, -1e300, -1e300};
-  for (std::size_t i = 0; i < n; ++i) {
-    const double x = glm::dot(p[i], e1), y = glm::dot(p[i], e2), z = glm::dot(p[i], a0);
-    const double key[5] = {x, -x, y, -y, -z};
-    for (int k = 0; k < 5; ++k)
-      if (key[k] > best[k]) {
-        best[k] = key[k];
-        ext[k] = i;
+// Welzl with 0..3 boundary points, as loops over p in its order. A 4th boundary point only arises
+// when the points are not in an open hemisphere (4 points on the unit sphere span the sphere
+// itself); then the ball through 3 points is kept and the hemisphere test afterwards reports it.
+Ball welzl(std::span<const glm::dvec3> p) {
+  Ball b{p[0], 0.0};
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    if (contains(b, p[i])) continue;
+    b = Ball{p[i], 0.0};
+    for (std::size_t j = 0; j < i; ++j) {
+      if (contains(b, p[j])) continue;
+      b = ball2(p[i], p[j]);
+      for (std::size_t k = 0; k < j; ++k) {
+        if (contains(b, p[k])) continue;
+        b = ball3(p[i], p[j], p[k]);
       }
+    }
   }
+  return b;
+}
+
+// Fisher-Yates over p[from..), with a multiply-shift in place of the modulo (an integer division
+// per point).
+void shuffleFrom(std::span<glm::dvec3> p, std::size_t from, std::uint64_t& s) {
+  for (std::size_t i = p.size() - 1; i > from; --i)
+    std::swap(p[i], p[from + std::size_t(((next(s) >> 32) * std::uint64_t(i + 1 - from)) >> 32)]);
+}
+
+// all[i] / |all[i]| (unitChecked names a NaN, infinite or zero one).
+inline glm::dvec3 unitAt(std::span<const glm::dvec3> all, std::size_t i) {
+  const glm::dvec3 v = all[i];
+  const double len2 = glm::dot(v, v);
+  // One test for NaN, infinity and zero before the division.
+  if (!(len2 > 0.0 && len2 < std::numeric_limits<double>::infinity())) [[unlikely]]
+    return unitChecked(all[i], i);
+  return v * (1.0 / std::sqrt(len2));
+}
+
+// Normalises every direction and moves the ones most likely to be on the cone's boundary to the
+// front of p; returns how many. About a guessed centre a0 (the sum of three samples): the least
+// and most u.e1, u.e2 (e1, e2 across a0) and the least u.a0, found in the normalising pass itself.
+std::size_t normaliseLeadExtremes(std::span<glm::dvec3> p) {
+  const std::size_t n = p.size();
+  glm::dvec3 guess(0.0);
+  for (const std::size_t i : {std::size_t(0), n / 3, 2 * n / 3}) {
+    const double len2 = glm::dot(p[i], p[i]);  // a bad one is named by the pass below
+    if (len2 > 0.0 && len2 < std::numeric_limits<double>::infinity()) guess += p[i] * (1.0 / std::sqrt(len2));
+  }
+  const double len = glm::length(guess);
+  const glm::dvec3 a0 = len > 0.0 ? guess / len : glm::dvec3(0.0, 0.0, 1.0);
+  const glm::dvec3 e1 = anyPerpendicular(a0), e2 = glm::cross(a0, e1);
+  // Scalars, not arrays: the loop keeps everything in registers (arrays of keys went through the
+  // stack and stalled on store forwarding).
+  double b0 = -1e300, b1 = -1e300, b2 = -1e300, b3 = -1e300, b4 = -1e300;
+  std::size_t i0 = 0, i1 = 0, i2 = 0, i3 = 0, i4 = 0;
+  auto keep = [](double key, std::size_t i, double& best, std::size_t& at) {
+    const bool more = key > best;
+    best = more ? key : best;
+    at = more ? i : at;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec3 v = p[i];
+    const double len2 = glm::dot(v, v);
+    double ux, uy, uz;
+    if (!(len2 > 0.0 && len2 < std::numeric_limits<double>::infinity())) [[unlikely]] {
+      const glm::dvec3 w = unitChecked(p[i], i);
+      ux = w.x, uy = w.y, uz = w.z;
+    } else {
+      const double inv = 1.0 / std::sqrt(len2);
+      ux = v.x * inv, uy = v.y * inv, uz = v.z * inv;
+    }
+    p[i].x = ux, p[i].y = uy, p[i].z = uz;
+    const double x = ux * e1.x + uy * e1.y + uz * e1.z, y = ux * e2.x + uy * e2.y + uz * e2.z;
+    const double z = ux * a0.x + uy * a0.y + uz * a0.z;
+    keep(x, i, b0, i0);
+    keep(-x, i, b1, i1);
+    keep(y, i, b2, i2);
+    keep(-y, i, b3, i3);
+    keep(-z, i, b4, i4);
+  }
+  std::size_t ext[5] = {i0, i1, i2, i3, i4};
   std::size_t head = 0;
   for (int k = 0; k < 5; ++k) {
     bool seen = false;
@@ -129,48 +188,45 @@ std::size_t leadExtremes(std::span<glm::dvec3> p, const glm::dvec3& sum) {
   return head;
 }
 
+// The smallest ball over many unit vectors without shuffling them all: the ball of a small
+// core set (first the extremes) is grown by the points outside it (moved behind the core) until
+// it holds every point; the ball of a subset that holds the whole set is the whole set's ball.
+// Usually two scans; after kRounds the plain Welzl over every point decides.
+Ball coreSetBall(std::span<glm::dvec3> p, std::uint64_t& s) {
+  constexpr int kRounds = 16;
+  const std::size_t n = p.size();
+  const std::size_t head = normaliseLeadExtremes(p);
+  std::size_t core = head;
+  Ball b = welzl(p.first(core));
+  for (int round = 0; round < kRounds; ++round) {
+    const std::size_t before = core;
+    for (std::size_t i = core; i < n; ++i)
+      if (!contains(b, p[i])) std::swap(p[i], p[core++]);
+    if (core == before) return b;
+    shuffleFrom(p.first(core), head, s);  // Welzl's expected linear time over the core
+    b = welzl(p.first(core));
+  }
+  shuffleFrom(p, head, s);
+  return welzl(p);
+}
+
 }  // namespace
 
 Cone smallestEnclosingCone(std::span<glm::dvec3> all) {
-  const std::size_t total = all.size();
-  if (total == 0) return Cone{};
-  glm::dvec3 sum(0.0);
-  for (std::size_t i = 0; i < total; ++i) {
-    const glm::dvec3 v = all[i];
-    const double len2 = glm::dot(v, v);
-    // One test for NaN, infinity and zero (unitChecked names which) before the division.
-    if (!(len2 > 0.0 && len2 < std::numeric_limits<double>::infinity())) all[i] = unitChecked(v, i);
-    else all[i] = v * (1.0 / std::sqrt(len2));
-    sum += all[i];
-  }
-  const std::span<glm::dvec3> p = all;
-  const std::size_t n = p.size();
-  const std::size_t head = leadExtremes(p, sum);
+  const std::size_t n = all.size();
+  if (n == 0) return Cone{};
   std::uint64_t s = 0x9E3779B97F4A7C15ull ^ n;
-  // Fisher-Yates behind the extremes, with a multiply-shift in place of the modulo (an integer
-  // division per point).
-  for (std::size_t i = n - 1; i > head; --i)
-    std::swap(p[i], p[head + std::size_t(((next(s) >> 32) * std::uint64_t(i + 1 - head)) >> 32)]);
-
-  // Welzl with 0..3 boundary points, as loops. A 4th boundary point only arises when the points
-  // are not in an open hemisphere (4 points on the unit sphere span the sphere itself); then the
-  // ball through 3 points is kept and the hemisphere test below reports the failure.
-  Ball b{p[0], 0.0};
-  for (std::size_t i = 1; i < n; ++i) {
-    if (contains(b, p[i])) continue;
-    b = Ball{p[i], 0.0};
-    for (std::size_t j = 0; j < i; ++j) {
-      if (contains(b, p[j])) continue;
-      b = ball2(p[i], p[j]);
-      for (std::size_t k = 0; k < j; ++k) {
-        if (contains(b, p[k])) continue;
-        b = ball3(p[i], p[j], p[k]);
-      }
-    }
+  Ball b;
+  if (n < 16) {  // few directions: normalise, shuffle, Welzl
+    for (std::size_t i = 0; i < n; ++i) all[i] = unitAt(all, i);
+    shuffleFrom(all, 0, s);
+    b = welzl(all);
+  } else {
+    b = coreSetBall(all, s);
   }
   const double cl = glm::length(b.c);
   if (!(cl > 1e-9)) {
-    Cone c = coneFromAxis(p[0], all);
+    Cone c = coneFromAxis(all[0], all);
     c.valid = false;
     return c;
   }

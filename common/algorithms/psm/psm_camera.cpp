@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace shadowlab::psm {
 
@@ -133,6 +134,27 @@ void setConeProjection(const PostProjectiveLight& light, double zMin, double zMa
   }
 }
 
+// Least and greatest distance along cam.axis over the points (capped: only those inside the
+// camera's cone). One loop per case: no per-point root when nothing is capped.
+std::pair<double, double> depthAlongAxis(std::span<const glm::dvec3> pts, const LightCamera& cam, bool capped) {
+  double zMin = std::numeric_limits<double>::max(), zMax = 0.0;
+  auto scan = [&](auto held) {
+    for (const auto& p : pts) {
+      const double z = glm::dot(p - cam.eye, cam.axis);
+      if (!held(p, z)) continue;
+      zMin = std::min(zMin, z);
+      zMax = std::max(zMax, z);
+    }
+  };
+  if (capped) {
+    const double cosHalf = std::cos(cam.halfAngle);
+    scan([&](const glm::dvec3& p, double z) { return !(z < glm::length(p - cam.eye) * cosHalf); });
+  } else {
+    scan([](const glm::dvec3&, double) { return true; });
+  }
+  return {zMin, zMax};
+}
+
 PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts, const glm::dmat4& cameraViewProj,
                const PsmOptions& opt, std::vector<glm::dvec3>& scratch) {
   checkOptions(opt);
@@ -151,12 +173,16 @@ PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts
   }
   // Finite light (in front or behind): smallest cone from the light over the key points.
   scratch.resize(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i) scratch[i] = pts[i] - light.position;
-  for (const auto& d : scratch)
-    if (!(glm::dot(d, d) > 0.0)) {  // a receiver exactly at the light: no cone can be aimed
-      fit.status = FitStatus::ConeTooWide;
-      return fit;
-    }
+  bool atLight = false;  // a receiver exactly at the light: no cone can be aimed
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const glm::dvec3 d = pts[i] - light.position;
+    scratch[i] = d;
+    atLight = atLight || !(glm::dot(d, d) > 0.0);
+  }
+  if (atLight) {
+    fit.status = FitStatus::ConeTooWide;
+    return fit;
+  }
   fit.cone = opt.steps.cone ? opt.steps.cone(scratch) : smallestEnclosingCone(scratch);
   if (!fit.cone.valid || !(fit.cone.halfAngle <= opt.maxHalfAngle || opt.capWideCones)) {
     fit.status = FitStatus::ConeTooWide;
@@ -167,14 +193,7 @@ PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts
   cam.halfAngle = std::min(fit.cone.halfAngle, opt.maxHalfAngle) * (1.0 + kAngleMargin) + 1e-12;
   cam.view = lookAlong(cam.eye, cam.axis);
   // Depth range over the points the map holds (all of them, unless a capped cone left some out).
-  const double cosHalf = std::cos(cam.halfAngle);
-  double zMin = std::numeric_limits<double>::max(), zMax = 0.0;
-  for (const auto& p : pts) {
-    const double z = glm::dot(p - cam.eye, cam.axis);
-    if (fit.cone.halfAngle > opt.maxHalfAngle && z < glm::length(p - cam.eye) * cosHalf) continue;
-    zMin = std::min(zMin, z);
-    zMax = std::max(zMax, z);
-  }
+  const auto [zMin, zMax] = depthAlongAxis(pts, cam, fit.cone.halfAngle > opt.maxHalfAngle);
   if (!(zMin > 0.0) || zMin > zMax) {  // a capped cone holding no point: nothing to aim at
     fit.status = FitStatus::ConeTooWide;
     return fit;
