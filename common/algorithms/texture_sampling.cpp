@@ -260,6 +260,15 @@ glm::vec4 sampleLod(const std::vector<ImageF>& chain, const glm::vec2& uv, float
   return glm::vec4(0);
 }
 
+SamplerState bestFilter(const SamplerState& s) {
+  SamplerState best = s;
+  best.mag = best.min = Filter::Linear;
+  best.mip = MipFilter::Linear;
+  best.maxAniso = 16;
+  best.lodBias = 0;
+  return best;
+}
+
 glm::vec4 sample(const std::vector<ImageF>& chain, const glm::vec2& uv, const glm::vec2& dUVdx, const glm::vec2& dUVdy,
                  const SamplerState& s) {
   if (chain.empty()) throw std::invalid_argument("sample: empty mip chain");

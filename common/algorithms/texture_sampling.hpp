@@ -91,6 +91,11 @@ struct SamplerState {
   float maxAniso = 1.0f;  // 1: isotropic
 };
 
+// The best filter a sampler offers, `s`'s wrap modes and border kept: trilinear (linear
+// magnification and minification, linear between levels), 16x anisotropy, no LOD bias. Lesson 06
+// renders its supersampled reference with it.
+SamplerState bestFilter(const SamplerState& s);
+
 // Integer texel index after wrapping; -1 for clamp-to-border outside [0, n).
 int wrapIndex(int i, int n, Wrap wrap);
 glm::vec4 texel(const ImageF& level, int x, int y, Wrap s, Wrap t, const glm::vec4& border);

@@ -69,6 +69,16 @@ namespace {
 bool g_async = false;
 }
 
+std::vector<std::string> modeDefines(const std::vector<ShaderMode>& modes) {
+  std::vector<std::string> defines;
+  for (const ShaderMode& m : modes) defines.push_back(std::string(m.define) + " " + std::to_string(m.value));
+  return defines;
+}
+
+void setModeUniforms(const Program& program, const std::vector<ShaderMode>& modes) {
+  for (const ShaderMode& m : modes) program.set(m.uniform, m.value);
+}
+
 void setAsyncCompile(bool on) {
   g_async = on && epoxy_has_gl_extension("GL_KHR_parallel_shader_compile");
   if (g_async) glMaxShaderCompilerThreadsKHR(0xFFFFFFFFu);  // as many threads as the driver likes

@@ -105,6 +105,16 @@ class ProgramVariants {
   std::map<std::string, std::unique_ptr<Program>> programs_;
 };
 
+// A mode a shader takes both ways: as a constant of its specialised variant (#define NAME value) and
+// as the uniform its generic build reads, which draws while a window compiles that variant.
+struct ShaderMode {
+  const char* define;   // "VIEW"
+  const char* uniform;  // "uView"
+  int value;
+};
+std::vector<std::string> modeDefines(const std::vector<ShaderMode>& modes);          // {"VIEW 2", ...}
+void setModeUniforms(const Program& program, const std::vector<ShaderMode>& modes);  // in use
+
 // Parallel shader compilation (GL_KHR_parallel_shader_compile), where the driver has it: the app
 // turns it on for interactive windows, off for headless runs whose frames must be reproducible.
 void setAsyncCompile(bool on);

@@ -85,6 +85,25 @@ Texture uploadVolume(int n, const std::vector<std::uint8_t>& voxels, const std::
   return tex;
 }
 
+FilterTexture uploadFilterTexture(const ImageF& base, const std::string& label) {
+  FilterTexture t;
+  t.chain = sampling::buildMipChain(base);
+  t.mips = uploadMipChain(t.chain, label);
+  sampling::RipAtlas rip = sampling::buildRipAtlas(base);
+  t.rip = uploadLevel(rip.atlas, label + " RIP atlas");
+  t.ripOffsetX = std::move(rip.offsetX);
+  t.ripOffsetY = std::move(rip.offsetY);
+  return t;
+}
+
+void setRipUniforms(const Program& program, const FilterTexture& t) {
+  glUniform2i(program.location("uTexSize"), t.chain[0].width, t.chain[0].height);
+  const GLint levels[2] = {GLint(t.ripOffsetX.size()), GLint(t.ripOffsetY.size())};
+  glUniform1iv(program.location("uRipLevels"), 2, levels);
+  glUniform1iv(program.location("uRipOffsetX"), GLsizei(t.ripOffsetX.size()), t.ripOffsetX.data());
+  glUniform1iv(program.location("uRipOffsetY"), GLsizei(t.ripOffsetY.size()), t.ripOffsetY.data());
+}
+
 float applySamplerState(GLuint sampler, const sampling::SamplerState& s) {
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GLint(wrapEnum(s.wrapS)));
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GLint(wrapEnum(s.wrapT)));
@@ -129,6 +148,18 @@ FootprintTarget makeFootprintTarget(int width, int height, bool aux, const std::
   glDrawBuffers(aux ? 3 : 1, buffers);
   requireComplete(GL_FRAMEBUFFER, label);
   return t;
+}
+
+void clearFootprintTarget(const FootprintTarget& t, const glm::vec3& background) {
+  glBindFramebuffer(GL_FRAMEBUFFER, t.fbo.id());
+  glViewport(0, 0, t.width, t.height);
+  const float zero[4] = {0, 0, 0, 0}, colour[4] = {background.x, background.y, background.z, 1};
+  glClearBufferfv(GL_COLOR, 0, colour);
+  if (t.uv) {
+    glClearBufferfv(GL_COLOR, 1, zero);
+    glClearBufferfv(GL_COLOR, 2, zero);
+  }
+  glClear(GL_DEPTH_BUFFER_BIT);
 }
 
 std::vector<glm::vec4> readFloatPixels(GLuint fbo, int attachment, int x, int y, int width, int height) {

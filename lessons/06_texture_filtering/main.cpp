@@ -12,37 +12,27 @@
 // Exercises (exercises.hpp): mip count and memory, LOD, bilinear, trilinear, anisotropic probes,
 // box downsample. `--set impl=student --set view=cpu_reference` samples with your code.
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdio>
 
 #include <glm/gtc/matrix_inverse.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <imgui.h>
 
 #include "app/exercise_program.hpp"
-#include "app/footprint_reference.hpp"
+#include "app/filter_textures.hpp"
+#include "app/filtering_readout.hpp"
 #include "app/lesson.hpp"
-#include "core/mesh_gen.hpp"
-#include "core/paths.hpp"
-#include "algorithms/texture_sampling.hpp"
 #include "exercises.hpp"
 #include "gl/caps.hpp"
-#include "gl/mesh_gpu.hpp"
-#include "gl/program.hpp"
-#include "gl/texture.hpp"
-#include "gl/texture_modes.hpp"
+#include "scenes.hpp"
 
 using namespace shadowlab;
+using namespace lesson06;
 using sampling::Filter;
 using sampling::MipFilter;
 using sampling::Wrap;
 
 namespace {
 
-enum class SceneKind { Ground, Tunnel, Sphere };
 enum class TexChoice { CheckerFine, Checker, Text, Bricks, ZonePlate, Volume };
-enum class UvMode { Auto, Explicit, Planar, Cylindrical, Spherical };
 enum class View { Shaded, MipLevel, Anisotropy, CpuReference, Difference };
 enum class Sampling { Hardware, RipMap };
 enum class Combine { Replace, Modulate, Blend };
@@ -79,15 +69,8 @@ struct Params {
   float diffGain = 8.0f;           // difference view amplification
 };
 
-const char* const kTextureFiles[] = {"checker_fine.png", "checker.png", "text.png", "bricks.png"};
+const char* const kTextures[] = {"checker_fine", "checker", "text", "bricks", "zone_plate", "volume"};
 constexpr int kVolumeSizes[] = {32, 64, 128, 256};
-
-double mib(std::uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
-std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, f, a, b, c, d);
-  return buf;
-}
 
 // What the launcher and the F1 overlay say about this lesson.
 const char* const kSummary =
@@ -100,23 +83,6 @@ probes under the cursor; view=difference compares the GPU with the CPU reference
 
 }  // namespace
 
-// The colour key of the mip-level and anisotropy views: levelColour() of scene.frag, as drawn.
-Legend levelLegend(View view) {
-  static const glm::vec3 palette[8] = {{0.2f, 0.2f, 1.0f}, {0.0f, 0.8f, 1.0f}, {0.0f, 0.9f, 0.3f}, {0.8f, 1.0f, 0.0f},
-                                       {1.0f, 0.7f, 0.0f}, {1.0f, 0.2f, 0.0f}, {0.9f, 0.0f, 0.6f}, {1.0f, 1.0f, 1.0f}};
-  const auto colour = [](float level) {
-    const float l = std::clamp(level, 0.0f, 7.0f);
-    const int i = int(l);
-    return glm::mix(palette[i], palette[std::min(i + 1, 7)], l - float(i));
-  };
-  Legend key{view == View::MipLevel ? "mip level the hardware picks" : "anisotropic probes N", {}};
-  for (int i = 0; i < (view == View::MipLevel ? 8 : 5); ++i)
-    key.entries.push_back(view == View::MipLevel
-                              ? Legend::Entry{colour(float(i)), "level " + std::to_string(i) + (i == 7 ? "+" : "")}
-                              : Legend::Entry{colour(float(i) * 1.75f), "N = " + std::to_string(1 << i)});
-  return key;
-}
-
 class TextureFilteringLesson : public Lesson {
  public:
   void declare(ParamRegistry& r) override {
@@ -124,7 +90,7 @@ class TextureFilteringLesson : public Lesson {
     camera.farZ = 500.0f;
     r.addChoice("scene", &p_.scene, {"ground", "tunnel", "sphere"}, "a plane to the horizon, a tunnel, a sphere")
         .hotkey = "G";
-    r.addChoice("texture", &p_.texture, {"checker_fine", "checker", "text", "bricks", "zone_plate", "volume"},
+    r.addChoice("texture", &p_.texture, {std::begin(kTextures), std::end(kTextures)},
                 "what is sampled: fine detail aliases; volume is a slice of a 3D texture")
         .hotkey = "T";
     r.addChoice("uv.mode", &p_.uv, {"auto", "explicit", "planar", "cylindrical", "spherical"},
@@ -184,14 +150,8 @@ class TextureFilteringLesson : public Lesson {
   void init() override {
     program_.build();
     sampler_ = gl::makeSampler("06 filter sampler");
-    ground_ = gl::uploadMesh(makePlane(400.0f, 8, 400.0f), "ground plane");
-    Mesh tube = makeCylinder(3.0f, 200.0f, 96, false);
-    flipInsideOut(tube);
-    tunnel_ = gl::uploadMesh(tube, "tunnel");
-    sphere_ = gl::uploadMesh(makeSphere(2.0f, 128, 64), "sphere");
-    normalMap_ =
-        gl::uploadMipChain(sampling::buildMipChain(sampling::toFloat(loadImage(textureRoot() + "/bricks_normal.png"))),
-                           "bricks normal map");
+    shapes_ = makeShapes();
+    textures_.loadNormalMap("bricks normal map");
     loadTexture();
   }
 
@@ -202,7 +162,7 @@ class TextureFilteringLesson : public Lesson {
   }
 
   void update(const FrameInfo& f) override {
-    if (p_.texture != builtTexture_ || p_.volumeSize != builtVolume_) loadTexture();
+    loadTexture();  // when texture or volume.size changed
     if (p_.animateLight) p_.lightAngle = std::remainder(p_.lightAngle + 0.6f * float(f.dt), 6.2831853f);
     if (p_.path) camera.target.x += p_.pathSpeed * float(f.dt);
   }
@@ -213,7 +173,8 @@ class TextureFilteringLesson : public Lesson {
     {
       auto t = scope("scene");
       drawScene(target_, samplerState(), f.width, f.height);
-      if (p_.view == View::MipLevel || p_.view == View::Anisotropy) legends.push_back(levelLegend(p_.view));
+      if (p_.view == View::MipLevel) legends.push_back(mipLevelLegend());
+      if (p_.view == View::Anisotropy) legends.push_back(anisotropyLegend());
     }
     // ==== 2. readout under the cursor: footprint, lambda, anisotropic probes =========================
     {
@@ -221,8 +182,7 @@ class TextureFilteringLesson : public Lesson {
       probeReadout(f, aniso);
     }
     // ==== 3. CPU reference sampler and the difference view ==========================================
-    const bool cpuView = p_.view == View::CpuReference || p_.view == View::Difference;
-    if (cpuView) {
+    if (cpuView()) {
       auto t = scope("cpu reference");
       cpuReference();
     }
@@ -234,140 +194,59 @@ class TextureFilteringLesson : public Lesson {
     // ==== 5. to the screen, with the probe marked ==================================================
     {
       auto t = scope("present");
-      glBindFramebuffer(GL_READ_FRAMEBUFFER, cpuView ? cpuView_.framebuffer() : target_.fbo.id());
+      glBindFramebuffer(GL_READ_FRAMEBUFFER, cpuView() ? cpuView_.framebuffer() : target_.fbo.id());
       glBindFramebuffer(GL_DRAW_FRAMEBUFFER, f.framebuffer);
       glBlitFramebuffer(0, 0, f.width, f.height, 0, 0, f.width, f.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-      glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer);
-      glEnable(GL_SCISSOR_TEST);
-      const int px = std::clamp(p_.probeX, 0, f.width - 1), py = f.height - 1 - std::clamp(p_.probeY, 0, f.height - 1);
-      glClearColor(1, 0.1f, 0.9f, 1);
-      glScissor(px - 8, py, 17, 1);
-      glClear(GL_COLOR_BUFFER_BIT);
-      glScissor(px, py - 8, 1, 17);
-      glClear(GL_COLOR_BUFFER_BIT);
-      glDisable(GL_SCISSOR_TEST);
+      markPixel(f.framebuffer, probePixel(p_.probeX, p_.probeY, f.width, f.height));
     }
   }
 
-  void gui() override {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureMouse || io.MousePos.x < 0 || io.MousePos.y < 0) return;
-    p_.probeX = int(io.MousePos.x * io.DisplayFramebufferScale.x);
-    p_.probeY = int(io.MousePos.y * io.DisplayFramebufferScale.y);
-  }
+  void gui() override { followMouse(p_.probeX, p_.probeY); }
 
  private:
+  // What the lesson's sampler object holds (gl::applySamplerState) and the CPU sampler mirrors: mag,
+  // min, mip, wrap s and t, border, LOD bias, max anisotropy.
   sampling::SamplerState samplerState() const {
-    sampling::SamplerState s;
-    s.mag = p_.mag;
-    s.min = p_.min;
-    s.mip = p_.mip;
-    s.wrapS = p_.wrapS;
-    s.wrapT = p_.wrapT;
-    s.border = glm::vec4(p_.border, 1);
-    s.lodBias = p_.lodBias;
-    s.maxAniso = float(p_.aniso);
-    return s;
+    return {p_.mag, p_.min, p_.mip, p_.wrapS, p_.wrapT, glm::vec4(p_.border, 1), p_.lodBias, float(p_.aniso)};
+  }
+  bool cpuView() const { return p_.view == View::CpuReference || p_.view == View::Difference; }
+
+  // scene.frag's modes: constants of a specialised build, or the uniforms of its generic one.
+  std::vector<gl::ShaderMode> shaderModes() const {
+    return {{"UV_MODE", "uUvMode", int(uvMode(p_.uv, p_.scene)) - 1},
+            {"VIEW", "uView", cpuView() ? 3 : std::min(int(p_.view), 2)},
+            {"SAMPLING", "uSampling", p_.texture == TexChoice::Volume ? 2 : int(p_.sampling)},
+            {"COMBINE", "uCombine", int(p_.combine)},
+            {"CHANNELS", "uChannels", int(p_.channels)},
+            {"NORMAL_MAPPING", "uNormalMapping", int(p_.normalMap)}};
   }
 
-  // scene.frag's modes (its UV_MODE, VIEW, ... defines, or the generic build's uniforms).
-  struct ShaderModes {
-    int uvMode, view, sampling, combine, channels;
-    bool normalMapping;
-  };
-  ShaderModes shaderModes() const {
-    const bool cpuView = p_.view == View::CpuReference || p_.view == View::Difference;
-    return {int(uvMode()) - 1,
-            cpuView ? 3 : std::min(int(p_.view), 2),
-            p_.texture == TexChoice::Volume ? 2 : int(p_.sampling),
-            int(p_.combine),
-            int(p_.channels),
-            p_.normalMap};
-  }
-
-  // The scene's natural projection and its tiling: (repeats along u, along v).
-  UvMode uvMode() const {
-    if (p_.uv != UvMode::Auto) return p_.uv;
-    return p_.scene == SceneKind::Ground   ? UvMode::Planar
-           : p_.scene == SceneKind::Tunnel ? UvMode::Cylindrical
-                                           : UvMode::Spherical;
-  }
-  glm::vec2 uvScale() const {
-    const UvMode m = uvMode();
-    glm::vec2 base(1.0f);
-    if (m == UvMode::Cylindrical) base = {16.0f, 1.0f};
-    if (m == UvMode::Spherical) base = {8.0f, 4.0f};
-    if (m == UvMode::Explicit && p_.scene == SceneKind::Tunnel) base = {16.0f, 200.0f / 18.85f * 16.0f};
-    if (m == UvMode::Explicit && p_.scene == SceneKind::Sphere) base = {8.0f, 4.0f};
-    return base * p_.uvScale;
-  }
-
-  void loadTexture() {
-    builtTexture_ = p_.texture;
-    builtVolume_ = p_.volumeSize;
-    ImageF base = p_.texture == TexChoice::ZonePlate ? sampling::makeZonePlate(512)
-                  : p_.texture == TexChoice::Volume
-                      ? sampling::makeZonePlate(256)
-                      : sampling::toFloat(loadImage(textureRoot() + "/" + kTextureFiles[int(p_.texture)]));
-    chain_ = sampling::buildMipChain(base);
-    texture_ = gl::uploadMipChain(
-        chain_, std::string("06 texture ") + (p_.texture == TexChoice::ZonePlate ? "zone plate" : "file"));
-    const sampling::RipAtlas rip = sampling::buildRipAtlas(base);
-    rip_ = gl::uploadLevel(rip.atlas, "06 RIP atlas");
-    ripOffsetX_ = rip.offsetX;
-    ripOffsetY_ = rip.offsetY;
-    if (p_.texture == TexChoice::Volume) {  // a "tomogram": nested shells of density
-      const int n = kVolumeSizes[p_.volumeSize];
-      const std::vector<std::uint8_t> voxels = sampling::makeShellVolume(n);
-      volume_ = gl::uploadVolume(n, voxels, "06 volume " + std::to_string(n) + "^3");
-    }
-  }
+  void loadTexture() { textures_.update(kTextures[int(p_.texture)], kVolumeSizes[p_.volumeSize], "06"); }
 
   void drawScene(const gl::FootprintTarget& t, const sampling::SamplerState& s, int w, int h) {
     const glm::vec3 sky(0.55f, 0.7f, 0.9f);
-    glBindFramebuffer(GL_FRAMEBUFFER, t.fbo.id());
-    glViewport(0, 0, t.width, t.height);
+    gl::clearFootprintTarget(t, sky);
     glEnable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
-    const float zero[4] = {0, 0, 0, 0}, skyColor[4] = {sky.x, sky.y, sky.z, 1};
-    glClearBufferfv(GL_COLOR, 0, skyColor);
-    if (t.uv) {
-      glClearBufferfv(GL_COLOR, 1, zero);
-      glClearBufferfv(GL_COLOR, 2, zero);
-    }
-    glClear(GL_DEPTH_BUFFER_BIT);
     const glm::mat4 viewProj = camera.projection(float(w) / float(h)) * camera.view();
-    // The modes as the shader's constants: one program per mode set (the generic build, driven by
-    // the same values as uniforms, draws while a new one compiles in a window).
-    const ShaderModes m = shaderModes();
-    gl::Program& program = program_.get(
-        {"UV_MODE " + std::to_string(m.uvMode), "VIEW " + std::to_string(m.view),
-         "SAMPLING " + std::to_string(m.sampling), "COMBINE " + std::to_string(m.combine),
-         "CHANNELS " + std::to_string(m.channels), "NORMAL_MAPPING " + std::to_string(int(m.normalMapping))});
+    const std::vector<gl::ShaderMode> modes = shaderModes();
+    gl::Program& program = program_.get(gl::modeDefines(modes));
     program.use();
-    program.set("uUvMode", m.uvMode);
-    program.set("uView", m.view);
-    program.set("uSampling", m.sampling);
-    program.set("uCombine", m.combine);
-    program.set("uChannels", m.channels);
-    program.set("uNormalMapping", m.normalMapping);
+    gl::setModeUniforms(program, modes);
     program.set("uViewProj", viewProj);
     program.set("uEye", camera.position());
-    program.set("uUvScale", uvScale());
+    program.set("uUvScale", uvTiling(uvMode(p_.uv, p_.scene), p_.scene) * p_.uvScale);
     program.set("uEnvColor", p_.envColor);
     program.set("uMaterial", glm::vec3(0.9f, 0.88f, 0.85f));
     program.set("uSky", sky);
     program.set("uLightPos",
                 camera.target + glm::vec3(3.0f * std::cos(p_.lightAngle), 1.0f, 3.0f * std::sin(p_.lightAngle)));
-    glUniform2i(program.location("uTexSize"), chain_[0].width, chain_[0].height);
     program.set("uLodBias", s.lodBias);
     program.set("uMaxAniso", float(gl::caps().anisotropic ? std::min(s.maxAniso, gl::caps().maxAnisotropy) : 1.0f));
     program.set("uSlice", p_.slice);
-    glUniform1iv(program.location("uRipLevels"), 2,
-                 std::array<int, 2>{int(ripOffsetX_.size()), int(ripOffsetY_.size())}.data());
-    glUniform1iv(program.location("uRipOffsetX"), GLsizei(ripOffsetX_.size()), ripOffsetX_.data());
-    glUniform1iv(program.location("uRipOffsetY"), GLsizei(ripOffsetY_.size()), ripOffsetY_.data());
-    const GLuint units[4] = {texture_.id(), normalMap_.id(), rip_.id(), volume_.id()};
+    const gl::FilterTexture& tex = textures_.texture;
+    gl::setRipUniforms(program, tex);
+    const GLuint units[4] = {tex.mips.id(), textures_.normalMap.id(), tex.rip.id(), textures_.volume.id()};
     const GLenum targets[4] = {GL_TEXTURE_2D, GL_TEXTURE_2D, GL_TEXTURE_2D, GL_TEXTURE_3D};
     const char* names[4] = {"uTex", "uNormalMap", "uRip", "uVolume"};
     for (int i = 0; i < 4; ++i) {
@@ -376,106 +255,63 @@ class TextureFilteringLesson : public Lesson {
       glBindSampler(GLuint(i), i == 2 ? 0 : sampler_.id());  // the lesson's sampler object holds every mode
       program.set(names[i], i);
     }
-    glm::mat4 model(1.0f);
-    const gl::GpuMesh* mesh = &ground_;
-    if (p_.scene == SceneKind::Tunnel) {
-      model = glm::rotate(glm::mat4(1), glm::radians(90.0f), glm::vec3(1, 0, 0));
-      mesh = &tunnel_;
-    } else if (p_.scene == SceneKind::Sphere) {
-      model = glm::translate(glm::mat4(1), glm::vec3(0, 1, 0));
-      mesh = &sphere_;
-    }
-    program.set("uModel", model);
-    program.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(model)));
-    mesh->draw();
+    const Shape& shape = shapes_[int(p_.scene)];
+    program.set("uModel", shape.model);
+    program.set("uNormalMatrix", glm::inverseTranspose(glm::mat3(shape.model)));
+    shape.mesh.draw();
     for (int i = 3; i >= 0; --i) {
       glActiveTexture(GLenum(GL_TEXTURE0 + i));
       glBindSampler(GLuint(i), 0);
     }
   }
 
+  // The pixel under the cursor: its footprint computed on the CPU beside the hardware's lambda.
   void probeReadout(const FrameInfo& f, float aniso) {
-    const int x = std::clamp(p_.probeX, 0, f.width - 1), y = f.height - 1 - std::clamp(p_.probeY, 0, f.height - 1);
-    const glm::vec4 uv = gl::readFloatPixels(target_.fbo.id(), 1, x, y, 1, 1)[0];
-    const glm::vec4 d = gl::readFloatPixels(target_.fbo.id(), 2, x, y, 1, 1)[0];
-    const glm::ivec2 size(chain_[0].width, chain_[0].height);
-    const sampling::Footprint fp = sampling::footprint({d.x, d.y}, {d.z, d.w}, size, aniso);
-    const std::uint64_t base = std::uint64_t(size.x) * size.y * 4;
-    const int n = kVolumeSizes[p_.volumeSize];
-    counters = {
-        {"texture", fmt("%.0fx%.0f RGBA8, %.0f levels", size.x, size.y, double(chain_.size()))},
-        {"mip chain", fmt("%.3f MiB = %.4f x base (lecture: 1.5)", mib(sampling::mipChainBytes(size.x, size.y, 4)),
-                          double(sampling::mipChainBytes(size.x, size.y, 4)) / double(base))},
-        {"RIP map", fmt("%.3f MiB = %.4f x base", mib(sampling::ripMapBytes(size.x, size.y, 4)),
-                        double(sampling::ripMapBytes(size.x, size.y, 4)) / double(base))},
-        {"3D texture", fmt("%.0f^3 x 4 B = %.2f MiB (lecture: 256^3 x 4 = %.0f MiB)", n,
-                           mib(sampling::volumeBytes(n, n, n, 4)), mib(sampling::volumeBytes(256, 256, 256, 4)))},
-        {"anisotropy", gl::caps().anisotropic ? fmt("%.0fx (max %.0fx)", aniso, gl::caps().maxAnisotropy)
-                                              : std::string("extension missing: 1x only")}};
-    const std::string at = fmt("(%.0f, %.0f)", p_.probeX, p_.probeY);
-    if (uv.z < 0.5f) {
-      counters.push_back({"probe " + at, "sky: no texture"});
-      return;
-    }
-    counters.push_back({"probe " + at + " uv", fmt("%.3f, %.3f", uv.x, uv.y)});
-    counters.push_back({"probe d(uv)/dx,dy texels",
-                        fmt("(%.2f, %.2f) (%.2f, %.2f)", d.x * size.x, d.y * size.y, d.z * size.x, d.w * size.y)});
-    counters.push_back({"probe Px, Py", fmt("%.2f, %.2f texels", fp.px, fp.py)});
-    counters.push_back({"probe lambda CPU / GPU", fmt("%.2f / %.2f (+ bias %.2f)", fp.lambda, uv.w, p_.lodBias)});
-    counters.push_back(
-        {"probe anisotropic", fmt("N = %.0f probes at lambda' = %.2f", fp.probes, fp.lambdaAniso + p_.lodBias)});
+    const glm::ivec2 size = textures_.texture.size();
+    const FootprintSample probe = readFootprint(target_, probePixel(p_.probeX, p_.probeY, f.width, f.height));
+    const sampling::Footprint fp = sampling::footprint(probe.dx, probe.dy, size, aniso);
+    counters = textureMemoryCounters(size, int(textures_.texture.chain.size()), kVolumeSizes[p_.volumeSize], aniso);
+    appendProbeCounters(counters, {p_.probeX, p_.probeY}, probe, fp, size, p_.lodBias);
   }
 
   // Samples every covered pixel's footprint (read back from the scene pass) on the CPU: the
   // reference sampler, or with impl=student the LOD and trilinear filter of exercises.cpp.
   void cpuReference() {
     const sampling::SamplerState s = samplerState();
-    const glm::ivec2 size(chain_[0].width, chain_[0].height);
+    const std::vector<ImageF>& chain = textures_.texture.chain;
     FootprintReference::Sampler sampler = [&](glm::vec2 uv, glm::vec2 dx, glm::vec2 dy) {
       if (p_.impl == Impl::Student)
-        return ex06::sampleTrilinear(chain_, uv, ex06::lodFromDerivatives(dx, dy, size) + s.lodBias);
-      return sampling::sample(chain_, uv, dx, dy, s);
+        return ex06::sampleTrilinear(chain, uv, ex06::lodFromDerivatives(dx, dy, textures_.texture.size()) + s.lodBias);
+      return sampling::sample(chain, uv, dx, dy, s);
     };
     const bool volume = p_.texture == TexChoice::Volume;
     const auto r = cpuView_.sample(target_, volume ? nullptr : sampler, p_.view == View::Difference, p_.diffGain);
-    counters.push_back({"CPU vs GPU RMSE", volume ? std::string("n/a (3D texture)")
-                                                  : fmt("%.2f of 255 over %.0f pixels", r.rmse, double(r.pixels))});
+    counters.push_back(volume ? Counter{"CPU vs GPU RMSE", "n/a (3D texture)"} : referenceCounter(r));
   }
 
   // The same frame at supersample^2 the pixels with the best filter (trilinear, 16x), box-filtered
   // down: RMSE against it, and the frame-to-frame change (flicker) of both, printed per frame.
   void measure(const FrameInfo& f) {
-    sampling::SamplerState best = samplerState();
-    best.mag = best.min = Filter::Linear;
-    best.mip = MipFilter::Linear;
-    best.maxAniso = 16;
-    best.lodBias = 0;
+    const sampling::SamplerState best = sampling::bestFilter(samplerState());
     const auto r = supersampled_.measure(target_, p_.supersample, [&](const gl::FootprintTarget& t) {
       gl::applySamplerState(sampler_.id(), best);
       drawScene(t, best, f.width, f.height);
       gl::applySamplerState(sampler_.id(), samplerState());
     });
-    std::printf("measure frame=%d rmse=%.4f flicker=%.4f ref_flicker=%.4f\n", f.index, r.rmse, r.flicker,
-                r.referenceFlicker);
-    std::fflush(stdout);
-    counters.push_back({"RMSE vs supersampled",
-                        fmt("%.2f of 255 (%.0fx%.0f reference)", r.rmse, r.referenceWidth, r.referenceHeight)});
+    printMeasureLine(f.index, r);
+    counters.push_back(supersampledCounter(r));
   }
 
   Params p_;
   ExerciseProgram program_{"06 scene", {"06_texture_filtering/scene.vert", "06_texture_filtering/scene.frag"}, [this] {
                              return p_.impl == Impl::Student;
-                           }};  // GLSL exercises 06.8, 06.9
-  gl::Sampler sampler_;
-  gl::GpuMesh ground_, tunnel_, sphere_;
-  gl::Texture texture_, normalMap_, rip_, volume_;
+                           }};   // GLSL exercises 06.8, 06.9
+  gl::Sampler sampler_;          // one sampler object: every filter mode of the lesson
+  std::array<Shape, 3> shapes_;  // per SceneKind
+  FilterTextures textures_;      // the chosen one (mip chain on both sides, RIP atlas), the 3D one, the normal map
   gl::FootprintTarget target_;
   FootprintReference cpuView_;
   SupersampledError supersampled_;
-  std::vector<ImageF> chain_;
-  std::vector<int> ripOffsetX_, ripOffsetY_;
-  TexChoice builtTexture_ = TexChoice::CheckerFine;
-  int builtVolume_ = -1;
 };
 
 int main(int argc, char** argv) { return runLesson<TextureFilteringLesson>(argc, argv); }

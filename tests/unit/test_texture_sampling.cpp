@@ -190,6 +190,26 @@ TEST_CASE("texture sampling: anisotropic probes along the major axis") {
   CHECK(sample(chain, {0.5f, 0.5f}, {0.5f, 0}, {0, 1.0f}, s).x == doctest::Approx(16.0f));
 }
 
+TEST_CASE("texture sampling: the best filter is trilinear at 16x with no bias, wrap and border kept") {
+  SamplerState s;
+  s.mag = s.min = Filter::Nearest;
+  s.mip = MipFilter::None;
+  s.wrapS = Wrap::ClampToBorder;
+  s.wrapT = Wrap::MirroredRepeat;
+  s.border = {1.0f, 0.2f, 0.6f, 1.0f};
+  s.lodBias = -2.5f;
+  s.maxAniso = 2;
+  const SamplerState b = bestFilter(s);
+  CHECK(b.mag == Filter::Linear);
+  CHECK(b.min == Filter::Linear);
+  CHECK(b.mip == MipFilter::Linear);
+  CHECK(b.maxAniso == 16.0f);
+  CHECK(b.lodBias == 0.0f);
+  CHECK(b.wrapS == Wrap::ClampToBorder);
+  CHECK(b.wrapT == Wrap::MirroredRepeat);
+  CHECK(b.border == glm::vec4(1.0f, 0.2f, 0.6f, 1.0f));
+}
+
 TEST_CASE("texture sampling: the full path agrees with the level it picks") {
   const auto chain = buildMipChain(makeZonePlate(64));
   SamplerState s;
