@@ -9,6 +9,8 @@
 #   gpu.showdown.cascades_alias  four cascades alias less than one at the same total texels
 #   gpu.showdown.cascades_warp   the warp inside each cascade (csm.warp) aliases less than without it
 #   gpu.showdown.csm_cull_*      caster culling per cascade: the same picture, fewer triangles
+#   gpu.showdown.four_up*        each quarter of the four-up view is its technique's own picture, and
+#                                that picture's ground-truth figures are within the bounds
 #   bench.10_showdown.quick      tools/showdown_bench.sh --quick: the reports, the summary, the plot
 # The bounds are the PSM cases' (tests/psm_lessons.cmake explains them): 1.5 % of the facing
 # pixels misclassified, 5 % of the truly shadowed pixels leaked, on lesson 10's default view (the
@@ -87,3 +89,17 @@ if(TARGET shadowlab_bench)
            -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_showdown_bench.cmake)
   set_tests_properties(bench.10_showdown.quick PROPERTIES LABELS "gpu;bench" TIMEOUT 600)
 endif()
+
+# The four-up view's quarters against ground truth (check_four_up.cmake). Bounds per quarter in
+# hundredths of a percent: the PSM cases' 1.5 %, and 3 % for the hybrid maps under the showdown's low
+# sun (2.1 % there, nearly all false shadows: see hybrid_lesson07_sun above).
+add_executable(quarter_compare ${CMAKE_CURRENT_SOURCE_DIR}/gpu/quarter_compare.cpp)
+target_link_libraries(quarter_compare PRIVATE shadowlab_core)
+function(four_up_case name preset quarters bounds)
+  add_test(NAME gpu.showdown.${name} COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
+           -DCOMPARE=$<TARGET_FILE:quarter_compare> -DOUT_DIR=${showdown_out} -DNAME=${name} -DPRESET=${preset}
+           "-DQUARTERS=${quarters}" "-DBOUNDS=${bounds}" -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_four_up.cmake)
+  set_tests_properties(gpu.showdown.${name} PROPERTIES LABELS gpu TIMEOUT 300)
+endfunction()
+four_up_case(four_up four_up "uniform;psm;lispsm;csm" "150;150;150;150")
+four_up_case(four_up_mixed four_up_mixed "hybrid;volumes;csm;uniform" "300;150;150;150")
