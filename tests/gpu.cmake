@@ -32,8 +32,12 @@ foreach(lesson IN LISTS SHADOWLAB_LESSONS)
            -- --headless --frames 2 --size 640x360 --set view.god=true --screenshot ${shots}/${name}_god.png)
   add_test(NAME gpu.${name}.ab_split COMMAND lesson_check ${bin} --png ${shots}/${name}_ab.png
            -- --headless --frames 2 --size 640x360 --set ab.enabled=true --show-ui --screenshot ${shots}/${name}_ab.png)
+  # make bench's floor (every shading fragment shader trivial) must still draw a frame: the lesson's
+  # floor column is otherwise empty (lesson 07 once stopped there on garbage record counts).
+  add_test(NAME gpu.${name}.floor COMMAND ${CMAKE_COMMAND} -E env SHADOWLAB_FLOOR_SHADER=1
+           $<TARGET_FILE:lesson_check> ${bin} -- --headless --frames 3 --size 320x180 --bench ${shots}/${name}_floor.csv)
   set_tests_properties(gpu.${name}.headless gpu.${name}.presets gpu.${name}.ui gpu.${name}.bench
-                       gpu.${name}.god_view gpu.${name}.ab_split PROPERTIES LABELS gpu)
+                       gpu.${name}.god_view gpu.${name}.ab_split gpu.${name}.floor PROPERTIES LABELS gpu)
   # Same pictures as before a refactor: every preset against the images recorded in
   # tests/data/golden/NAME (SHADOWLAB_RECORD_GOLDEN=1 ctest -R golden records them anew; =missing only
   # those of new presets).

@@ -95,11 +95,12 @@ Program::~Program() {
 }
 
 // The files to compile. SHADOWLAB_FLOOR_SHADER=1 (the benchmark's floor) swaps every fragment
-// stage for shaders/common/floor.frag: the same frame with a trivial fragment shader.
+// stage for shaders/common/floor.frag: the same frame with a trivial fragment shader (but for the
+// data passes marked keepUnderFloor()).
 std::vector<std::string> Program::stageFiles() const {
   static const bool floor =
       std::getenv("SHADOWLAB_FLOOR_SHADER") && std::string(std::getenv("SHADOWLAB_FLOOR_SHADER")) == "1";
-  if (!floor) return files_;
+  if (!floor || keepUnderFloor_) return files_;
   std::vector<std::string> files;
   bool fragment = false;
   for (const auto& f : files_) {

@@ -49,6 +49,10 @@ class Program {
   void setRequired(std::function<bool()> required) { required_ = std::move(required); }
   bool required() const { return !required_ || required_(); }
   GLuint id() const { return program_.id(); }
+  // A pass whose fragment shader computes data later passes index by (the hybrid map's counts and
+  // record offsets), not shading: the benchmark's floor (SHADOWLAB_FLOOR_SHADER=1) keeps its
+  // shader, since a trivial one there gives garbage sizes and no frame to measure. Before build().
+  void keepUnderFloor() { keepUnderFloor_ = true; }
 
   void use() const { glUseProgram(program_.id()); }
   GLint location(const char* name) const;  // cached; -1 when the uniform is unused
@@ -80,6 +84,7 @@ class Program {
   ProgramHandle program_;
   std::string error_;
   std::function<bool()> required_;
+  bool keepUnderFloor_ = false;
   double lastPoll_ = 0;
   mutable std::unordered_map<std::string, GLint> locations_;
 };

@@ -46,7 +46,10 @@ HybridBuilder::HybridBuilder(std::string label)
       recordsPass_(label_ + ": records", {"common/hybrid/records.vert", "common/hybrid/records.frag"}) {}
 
 void HybridBuilder::init() {
-  for (gl::Program* p : {&merge_, &count_, &starts_, &rootPass_, &recordsPass_}) p->build();
+  for (gl::Program* p : {&merge_, &count_, &starts_, &rootPass_, &recordsPass_}) {
+    p->keepUnderFloor();  // the sweep's counts size the records: data, not shading
+    p->build();
+  }
   vao_ = gl::makeVertexArray(label_ + ": passes");
   fbo_ = gl::makeFramebuffer(label_ + ": passes");
   const std::uint32_t zero[4] = {0, 0, 0, 0};
