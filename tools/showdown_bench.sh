@@ -82,5 +82,26 @@ if ((!quick)); then
   for c in "${configs[@]}"; do big+=("${c/triangles=$triangles/triangles=1000000}"); done
   run city_1m city psm_city_orbit.path 2 "${big[@]}"
 fi
+# The soft methods against the sphere-light reference (soft RMSE of visibility; the Embree reference
+# traces measure.samples rays a pixel toward the sphere, and "many 16" also traces a second reference
+# with another seed: their RMSE is the noise floor the others are read against). Lesson 05's
+# spherical spot (light1, radius 0.5 m) over the showcase, the sun off, along lesson 05's committed
+# path (the camera moves; light1 stays), each method at its own settings (the soft maps are 1024^2
+# a sample; "uniform" is the hard map the soft methods replace).
+soft_sets="scene=showcase triangles=$triangles light0.enabled=false light1.enabled=true measure.light=1"
+soft_sets+=" measure.samples=${SOFT_RAYS:-64}"
+soft=(--config "many 16: technique=many many.samples=16 measure.noise_floor=true $soft_sets"
+  --config "pcf 16: technique=pcf pcf.filter_taps=16 $soft_sets"
+  --config "pcss 16+16: technique=pcss pcss.search_taps=16 pcss.filter_taps=16 $soft_sets")
+if ((!quick)); then
+  soft+=(--config "uniform hard: technique=uniform texels=1024 uniform.reuse_maps=false $soft_sets"
+    --config "many 4: technique=many many.samples=4 $soft_sets"
+    --config "many 64: technique=many many.samples=64 $soft_sets"
+    --config "pcss 32+32: technique=pcss pcss.search_taps=32 pcss.filter_taps=32 $soft_sets"
+    --config "parker 32: technique=parker $soft_sets" --config "haines 32: technique=haines $soft_sets"
+    --config "mesh 48: technique=mesh mesh.nodes=48 $soft_sets"
+    --config "vsm blur 2: technique=vsm $soft_sets" --config "esm blur 2: technique=esm $soft_sets")
+fi
+run soft showcase soft_showcase.path "$((quick ? 2 : 3))" "${soft[@]}"
 python3 "$root/tools/showdown_summary.py" "$out" "$size" "$repeats"
 echo "showdown_bench: $out/index.html, $out/summary.md" >&2

@@ -5,7 +5,9 @@ Reads OUT/<path>/report.json (shadowlab_bench's rows: one per configuration and 
 writes OUT/summary.md and OUT/index.html: per path and texel budget the mean figures of every
 technique, the Pareto front of shadow-pass time against misclassified pixels, the technique with
 the least error and its margin over the next, the fastest; the error against the light direction
-per technique (the sweep); the comparison of Lloyd et al. (EGSR 2006). No verdict is written by
+per technique (the sweep); the soft methods against the sphere-light reference (OUT/soft: RMSE
+against the reference's noise floor, the Pareto front of frame time against RMSE); the comparison
+of Lloyd et al. (EGSR 2006). No verdict is written by
 hand: every sentence is a comparison of two figures from the reports. Usage:
     showdown_summary.py OUT_DIR SIZE REPEATS
 """
@@ -16,11 +18,11 @@ import statistics
 import sys
 
 
-def load(path):
+def load(path, kind="hard"):
     rows = json.load(open(path))["rows"]
     by = {}
     for r in rows:
-        if "hard" not in r:  # a run the ground truth could not judge (no hard figures)
+        if kind not in r:  # a run the ground truth could not judge that way (no hard / soft figures)
             continue
         by.setdefault(r["technique"], []).append(r)
     for v in by.values():
@@ -56,6 +58,49 @@ def figures(rows):
         "culled": mean([r.get("culledCasters") for r in rows]),
         "reused": mean([r.get("mapsReused") for r in rows]),
     }
+
+
+def soft_figures(rows):
+    """A soft method's figures over the path: RMSE and max |error| of visibility against the sphere-light
+    reference, the umbra over- and under-estimated (% of pixels), its times."""
+    floors = [r["soft"]["referenceNoiseRmse"] for r in rows if r["soft"].get("referenceNoiseRmse") is not None]
+    return {
+        "rmse": mean([r["soft"]["rmse"] for r in rows]),
+        "max": max([r["soft"]["maxAbs"] or 0.0 for r in rows]),
+        "over": mean([r["soft"]["umbraOverPct"] for r in rows]),
+        "under": mean([r["soft"]["umbraUnderPct"] for r in rows]),
+        "floor": mean(floors) if floors else None,
+        "shadow": statistics.median([shadow_ms(r) for r in rows]),
+        "frame": statistics.median([r["gpuTotalMs"] or 0.0 for r in rows]),
+        "texels": rows[0]["shadowTexels"],
+    }
+
+
+def soft_section(table):
+    """The soft methods' table and generated lines: the least RMSE and its margin, each method against
+    the reference's noise floor, the Pareto front of frame time against RMSE."""
+    floors = [f["floor"] for f in table.values() if f["floor"]]
+    floor = floors[0] if floors else None
+    md = ["\n## Soft shadows: RMSE against the sphere-light reference\n",
+          "(lesson 05's sphere light over the showcase; RMSE of visibility in [0, 1]; umbra over / under: % of "
+          "pixels the method puts in full shadow that the reference lights partly, and the reverse" +
+          (f"; the reference's noise floor, the RMSE between two references with different seeds: {floor:.4f}"
+           if floor else "") + ")\n",
+          "| technique | RMSE | x noise floor | max abs | umbra over % | umbra under % | shadow ms | frame ms | texels |",
+          "|---|---|---|---|---|---|---|---|---|"]
+    for t, f in sorted(table.items(), key=lambda x: x[1]["rmse"]):
+        ratio = f"{f['rmse'] / floor:.2f}" if floor else "-"
+        md.append(f"| {t} | {f['rmse']:.4f} | {ratio} | {f['max']:.3f} | {f['over']:.2f} | {f['under']:.2f} | "
+                  f"{f['shadow']:.1f} | {f['frame']:.1f} | {f['texels']} |")
+    ranked = sorted(table.items(), key=lambda x: x[1]["rmse"])
+    best = ranked[0]
+    margin = (f"{ranked[1][1]['rmse'] - best[1]['rmse']:.4f} less than {ranked[1][0]} ({ranked[1][1]['rmse']:.4f})"
+              if len(ranked) > 1 else "alone")
+    front = pareto([(t, {"frame": f["frame"], "mis": f["rmse"]}) for t, f in table.items()])
+    fastest = min(table.items(), key=lambda x: x[1]["frame"])
+    md.append(f"\n- **soft, showcase**: least RMSE **{best[0]}** ({best[1]['rmse']:.4f}), {margin}; fastest frame "
+              f"{fastest[0]} ({fastest[1]['frame']:.1f} ms); Pareto front (frame time against RMSE): {', '.join(front)}.")
+    return md
 
 
 def skipped(x):
@@ -140,6 +185,8 @@ def main():
     md.append("\n## Which technique when\n")
     for p, table in tables.items():
         md.extend(verdicts(p, table))
+    if os.path.exists(f"{out}/soft/report.json"):
+        md.extend(soft_section({t: soft_figures(rs) for t, rs in load(f"{out}/soft/report.json", "soft").items()}))
     md.append("\n## Lloyd et al. (EGSR 2006): warping plus 4 z-partitions at 2048^2 total against one LiSPSM "
               "map at 4096^2\n")
     md.append("(csm+warp: a LiSPSM warp inside each cascade, csm.warp; csm: plain z-partitioning, for contrast. "
@@ -160,7 +207,8 @@ def main():
             "<h1>Lesson 10: the showdown, time against error</h1>",
             "<p>Per path, shadowlab_bench's report: the time-against-error scatter with its Pareto front, "
             "tables and thumbnails.</p><ul>"]
-    page += [f"<li><a href='{p}/report.html'>{p}</a></li>" for p in paths]
+    page += [f"<li><a href='{p}/report.html'>{p}</a></li>" for p in paths + ["soft"]
+             if os.path.exists(f"{out}/{p}/report.html")]
     page.append("</ul>")
     if "sweep" in data:
         page.append("<h2>Error against the light direction</h2>" + svg_sweep(data["sweep"]))

@@ -1,13 +1,14 @@
 # tools/showdown_bench.sh --quick, lesson 10's smoke benchmark: it finishes, each path's report holds
 # its figures in the HTML (check_bench_report.cmake), and the generated summary names a technique
-# per path and budget with its margin, the Pareto front, and the sweep's plot.
+# per path and budget with its margin, the Pareto front, and the sweep's plot; the soft methods' run
+# against the sphere-light reference with its table (RMSE against the noise floor) and front.
 # Run: cmake -DBASH=... -DSCRIPT=... -DBUILD=... -DDIR=... -DCHECK=... -P this
 file(REMOVE_RECURSE ${DIR})
 execute_process(COMMAND ${BASH} ${SCRIPT} --quick ${BUILD} ${DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "showdown_bench.sh --quick exited ${rc}: ${out}${err}")
 endif()
-foreach(path city terrain sweep)
+foreach(path city terrain sweep soft)
   execute_process(COMMAND ${CMAKE_COMMAND} -DDIR=${DIR}/${path} -P ${CHECK} RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${path}: ${o}${e}")
@@ -28,6 +29,12 @@ foreach(path city terrain sweep)  # the comparison of Lloyd et al. 2006, warped 
     message(FATAL_ERROR "summary.md has no Lloyd et al. comparison for ${path}:\n${summary}")
   endif()
 endforeach()
+if(NOT summary MATCHES "\\| many 16 \\| [0-9.]+ \\| [0-9.]+ \\|")
+  message(FATAL_ERROR "summary.md has no soft table with many 16's RMSE against the noise floor:\n${summary}")
+endif()
+if(NOT summary MATCHES "\\*\\*soft, showcase\\*\\*: least RMSE \\*\\*[a-z]+ [0-9+]+\\*\\* \\(0\\.[0-9]+\\), [0-9.]+ less than [a-z]+ [0-9+]+ \\(0\\.[0-9]+\\); fastest frame [^;]+; Pareto front \\(frame time against RMSE\\): [a-z]")
+  message(FATAL_ERROR "summary.md names no least-RMSE soft method with its margin and front:\n${summary}")
+endif()
 if(NOT page MATCHES "<polyline")
   message(FATAL_ERROR "index.html has no error-against-direction plot")
 endif()
