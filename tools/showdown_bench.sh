@@ -14,7 +14,8 @@
 #   tools/showdown_bench.sh [--quick] [BUILD_DIR (build/default)] [OUT_DIR (out/bench/showdown)]
 # --quick (CI's smoke test, a few minutes): 2048^2 only, 2 samples per orbit, 6 sweep directions,
 # 240x135. The full run: 1024^2, 2048^2 and 4096^2, 8 samples per orbit, the forest, a
-# 1M-triangle city, all 26 sweep directions, 320x180. Environment: SIZE, SAMPLES, SWEEP, REPEATS.
+# 1M-triangle city, all 26 sweep directions, 320x180. Environment: SIZE, SAMPLES, SWEEP, REPEATS,
+# RUNS (a subset of "city terrain sweep forest city_1m soft"; the summary reads every run's folder).
 # Figures from a software renderer (llvmpipe) on a shared machine rank techniques; they do not
 # predict a GPU's milliseconds. The error figures are deterministic; the timings are noisy.
 set -euo pipefail
@@ -46,6 +47,13 @@ else
   triangles=${TRIANGLES:-60000}
 fi
 repeats=${REPEATS:-1}
+# Which runs (RUNS, e.g. "forest city_1m" to add them to an earlier run's folder): all by default.
+runs=${RUNS:-city terrain sweep forest city_1m soft}
+for r in $runs; do
+  case $r in city | terrain | sweep | forest | city_1m | soft) ;;
+    *) echo "showdown_bench: RUNS: '$r' is not one of city terrain sweep forest city_1m soft" >&2; exit 2 ;;
+  esac
+done
 [[ $size =~ ^[0-9]+x[0-9]+$ ]] || { echo "showdown_bench: SIZE '$size' is not WxH" >&2; exit 2; }
 mkdir -p "$out"
 
@@ -69,6 +77,7 @@ if ((quick)); then configs+=(--config "lispsm 4096: technique=lispsm texels=4096
 run() {  # run NAME SCENE PATH SAMPLES [EXTRA CONFIG ARGS...]
   local name=$1 scene=$2 path=$3 n=$4
   shift 4
+  [[ " $runs " == *" $name "* ]] || return 0
   echo "showdown_bench: $name ($scene, $path, $n samples)" >&2
   "$bench" "$lesson" --out "$out/$name" --scenes "$scene" --path "$root/bench/paths/$path" --path-samples "$n" \
     --repeat "$repeats" --frames 2 --size "$size" --title "Lesson 10: $name, equal texels" "$@"
