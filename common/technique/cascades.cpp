@@ -30,6 +30,7 @@ std::string joined(const std::vector<double>& values, const char* format, double
 
 std::vector<std::string> CascadedShadowMaps::shaderDefines() const {
   std::vector<std::string> defines = maps_.shaderDefines();
+  defines.push_back("SHADOW_TEXEL_JACOBIAN");  // m through each pixel's own cascade (shadow_cascades.frag)
   if (studentChoice) defines.push_back("SHADOWLAB_STUDENT_CASCADES");
   return defines;
 }

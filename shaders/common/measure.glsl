@@ -20,6 +20,15 @@ void writeMeasurement(vec3 worldPos, vec3 N, float visibility, vec2 shadowTexel)
   outMeasureJacobian = vec4(dFdx(shadowTexel), dFdy(shadowTexel));
 }
 
+// The same with the Jacobian given (du/dx, dv/dx, du/dy, dv/dy in texels): for a technique whose
+// texel coordinates jump between the pixels of a 2x2 quad (the cascades, where the quad straddles
+// two maps), so that dFdx of them would measure the jump, not the map (SHADOW_TEXEL_JACOBIAN).
+void writeMeasurementJacobian(vec3 worldPos, vec3 N, float visibility, vec4 jacobian) {
+  outMeasurePosition = vec4(worldPos, 1.0);
+  outMeasureNormal = vec4(normalize(N), visibility);
+  outMeasureJacobian = jacobian;
+}
+
 // For everything that is not a measured surface (gizmos, debug lines, overlays): GL leaves an output
 // a shader does not write undefined, so such shaders must clear them explicitly.
 void writeNoMeasurement() {

@@ -54,3 +54,14 @@ float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, out vec2 tex
   if (p.z > 1.0) return 1.0;
   return texture(uPsmMaps[light], vec4(p.xy, float(layer), p.z - uPsmConstantBias));
 }
+
+// The Jacobian of map `layer`'s texel coordinates per screen pixel at a surface point, from the
+// point's screen-space steps dPdx, dPdy (dFdx, dFdy of the world position): a finite difference
+// through the one map, as dFdx of texelCoords is when the 2x2 quad reads a single map. vec4(0.0)
+// where a step leaves the map (the measurement's "no map").
+vec4 projectiveTexelJacobian(int light, int layer, vec3 worldPos, vec3 dPdx, vec3 dPdy) {
+  mat4 M = uPsmMatrix[light * PSM_MAPS + layer];
+  vec4 a = psmMapCoords(M, worldPos), bx = psmMapCoords(M, worldPos + dPdx), by = psmMapCoords(M, worldPos + dPdy);
+  if (a.w == 0.0 || bx.w == 0.0 || by.w == 0.0) return vec4(0.0);
+  return vec4(bx.xy - a.xy, by.xy - a.xy) * uPsmSize[light];
+}

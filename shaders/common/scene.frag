@@ -16,6 +16,12 @@
 // V of light `light` at the surface point (worldPos, unit normal N), in [0, 1]; texelCoords: the
 // shadow-map texel coordinates there (uv * size) for the aliasing measurement, vec2(0) without a map.
 float shadowVisibility(int light, vec3 worldPos, vec3 N, out vec2 texelCoords);
+#ifdef SHADOW_TEXEL_JACOBIAN
+// A technique that defines SHADOW_TEXEL_JACOBIAN gives the aliasing measurement its own Jacobian of
+// texel coordinates per screen pixel, from the surface point's screen-space steps (the cascades:
+// through the pixel's own cascade, where dFdx of texelCoords would span two maps at a seam).
+vec4 shadowTexelJacobian(int light, vec3 worldPos, vec3 dPdx, vec3 dPdy);
+#endif
 
 in vec3 vWorldPos;
 in vec3 vNormal;
@@ -73,6 +79,9 @@ void main() {
   // (one line: GLSL ES-style validators reject a backslash line continuation)
 #define VISIBILITY(i) if (i < LIGHTS && LIGHT_IS_ON(i)) vis[i] = shadowVisibility(i, vWorldPos, N, texelCoords[i]);
   VISIBILITY(0) VISIBILITY(1) VISIBILITY(2) VISIBILITY(3)
+#ifdef SHADOW_TEXEL_JACOBIAN
+  vec3 dPdx = dFdx(vWorldPos), dPdy = dFdy(vWorldPos);  // before the discard below
+#endif
 
   vec4 texel = uUseTexture ? texture(uTexture, vUv) : vec4(1.0);
 #ifndef DEPTH_PREPASS  // (after a depth pre-pass a hole's fragment fails the EQUAL test: no discard)
@@ -80,7 +89,11 @@ void main() {
 #endif
 
   int m = clamp(uMeasureLight, 0, max(LIGHTS - 1, 0));
+#ifdef SHADOW_TEXEL_JACOBIAN
+  writeMeasurementJacobian(vWorldPos, N, vis[m], shadowTexelJacobian(m, vWorldPos, dPdx, dPdy));
+#else
   writeMeasurement(vWorldPos, N, vis[m], texelCoords[m]);
+#endif
   if (SCENE_VIEW == 1) {
     fragColor = vec4(vec3(vis[uMeasureLight >= 0 ? m : 0]), 1.0);
     return;

@@ -42,3 +42,12 @@ float shadowVisibility(int light, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   }
   return v;
 }
+
+// The aliasing measurement's Jacobian (SHADOW_TEXEL_JACOBIAN, scene.frag): through the pixel's own
+// cascade. dFdx of texelCoords would difference two cascades' maps where a 2x2 quad straddles a
+// split, and the measured m would spike to the jump between the maps along every seam.
+vec4 shadowTexelJacobian(int light, vec3 worldPos, vec3 dPdx, vec3 dPdy) {
+  float w;
+  int k = cascadeOf(light, worldPos, w);
+  return k < 0 ? vec4(0.0) : projectiveTexelJacobian(light, k, worldPos, dPdx, dPdy);
+}
