@@ -190,7 +190,8 @@ def main():
     md.append("\n## Lloyd et al. (EGSR 2006): warping plus 4 z-partitions at 2048^2 total against one LiSPSM "
               "map at 4096^2\n")
     md.append("(csm+warp: a LiSPSM warp inside each cascade, csm.warp; csm: plain z-partitioning, for contrast. "
-              "m max over a frame's pixels spikes where cascades meet; p95 is the steadier figure.)\n")
+              "m is measured through each pixel's own cascade; m max is the largest over the path's frames, "
+              "capped at 1024 where a grazing receiver's Jacobian is near singular.)\n")
     for p, table in tables.items():
         l4 = table.get("lispsm 4096")
         for name in ("csm+warp 2048", "csm 2048"):
