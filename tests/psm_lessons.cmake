@@ -3,6 +3,8 @@
 #   gpu.psm.NAME        the nasty cases through lesson 09's --set interface (check_psm_case.cmake):
 #                       no GL error, nothing non-finite, misclassified and leaked shares within bounds
 #   gpu.psm.control.*   broken set-ups the same check must reject
+#   gpu.psm.sweep.*     psm_bench's worst sweep directions: PSM with the fixes aliasing less than the
+#                       uniform map at equal texels (check_psm_versus_uniform.cmake), and its control
 #   gpu.psm.stress      a seeded GPU stress run of 240 random camera and light configurations at
 #                       160x90 (tests/gpu/psm_stress.cpp); target psm_stress_soak runs 6,000
 # The bounds. Against ground truth at 480x270 (~130,000 pixels, ~90,000 facing the light), a
@@ -70,6 +72,18 @@ psm_case(original ok 300 500)
 psm_case(control.student_stubs fail 150 500 ${DOWN} --set impl=student)
 psm_case(control.no_bias fail 150 500 --set bias=constant --set bias.constant=0 --set bias.normal_offset=0
          --set offset.factor=0)
+
+# The light sweep's directions where the warp aliased more than the uniform map (1.55x and 1.11x
+# before fix.fallback); the control turns the fall back off and must alias more again.
+function(psm_sweep name expect t)
+  add_test(NAME gpu.psm.sweep.${name} COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_09_psm_fixes>
+           -DPATH_FILE=${CMAKE_SOURCE_DIR}/bench/paths/psm_light_sweep.path -DT=${t} -DOUT_DIR=${psm_out}
+           -DNAME=sweep_${name} -DEXPECT=${expect} "-DARGS=${ARGN}" -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_psm_versus_uniform.cmake)
+  set_tests_properties(gpu.psm.sweep.${name} PROPERTIES LABELS gpu TIMEOUT 300)
+endfunction()
+psm_sweep(direction_12 ok 12)
+psm_sweep(direction_17 ok 17)
+psm_sweep(control.no_fallback fail 12 --set fix.fallback=false)
 
 # The GPU stress run: 240 seeded configurations in six lesson processes (a process per scene, light
 # kind and Zf/Zn from 10 to 1e6), each configuration a frame of a generated path. Bounds at 160x90

@@ -35,7 +35,7 @@ mkdir -p "$out"
 # the PSM's map_size); the original is lesson 08's parameters in lesson 09.
 common="triangles=$triangles map_size=2048"
 uniform="uniform 2048: technique=uniform $common"
-original="original PSM 2048: technique=psm fix.inverse=false fix.clip=false fix.faces=never bias=constant bias.normal_offset=0 $common"
+original="original PSM 2048: technique=psm fix.inverse=false fix.clip=false fix.faces=never fix.fallback=false bias=constant bias.normal_offset=0 $common"
 fixed="PSM all fixes 2048: technique=psm $common"
 lispsm="LiSPSM 2048: technique=lispsm $common"
 # The second goal: PSM with the fixes at 1024^2 against the uniform map at 4096^2.

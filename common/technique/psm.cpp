@@ -46,6 +46,7 @@ PsmParams PsmParams::original() {
   p.inverseProjection = false;
   p.receiverClipping = false;
   p.faces = psm::FaceMode::Never;
+  p.uniformFallback = false;
   p.maps.bias = ProjectiveBias::Constant;
   p.maps.normalOffset = 0.0f;  // the original knew no normal offset either
   return p;
@@ -63,6 +64,10 @@ void PerspectiveShadowMaps::declare(ParamRegistry& r, const std::string& n) {
         "fix 2: fit to the receivers' rough volumes inside the view, along the smallest cone (off: every object)");
   r.addChoice(n + "fix.faces", &p_.faces, {"never", "auto", "always"},
               "fix 3: a map on each unit-cube face hidden from the light: never, when the cone is too wide, always");
+  r.add(n + "fix.fallback", &p_.uniformFallback,
+        "a directional light whose warp is predicted to alias more than the uniform map gets the uniform map");
+  r.add(n + "fallback.ratio", &p_.fallbackRatio, 0.1f, 10.0f,
+        "fix.fallback: the warp's predicted mean aliasing over the uniform map's past which it falls back");
   r.add(n + "receivers.tiles", &p_.receiverTiles, 1, 64,
         "rough receiver volumes: large objects cut into cells of scene size / tiles (1: object boxes)");
   r.add(n + "cone.max", &p_.maxConeDegrees, 10, 89,
@@ -77,6 +82,9 @@ psm::PsmSwitches PerspectiveShadowMaps::switches() const {
   s.inverseProjection = p_.inverseProjection;
   s.receiverClipping = p_.receiverClipping;
   s.faces = p_.faces;
+  s.uniformFallback = p_.uniformFallback;
+  s.fallbackRatio = double(p_.fallbackRatio);
+  s.mapSide = maps_.totalSide();
   s.options.depthRange = psm::DepthRange::MinusOneToOne;
   s.options.maxHalfAngle = double(p_.maxConeDegrees) * 3.14159265358979323846 / 180.0;
   s.options.nearFraction = p_.nearFraction;
@@ -156,8 +164,15 @@ void PerspectiveShadowMaps::addCounters(int i) {
   }
   const int side = psm::faceMapSize(maps_.totalSide(), plan.mapCount);
   const std::string size = std::to_string(side) + "^2";
-  stats_.extra.push_back(
-      {n + "maps", plan.faces ? std::to_string(plan.mapCount) + " cube faces of " + size : "1 map " + size});
+  stats_.extra.push_back({n + "maps", plan.fallback ? "1 uniform map " + size + " (fallback)"
+                                      : plan.faces  ? std::to_string(plan.mapCount) + " cube faces of " + size
+                                                    : "1 map " + size});
+  if (plan.uniform.points > 0) {
+    char b[96];
+    std::snprintf(b, sizeof b, "%.2fx the uniform map's%s", plan.warped.meanAliasing / plan.uniform.meanAliasing,
+                  plan.fallback ? ": the uniform map" : "");
+    stats_.extra.push_back({n + "warp's predicted m", b});
+  }
   if (!plan.faces && plan.cone.valid) stats_.extra.push_back({n + "cone", degrees(plan.cone.halfAngle)});
   if (plan.pointsOutside > 0)
     stats_.extra.push_back({n + "outside the map", std::to_string(plan.pointsOutside) + " key points (unshadowed)"});

@@ -10,6 +10,9 @@
 //   fix.faces    §4.2  a map on each face of the unit cube the light cannot see (3 to 5, or 6 with
 //                      the light inside), chosen when the cone gets too wide, or forced
 //   bias=world   §5    the world-space texel-size bias a + b L_texel, per caster vertex
+//   fix.fallback       a directional light whose warp is predicted to alias more than the uniform
+//                      map at the same texels gets the uniform map (psm_plan.hpp; the header says
+//                      which, with the predicted ratio)
 // With every switch off it is the original (lesson 08); lesson 09 turns them on one by one.
 // The GL-free plan is algorithms/psm/psm_plan; the maps and their GLSL are projective_maps and
 // shaders/common/shadow_psm.frag. A light's texels are map_size squared however many maps it has.
@@ -26,6 +29,8 @@ struct PsmParams {
   bool inverseProjection = true;              // fix 1
   bool receiverClipping = true;               // fix 2
   psm::FaceMode faces = psm::FaceMode::Auto;  // fix 3
+  bool uniformFallback = true;                // the uniform map where the warp cannot help
+  float fallbackRatio = 1.0f;                 // ... predicted to alias more than this times the uniform map
   int receiverTiles = 8;                      // the rough receiver volumes: large objects in cells of scene/8
   float maxConeDegrees = 80.0f;               // faces=auto: wider cones switch to cube faces
   float nearFraction = 0.5f;                  // near plane at this share of the nearest key point

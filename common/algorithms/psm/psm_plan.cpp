@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "algorithms/psm/bias.hpp"
+#include "algorithms/psm/lispsm.hpp"
 
 namespace shadowlab::psm {
 
@@ -76,7 +77,39 @@ const PsmPlan& PsmPlanner::plan(const CameraFrustum& camera, const glm::dvec4& l
   // ==== the light camera: one map, or the hidden faces of the unit cube (fix 3) ====
   if (s.faces == FaceMode::Always) fitFaces(s);
   else fitSingle(s);
+  if (light.w == 0.0 && plan_.status == PlanStatus::Ok) chooseFallback(s, camera, light, receivers);
   return plan_;
+}
+
+// The warp's maps against the uniform map fitted to the same key points (LiSPSM's n -> infinity: an
+// orthographic box along the light), by their predicted mean aliasing (texel_density.hpp); the
+// prediction is made (and shown) with the switch off too.
+void PsmPlanner::chooseFallback(const PsmSwitches& s, const CameraFrustum& camera, const glm::dvec4& light,
+                                std::span<const Aabb> receivers) {
+  std::array<glm::dmat4, 6> warped;
+  for (int k = 0; k < plan_.mapCount; ++k) warped[std::size_t(k)] = plan_.maps[std::size_t(k)].camera.worldToClip;
+  const glm::dmat4 uniform =
+      fitLispsm(plan_.camera, -glm::dvec3(light), world_, s.options.depthRange, std::numeric_limits<double>::infinity())
+          .worldToClip;
+  const glm::dmat4& view = camera.view;
+  screenSamples(camera, receivers, 16, 9, samples_);
+  plan_.warped = predictTexelDensity(view, samples_, {warped.data(), std::size_t(plan_.mapCount)},
+                                     faceMapSize(s.mapSide, plan_.mapCount), light);
+  plan_.uniform = predictTexelDensity(view, samples_, {&uniform, 1}, s.mapSide, light);
+  if (!s.uniformFallback || plan_.uniform.points == 0) return;
+  if (!(plan_.warped.meanAliasing > s.fallbackRatio * plan_.uniform.meanAliasing)) return;
+  LightCamera c;
+  c.kind = LightProjection::Orthographic;
+  c.worldToClip = uniform;
+  c.postToClip = uniform * plan_.camera.invViewProj;
+  plan_.maps = {};
+  plan_.maps[0] = {c, -1};
+  plan_.mapCount = 1;
+  plan_.faces = false;
+  plan_.faceMask = 0;
+  plan_.cone = {};
+  plan_.pointsOutside = 0;
+  plan_.fallback = true;
 }
 
 void PsmPlanner::fitSingle(const PsmSwitches& s) {

@@ -16,6 +16,9 @@
 //   fix 3 (§4.2)        faces: the unit cube's faces the light cannot see, one map each (Auto: when
 //                       the cone is wider than options.maxHalfAngle or there is none)
 //   fix 4 (§5)          the world-space texel-size bias: in the shaders, from mapTexelOffset()
+//   fallback            a directional light whose warp would alias more than the uniform map:
+//                       the uniform map (texel_density.hpp predicts both from the key points; the
+//                       paper's advice where the warp cannot help, and LiSPSM's n -> infinity)
 // The total texels are the caller's: a face set splits them (faceMapSize).
 #include <array>
 #include <functional>
@@ -28,6 +31,7 @@
 #include "algorithms/psm/conventions.hpp"
 #include "algorithms/psm/cube_faces.hpp"
 #include "algorithms/psm/psm_camera.hpp"
+#include "algorithms/psm/texel_density.hpp"
 #include "core/mesh.hpp"
 
 namespace shadowlab::psm {
@@ -35,9 +39,15 @@ namespace shadowlab::psm {
 enum class FaceMode { Never, Auto, Always };
 
 struct PsmSwitches {
-  bool inverseProjection = true;                      // fix 1; false: the original's virtual camera slide
-  bool receiverClipping = true;                       // fix 2; false: fitted to every object inside the frustum
-  FaceMode faces = FaceMode::Auto;                    // fix 3
+  bool inverseProjection = true;    // fix 1; false: the original's virtual camera slide
+  bool receiverClipping = true;     // fix 2; false: fitted to every object inside the frustum
+  FaceMode faces = FaceMode::Auto;  // fix 3
+  // The fall back to the uniform map (directional lights): when the warped maps' predicted mean
+  // aliasing over the key points exceeds fallbackRatio times the uniform map's at the same texels
+  // (mapSide^2, a face set sharing them). Off: the warp whatever it costs (lesson 09 shows why).
+  bool uniformFallback = false;
+  double fallbackRatio = 1.0;
+  int mapSide = 2048;
   PsmOptions options;                                 // depth range, the Auto switch's cone limit, near fraction, steps
   double singleMapMaxHalfAngle = 1.5620696805349117;  // 89.5 degrees: the widest single map (faces Never)
   // A light this close to parallel to the near plane (|h.w| <= tolerance |h.xyz|) is taken as a
@@ -76,6 +86,10 @@ struct PsmPlan {
   std::array<PsmMap, 6> maps{};
   int mapCount = 0;
   int pointsOutside = 0;  // key points outside a capped single map (unshadowed)
+  // The predicted texel densities (directional lights, the switch on or off): the warp's and the
+  // uniform map's; fallback: maps[0] is the uniform map (kind Orthographic, in world space).
+  TexelDensity warped, uniform;
+  bool fallback = false;
   std::span<const PsmMap> used() const { return {maps.data(), std::size_t(mapCount)}; }
 };
 
@@ -99,7 +113,9 @@ class PsmPlanner {
  private:
   void fitSingle(const PsmSwitches& s);
   void fitFaces(const PsmSwitches& s);
-  std::vector<glm::dvec3> world_, post_, scratch_;
+  void chooseFallback(const PsmSwitches& s, const CameraFrustum& camera, const glm::dvec4& light,
+                      std::span<const Aabb> receivers);
+  std::vector<glm::dvec3> world_, post_, scratch_, samples_;
   PsmPlan plan_;
 };
 
