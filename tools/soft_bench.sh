@@ -5,7 +5,8 @@
 # hard shadow, interleaved and repeated in one run. Usage:
 #   tools/soft_bench.sh [BUILD_DIR (build/default)] [OUT_DIR (out/soft_bench)] [SIZE (320x180)]
 # Environment: SCENES ("showcase forest"), SAMPLES (rays per pixel of the reference, 64), POSES (path
-# samples, 3), TIMING_SIZE (640x360), TIMING_ROUNDS (3), SWEEP (0: only the timing runs).
+# samples, 3), TIMING_SIZE (640x360), TIMING_ROUNDS (3; 0: no timing runs), SWEEP (0: only the timing
+# runs), ONLY (an extended regular expression: only the configurations whose label matches it).
 # Writes OUT_DIR/<scene>_r<R>/report.{csv,json,html} (shadowlab_bench: RMSE, max error, umbra over-
 # and under-estimate, the reference's noise floor, ms per pass, the Pareto front), OUT_DIR/timing.csv
 # and OUT_DIR/summary.txt. The soft reference costs seconds a frame at full size: the sweep runs at
@@ -76,9 +77,10 @@ if [[ ${SWEEP:-1} != 0 ]]; then
     for r in $(radii "$scene"); do
       args=()
       for c in "${configs[@]}"; do
+        [[ -z ${ONLY:-} || ${c%%:*} =~ $ONLY ]] || continue
         args+=(--config "${c%%:*}: ${c#*:} $(scene_sets "$scene") light0.radius=$r measure.samples=$samples")
       done
-      echo "soft_bench: $scene, R = $r m, ${#configs[@]} configurations x $poses poses at $size" >&2
+      echo "soft_bench: $scene, R = $r m, $(( ${#args[@]} / 2 )) configurations x $poses poses at $size" >&2
       "$bench" "$bin" --out "$out/${scene}_r$r" --title "lesson 05: $scene, sphere of radius $r m, $size" \
         --path "$root/bench/paths/soft_$scene.path" --path-samples "$poses" --repeat 1 --frames 2 --size "$size" \
         "${args[@]}" >/dev/null

@@ -9,6 +9,7 @@ std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& viewProj,
   program_.use();
   program_.set(viewProjUniform_.c_str(), viewProj);
   program_.set("uAlphaTest", o.alphaTest);
+  program_.set("uAlphaLevel0", o.alphaLevel0);
   program_.set("uTexture", 0);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);

@@ -25,6 +25,10 @@ struct CasterOptions {
   // Vertices computed on the CPU (a student's per-vertex bias): a vertex array with WORLD positions
   // for object i (the mesh's indices and uvs), or 0 for the mesh's own; empty: every mesh's own.
   std::function<GLuint(std::size_t object)> worldVertexArray;
+  // Test the alpha of the texture's level 0, as the ground truth's rays do (common/measure), not of
+  // the mip level a map texel's footprint picks: a coarse level's averaged alpha against the cutoff
+  // closes the cards' small holes and thins their leaves, the same way in every map of a light.
+  bool alphaLevel0 = false;
 };
 
 class CasterPass {

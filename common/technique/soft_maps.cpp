@@ -21,6 +21,9 @@ void SoftMaps::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "bias.constant", &p_.bias, 0, 8, "depth bias in texels of world size at the receiver");
   r.add(n + "bias.slope", &p_.slopeBias, 0, 8, "depth bias in texels per unit of tan(theta)");
   r.add(n + "bias.normal_offset", &p_.normalOffset, 0, 4, "look up from this many texels along the normal");
+  r.add(n + "bias.offset_factor", &p_.offsetFactor, 0, 8,
+        "glPolygonOffset factor in the depth pass (times the depth slope)");
+  r.add(n + "bias.offset_units", &p_.offsetUnits, 0, 16, "glPolygonOffset units in the depth pass");
 }
 
 int SoftMaps::mapSize() const { return std::stoi(UniformShadowMaps::mapSizes()[std::size_t(p_.mapSize)]); }
@@ -100,6 +103,8 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, size, size);
   glDepthMask(GL_TRUE);
+  CasterOptions options;
+  options.alphaLevel0 = true;  // the holes the reference's rays see (CasterOptions)
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     const SoftLight& s = lights_[i];
     if (!s.on) continue;
@@ -111,7 +116,7 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
       const shadow::LightCamera camera = shadow::spotCamera(moved, s.nearZ, s.farZ, boxes, true);
       glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, array_.id(), 0, s.firstLayer + int(k));
       glClear(GL_DEPTH_BUFFER_BIT);
-      stats.triangles += casters_.draw(c.scene, camera.viewProj(), camera.casters, {true, false});
+      stats.triangles += casters_.draw(c.scene, camera.viewProj(), camera.casters, options);
       stats.culledCasters += camera.culled;
       stats.texels += std::uint64_t(size) * std::uint64_t(size);
     }

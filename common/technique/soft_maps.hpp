@@ -28,9 +28,9 @@ struct SoftMapParams {
   float bias = 0.5f;           // constant depth bias, in texels of world size at the receiver
   float slopeBias = 0.5f;      // times tan(theta), in texels: steep receivers need more
   float normalOffset = 0.25f;  // look up from this many texels along the normal (times sin theta)
-  float offsetFactor = 1.0f;   // glPolygonOffset in the depth pass
-  float offsetUnits = 2.0f;
-  float minNear = 0.2f;  // the light cameras' near plane fits the scene, but not nearer than this
+  float offsetFactor = 1.0f;   // glPolygonOffset in the depth pass: times the caster's depth slope
+  float offsetUnits = 2.0f;    // and in units of the depth format's resolution
+  float minNear = 0.2f;        // the light cameras' near plane fits the scene, but not nearer than this
 };
 
 // One light as the soft techniques see it this frame.

@@ -47,7 +47,8 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   float search = softPcssSearchUv(R, r.z, near, tanHalf, uMaxSearch);
   vec2 found = blockerSearch(i, r.uv, r.z, plane, bias, search, turn);  // (mean distance, count)
   if (found.y == 0.0) return softHorizon(i, worldPos, N);  // nothing can hide the light: no filter paid
-  if (found.y == float(SEARCH_TAPS)) return 0.0;           // the whole search region blocks it: umbra
+  // No "every search tap blocked: umbra" exit (Fernando's): a few taps over leaf cards with holes
+  // all land on leaves where the sphere still shows through the holes; the filter decides.
   float zBlocker = found.x;
   float radius = max(softPcssRadiusUv(R, r.z, zBlocker, tanHalf), uMinFilter / uSoftMapSize);
 #else
