@@ -59,11 +59,12 @@ float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, out vec2 tex
 // point's screen-space steps dPdx, dPdy (dFdx, dFdy of the world position): the derivative of the
 // one map's projection at the point, (dh.xy h.w - h.xy dh.w) / h.w^2 with h = M p and dh = M dp,
 // in texels. dFdx of texelCoords is its finite difference when the 2x2 quad reads a single map.
-// vec4(0.0) (the measurement's "no map") behind the map's projection centre.
+// vec4(0.0) (the measurement's "no map") at or behind the map's projection centre (h.w ~ 0 or less:
+// no place in the map, and a derivative through 1 / h.w that explodes).
 vec4 projectiveTexelJacobian(int light, int layer, vec3 worldPos, vec3 dPdx, vec3 dPdy) {
   mat4 M = uPsmMatrix[light * PSM_MAPS + layer];
   vec4 h = M * vec4(worldPos, 1.0), hx = M * vec4(dPdx, 0.0), hy = M * vec4(dPdy, 0.0);
-  if (!(h.w > 0.0)) return vec4(0.0);
+  if (h.w < 1e-6) return vec4(0.0);
   vec2 jx = (hx.xy * h.w - h.xy * hx.w) / (h.w * h.w), jy = (hy.xy * h.w - h.xy * hy.w) / (h.w * h.w);
   return vec4(jx, jy) * (0.5 * uPsmSize[light]);  // clip xy in [-1, 1] -> uv in [0, 1] -> texels
 }
