@@ -126,10 +126,11 @@ void FilterableMaps::renderShadows(const ShadowContext& c) {
     glClearColor(clearValue, clearValue, 0, 1);
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    casters_.program().use();
-    casters_.program().set("uDepthRange", glm::vec2(lights[i].nearZ, lights[i].farZ));
-    casters_.program().set("uExponent", p_.exponent);
-    casters_.program().set("uEsm", kind_ == Kind::Esm);
+    casters_.setUniforms([&](const gl::Program& p) {
+      p.set("uDepthRange", glm::vec2(lights[i].nearZ, lights[i].farZ));
+      p.set("uExponent", p_.exponent);
+      p.set("uEsm", kind_ == Kind::Esm);
+    });
     stats_.triangles += casters_.draw(c.scene, lights[i].centre.viewProj(), lights[i].centre.casters, {true, false});
     stats_.culledCasters += lights[i].centre.culled;
     blur(target);

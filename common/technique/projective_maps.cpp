@@ -100,18 +100,18 @@ void ProjectiveMapSet::ensureArray(PerLight& l, int light, int side, int layers)
 
 // Fix 4 for the reference: the factors of K and the light, for depth_psm.vert.
 void ProjectiveMapSet::setBiasUniforms(const glm::dmat4& worldToClip, int side, const glm::dvec4& worldLight) {
-  const gl::Program& p = casters_.program();
   const bool world = p_.bias == ProjectiveBias::WorldTexel;
-  p.use();
-  p.set("uWorldBias", world);
-  if (!world) return;
-  const psm::TexelStep step = psm::texelStepFactors(worldToClip, glm::dvec2(double(side)));
-  p.set("uTexelStep", glm::vec4(step.u));
-  p.set("uClipW", glm::vec4(step.r));
-  p.set("uLightWorld", glm::vec4(worldLight));
-  p.set("uBiasA", p_.worldA);
-  p.set("uBiasB", p_.worldB);
-  p.set("uBiasMax", p_.worldMax);
+  const psm::TexelStep step = world ? psm::texelStepFactors(worldToClip, glm::dvec2(double(side))) : psm::TexelStep{};
+  casters_.setUniforms([&](const gl::Program& p) {
+    p.set("uWorldBias", world);
+    if (!world) return;
+    p.set("uTexelStep", glm::vec4(step.u));
+    p.set("uClipW", glm::vec4(step.r));
+    p.set("uLightWorld", glm::vec4(worldLight));
+    p.set("uBiasA", p_.worldA);
+    p.set("uBiasB", p_.worldB);
+    p.set("uBiasMax", p_.worldMax);
+  });
 }
 
 void ProjectiveMapSet::disable(int light) {

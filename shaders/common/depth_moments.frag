@@ -4,12 +4,8 @@
 //   VSM  (Donnelly and Lauritzen 2006) the first two moments (t, t^2) of the normalised depth t
 //   ESM  (Annen et al. 2008, uEsm) exp(c t)
 // t = (z - near) / (far - near), z the view distance of the fragment (gl_FragCoord.z linearised).
-in vec2 vUv;
+#include "common/caster_alpha.glsl"
 
-uniform bool uAlphaTest;
-uniform float uAlphaCutoff;
-uniform bool uUseTexture;
-uniform sampler2D uTexture;
 uniform vec2 uDepthRange;  // near, far of the light camera
 uniform float uExponent;   // ESM's c
 uniform bool uEsm;         // one program for both: the depth pass is not where the time goes
@@ -17,7 +13,7 @@ uniform bool uEsm;         // one program for both: the depth pass is not where 
 out vec4 fragMoments;
 
 void main() {
-  if (uAlphaTest && uUseTexture && uAlphaCutoff > 0.0 && texture(uTexture, vUv).a < uAlphaCutoff) discard;
+  casterAlphaTest();
   float n = uDepthRange.x, f = uDepthRange.y;
   float z = n * f / (f - gl_FragCoord.z * (f - n));
   float t = clamp((z - n) / (f - n), 0.0, 1.0);
