@@ -226,12 +226,13 @@ Program& ProgramVariants::variant(const std::vector<std::string>& defines, const
   return *programs_.emplace(key, std::move(program)).first->second;
 }
 
-Program& ProgramVariants::get(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles) {
+Program& ProgramVariants::get(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles,
+                              bool wait) {
   // SHADOWLAB_SPECIALISE=0: every program generic, for measuring what specialisation buys.
   static const bool specialise =
       !std::getenv("SHADOWLAB_SPECIALISE") || std::string(std::getenv("SHADOWLAB_SPECIALISE")) != "0";
   if (!specialise) return variant({}, extraFiles, false);
-  if (!asyncCompile() || defines.empty()) return variant(defines, extraFiles, false);
+  if (!asyncCompile() || defines.empty() || wait) return variant(defines, extraFiles, false);
   // Interactive: the specialised program compiles on the driver's threads; until it is ready the
   // generic one (the same shaders without the defines, driven by uniforms) draws the same picture.
   Program& generic = variant({}, extraFiles, false);

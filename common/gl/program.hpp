@@ -100,7 +100,9 @@ class ProgramVariants {
   // The program for `defines`. Compiled asynchronously when asyncCompile() is on (interactive
   // windows): until it is ready this returns the generic variant (no defines), so switching a
   // feature never stalls a frame. Headless runs build synchronously (deterministic frames).
-  Program& get(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles = {});
+  // `wait`: build it now even in a window (a measured frame must be drawn by the variant it asks for).
+  Program& get(const std::vector<std::string>& defines, const std::vector<std::string>& extraFiles = {},
+               bool wait = false);
   std::size_t size() const { return programs_.size(); }
 
  private:

@@ -19,7 +19,8 @@ float shadowVisibility(int light, vec3 worldPos, vec3 N, out vec2 texelCoords);
 #ifdef SHADOW_TEXEL_JACOBIAN
 // A technique that defines SHADOW_TEXEL_JACOBIAN gives the aliasing measurement its own Jacobian of
 // texel coordinates per screen pixel, from the surface point's screen-space steps (the cascades:
-// through the pixel's own cascade, where dFdx of texelCoords would span two maps at a seam).
+// through the pixel's own cascade, where dFdx of texelCoords would span two maps at a seam). Used
+// in measured frames only (MEASURED_FRAME, LitPass): elsewhere nothing reads it.
 vec4 shadowTexelJacobian(int light, vec3 worldPos, vec3 dPdx, vec3 dPdy);
 #endif
 
@@ -79,7 +80,7 @@ void main() {
   // (one line: GLSL ES-style validators reject a backslash line continuation)
 #define VISIBILITY(i) if (i < LIGHTS && LIGHT_IS_ON(i)) vis[i] = shadowVisibility(i, vWorldPos, N, texelCoords[i]);
   VISIBILITY(0) VISIBILITY(1) VISIBILITY(2) VISIBILITY(3)
-#ifdef SHADOW_TEXEL_JACOBIAN
+#if defined(SHADOW_TEXEL_JACOBIAN) && defined(MEASURED_FRAME)
   vec3 dPdx = dFdx(vWorldPos), dPdy = dFdy(vWorldPos);  // before the discard below
 #endif
 
@@ -89,7 +90,7 @@ void main() {
 #endif
 
   int m = clamp(uMeasureLight, 0, max(LIGHTS - 1, 0));
-#ifdef SHADOW_TEXEL_JACOBIAN
+#if defined(SHADOW_TEXEL_JACOBIAN) && defined(MEASURED_FRAME)
   writeMeasurementJacobian(vWorldPos, N, vis[m], shadowTexelJacobian(m, vWorldPos, dPdx, dPdy));
 #else
   writeMeasurement(vWorldPos, N, vis[m], texelCoords[m]);
