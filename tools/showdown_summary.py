@@ -7,7 +7,8 @@ technique, the Pareto front of shadow-pass time against misclassified pixels, th
 the least error and its margin over the next, the fastest; the error against the light direction
 per technique (the sweep); the soft methods against the sphere-light reference (OUT/soft: RMSE
 against the reference's noise floor, the Pareto front of frame time against RMSE); the comparison
-of Lloyd et al. (EGSR 2006). No verdict is written by
+of Lloyd et al. (EGSR 2006); and one page over every path: per budget and path the least
+misclassified technique, its margin and the front, and how often each technique is either. No verdict is written by
 hand: every sentence is a comparison of two figures from the reports. Usage:
     showdown_summary.py OUT_DIR SIZE REPEATS
 """
@@ -123,14 +124,19 @@ def pareto(items):
     return sorted(front, key=lambda a: dict(items)[a]["frame"])
 
 
+def best_of(items):
+    """The least misclassified of (label, figures) items, with the next one: (best, second or None)."""
+    by_err = sorted(items, key=lambda x: x[1]["mis"])
+    return by_err[0], (by_err[1] if len(by_err) > 1 else None)
+
+
 def verdicts(name, table):
     """The generated lines of one path: per budget the least error, its margin, the fastest, the front."""
     lines = []
     budgets = sorted({budget(t) for t in table if budget(t) != "-"}, key=int)
     for b in budgets:
         items = [(t, f) for t, f in table.items() if budget(t) in (b, "-")]
-        by_err = sorted(items, key=lambda x: x[1]["mis"])
-        best, second = by_err[0], by_err[1] if len(by_err) > 1 else None
+        best, second = best_of(items)
         margin = (f"{second[1]['mis'] - best[1]['mis']:.3f} points less than {second[0]} "
                   f"({second[1]['mis']:.3f} %)") if second else "alone"
         fastest = min(items, key=lambda x: x[1]["frame"])
@@ -141,6 +147,41 @@ def verdicts(name, table):
                      f"{fastest[0]} ({fastest[1]['frame']:.1f} ms); Pareto front (frame time against error): "
                      f"{', '.join(pareto(items))}.")
     return lines
+
+
+def one_page(tables):
+    """Every path at once: per texel budget and path the least misclassified technique with its margin
+    over the next and the Pareto front (frame time against error); then, per technique, in how many
+    (path, budget) cells it is the least misclassified and on the front. Counted, not judged."""
+    budgets = sorted({budget(t) for table in tables.values() for t in table if budget(t) != "-"}, key=int)
+    paths = list(tables)
+    md = ["\n## One page: the best technique per scene and budget\n",
+          "(each cell: the least misclassified technique at that budget per light, its misclassified %, the margin "
+          "over the next in points, and the Pareto front of frame time against error; techniques without a map, "
+          "the stencil volumes, are in every budget)\n",
+          "| budget | " + " | ".join(paths) + " |", "|---" * (len(paths) + 1) + "|"]
+    best_count, front_count, cells = {}, {}, 0
+    for b in budgets:
+        row = []
+        for p in paths:
+            items = [(t, f) for t, f in tables[p].items() if budget(t) in (b, "-")]
+            if not any(budget(t) == b for t, _ in items):
+                row.append("-")
+                continue
+            cells += 1
+            best, second = best_of(items)
+            margin = f", {second[1]['mis'] - best[1]['mis']:.3f} pts over {second[0]}" if second else ""
+            front = pareto(items)
+            for t in front:
+                front_count[t.split()[0]] = front_count.get(t.split()[0], 0) + 1
+            best_count[best[0].split()[0]] = best_count.get(best[0].split()[0], 0) + 1
+            row.append(f"**{best[0]}** {best[1]['mis']:.3f} %{margin}; front: {', '.join(front)}")
+        md.append(f"| {b}^2 | " + " | ".join(row) + " |")
+    names = sorted(set(best_count) | set(front_count), key=lambda t: (-best_count.get(t, 0), -front_count.get(t, 0), t))
+    md.append(f"\nOver the {cells} (path, budget) cells: " +
+              "; ".join(f"**{t}** least misclassified in {best_count.get(t, 0)}, on the front in {front_count.get(t, 0)}"
+                        for t in names) + ".")
+    return md
 
 
 def svg_sweep(sweep):
@@ -182,6 +223,7 @@ def main():
             md.append(f"| {p} | {t} | {f['texels']} | {f['mis']:.3f} | {f['leak']:.3f} | {f['false']:.3f} | "
                       f"{f['m']:.3g} | {f['p95']:.3g} | {f['max']:.3g} | {f['shadow']:.1f} | {f['frame']:.1f} | "
                       f"{f['tris']} | {skipped(f['culled'])} | {skipped(f['reused'])} |")
+    md.extend(one_page(tables))
     md.append("\n## Which technique when\n")
     for p, table in tables.items():
         md.extend(verdicts(p, table))
