@@ -36,7 +36,9 @@ struct CasterOptions {
   // Test the alpha of the texture's level 0, as the ground truth's rays do (common/measure), not of
   // the mip level a map texel's footprint picks: a coarse level's averaged alpha against the cutoff
   // closes the cards' small holes and thins their leaves, the same way in every map of a light.
-  bool alphaLevel0 = false;
+  // Every light's map does; the eye's depth pre-pass does not (what the eye sees of a card is the
+  // lit pass's mip level, antialiased like any texture).
+  bool alphaLevel0 = true;
 };
 
 class CasterPass {

@@ -104,7 +104,6 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
   glViewport(0, 0, size, size);
   glDepthMask(GL_TRUE);
   CasterOptions options;
-  options.alphaLevel0 = true;  // the holes the reference's rays see (CasterOptions)
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     const SoftLight& s = lights_[i];
     if (!s.on) continue;
