@@ -27,6 +27,11 @@ set_tests_properties(gpu.technique.generic PROPERTIES LABELS gpu TIMEOUT 600 ENV
 add_test(NAME gpu.technique.map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_03_shadow_quality>
          -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
 set_tests_properties(gpu.technique.map_reuse PROPERTIES LABELS gpu TIMEOUT 300)
+# The hybrid map (lesson 07) too: its depth pass, index, merge and records all skipped after frame 0.
+add_test(NAME gpu.technique.hybrid_map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_07_hybrid_maps>
+         -DNAME=hybrid_reuse -DPRESET=default -DMAPS=1 -DPASSES=4
+         -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
+set_tests_properties(gpu.technique.hybrid_map_reuse PROPERTIES LABELS gpu TIMEOUT 300)
 
 # The frame budget on a software renderer (a window under Xvfb), lesson 03.
 find_program(XVFB_RUN xvfb-run)

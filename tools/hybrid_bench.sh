@@ -14,8 +14,8 @@
 #           on the same edge band (2 texels of the source map). Error figures are deterministic.
 #   timing  the same three and the hybrid technique at levels 0 (a standard map through the hybrid
 #           map's own, leaner lit shader: the lookup without the index) per scene and map size at
-#           the path's middle pose, both maps redrawn every frame (uniform.reuse_maps=false: a held
-#           pose would otherwise reuse the standard map and time no depth pass), interleaved (every
+#           the path's middle pose, both maps redrawn every frame (uniform.reuse_maps=false and reuse_maps=false: a held
+#           pose would otherwise reuse either map and time no depth pass), interleaved (every
 #           configuration once per round), ROUNDS rounds; per pass the median of the frames after
 #           the first two, CPU ms of synchronous timer scopes (a software renderer does its work at
 #           flush time; lesson.hpp's GpuTimers). Ratios are taken within a round, then the median
@@ -115,9 +115,9 @@ if [[ " $phases " == *" timing "* ]]; then
         for config in standard levels0 paper tuned; do
           case $config in
             standard) sets="technique=standard uniform.map_size=$m uniform.reuse_maps=false" ;;  # redrawn every frame, as the hybrid map is
-            levels0) sets="map_size=$m levels=0" ;;
-            paper) sets="map_size=$m eps0=0.25" ;;
-            tuned) sets="map_size=$m eps0=0.01" ;;
+            levels0) sets="map_size=$m levels=0 reuse_maps=false" ;;
+            paper) sets="map_size=$m eps0=0.25 reuse_maps=false" ;;
+            tuned) sets="map_size=$m eps0=0.01 reuse_maps=false" ;;
           esac
           args=(--headless --size "$size" --frames "$frames" --replay "$path@1" --set "scene=$scene")
           for kv in $(common "$scene") $sets; do args+=(--set "$kv"); done

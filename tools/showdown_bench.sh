@@ -62,9 +62,9 @@ mkdir -p "$out"
 configs=()
 for b in $budgets; do
   for t in uniform psm lispsm csm hybrid; do
-    # (the uniform map redrawn every frame, as on a moving path: its reuse would time nothing)
+    # (the uniform and hybrid maps redrawn every frame, as on a moving path: their reuse would time nothing)
     extra=""
-    [[ $t == uniform ]] && extra=" uniform.reuse_maps=false"
+    [[ $t == uniform || $t == hybrid ]] && extra=" $t.reuse_maps=false"
     configs+=(--config "$t $b: technique=$t texels=$b triangles=$triangles$extra")
   done
 done

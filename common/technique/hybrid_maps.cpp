@@ -37,6 +37,8 @@ void HybridShadowMaps::declare(ParamRegistry& r, const std::string& n) {
   r.addChoice(n + "filter", &p_.filter, {"nearest", "bilinear_2x2", "pcf_nxn"},
               "one comparison, four with bilinear weights, or N x N (every tap descends the index)");
   r.add(n + "pcf.size", &p_.pcfSize, 1, 9, "N of the N x N kernel (odd)");
+  r.add(n + "reuse_maps", &p_.reuseMaps,
+        "keep a hybrid map nothing invalidated (light, casters, light camera, sweep settings unchanged)");
   declareBias(r, n, p_);
   declareFitting(r, n, p_);
   declareSpotRange(r, n, p_);
@@ -96,6 +98,16 @@ void HybridShadowMaps::fitLights(const ShadowContext& c) {
   for (std::size_t i = c.lights.size(); i < lights_.size(); ++i) lights_[i]->on = lights_[i]->point = false;
 }
 
+// What light i's hybrid map depends on: its camera and the casters it keeps, the scene, the depth
+// pass's settings and the sweep's. A static light over a static scene (a sun fitted to an unmoving
+// view) keeps its map, and the three build passes are skipped with the depth pass.
+PassKey HybridShadowMaps::passKey(const ShadowContext& c, const PerLight& l) const {
+  PassKey key;
+  key << c.scene.revision() << p_.mapSize << p_.format << p_.offsetFactor << p_.offsetUnits << p_.cullFront
+      << p_.levels << p_.criterion << p_.eps0 << p_.maxSlope << p_.build << bool(sweep) << l.camera.camera.viewProj();
+  return key << std::span<const char>(l.camera.camera.casters);
+}
+
 // ==== 2. the full-resolution depth maps: what a standard map renders, N x N =======================
 void HybridShadowMaps::renderDepth(const ShadowContext& c) {
   if (c.frame.godView) return;
@@ -105,13 +117,20 @@ void HybridShadowMaps::renderDepth(const ShadowContext& c) {
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     PerLight& l = *lights_[i];
     if (!l.on) continue;
+    stats_.culledCasters += l.camera.camera.culled;
+    PassKey key = passKey(c, l);
+    l.reused = p_.reuseMaps && key == l.rendered && l.depth.size == p_.mapSize;
+    if (l.reused) {
+      ++stats_.reusedMaps;
+      continue;
+    }
+    l.rendered = std::move(key);
     auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
     if (l.depth.size != p_.mapSize || l.depth.format != p_.format)
       l.depth = gl::makeShadowMap(p_.mapSize, p_.format, "light" + std::to_string(i) + " full-resolution map");
     gl::beginShadowPass(l.depth);
     stats_.triangles +=
         casters_.draw(c.scene, l.camera.camera.viewProj(), l.camera.camera.casters, {true, p_.cullFront});
-    stats_.culledCasters += l.camera.camera.culled;
     stats_.texels += std::uint64_t(p_.mapSize) * std::uint64_t(p_.mapSize);
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
@@ -139,7 +158,7 @@ void HybridShadowMaps::buildMaps(const ShadowContext& c) {
   if (c.frame.godView) return;
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     PerLight& l = *lights_[i];
-    if (!l.on) continue;
+    if (!l.on || l.reused) continue;
     const hybrid::MergeRule rule = mergeRule(int(i));
     const std::string suffix = " light" + std::to_string(i);
     if (p_.build == HybridPath::Cpu || sweep) {

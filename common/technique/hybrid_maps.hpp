@@ -23,6 +23,7 @@
 #include "technique/hybrid_build.hpp"
 #include "technique/lit_pass.hpp"
 #include "technique/map_settings.hpp"
+#include "technique/pass_key.hpp"
 #include "technique/technique.hpp"
 
 namespace shadowlab::tech {
@@ -44,6 +45,7 @@ struct HybridMapParams : MapSettings {
   HybridPath build = HybridPath::Gpu;                       // the sweep on the GPU, or on the CPU (the reference)
   HybridFilter filter = HybridFilter::Nearest;              // the paper's single comparison
   int pcfSize = 3;                                          // N of N x N PCF (each tap descends)
+  bool reuseMaps = true;  // skip a light's depth pass, sweep and index when nothing they depend on changed
 };
 
 class HybridShadowMaps : public ShadowTechnique {
@@ -102,7 +104,10 @@ class HybridShadowMaps : public ShadowTechnique {
     gl::ShadowMap depth;  // the full-resolution map
     shadow::Map2DCamera camera;
     HybridMapGpu map;
+    PassKey rendered;     // what the map was last built from (PassKey)
+    bool reused = false;  // this frame: nothing changed, the map from an earlier frame stays
   };
+  PassKey passKey(const ShadowContext& c, const PerLight& l) const;
   void buildOnCpu(PerLight& l, const hybrid::MergeRule& rule);
   void bindLight(const gl::Program& p, int i, int unitRoot, int unitRecords) const;
   void pushStats(int i, const PerLight& l);
