@@ -10,8 +10,8 @@ CasterPass::CasterPass(std::string label, std::string vertexShader, std::string 
   for (std::size_t b = 0; b < BuildCount; ++b) {
     std::vector<std::string> d;
     if (*defines[b]) d.emplace_back(defines[b]);
-    programs_[b] = std::make_unique<gl::Program>(label + names[b], std::vector<std::string>{vertexShader, fragmentShader},
-                                                 std::move(d));
+    programs_[b] = std::make_unique<gl::Program>(label + names[b],
+                                                 std::vector<std::string>{vertexShader, fragmentShader}, std::move(d));
   }
 }
 

@@ -103,8 +103,8 @@ void HybridShadowMaps::fitLights(const ShadowContext& c) {
 // view) keeps its map, and the three build passes are skipped with the depth pass.
 PassKey HybridShadowMaps::passKey(const ShadowContext& c, const PerLight& l) const {
   PassKey key;
-  key << c.scene.revision() << p_.mapSize << p_.format << p_.offsetFactor << p_.offsetUnits << p_.cullFront
-      << p_.levels << p_.criterion << p_.eps0 << p_.maxSlope << p_.build << bool(sweep) << l.camera.camera.viewProj();
+  key << c.scene.revision() << p_.mapSize << p_.format << p_.offsetFactor << p_.offsetUnits << p_.cullFront << p_.levels
+      << p_.criterion << p_.eps0 << p_.maxSlope << p_.build << bool(sweep) << l.camera.camera.viewProj();
   return key << std::span<const char>(l.camera.camera.casters);
 }
 

@@ -26,8 +26,8 @@ gl::Program& LitPass::program(const ShadowContext& c, const ShadowTechnique& t, 
   // A technique's own texel Jacobian for the aliasing measurement only in measured frames: on
   // llvmpipe the cascades' cost every frame 14-36 % of the scene pass. (Only then a variant of its
   // own, so other techniques' measured runs compile nothing more.)
-  const bool measured = c.frame.measureLight >= 0 &&
-                        std::find(own.begin(), own.end(), "SHADOW_TEXEL_JACOBIAN") != own.end();
+  const bool measured =
+      c.frame.measureLight >= 0 && std::find(own.begin(), own.end(), "SHADOW_TEXEL_JACOBIAN") != own.end();
   if (measured) defines.push_back("MEASURED_FRAME");
   return variants_.get(defines, {t.visibilityShader()}, measured);
 }
