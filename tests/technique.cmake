@@ -32,6 +32,14 @@ add_test(NAME gpu.technique.hybrid_map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$
          -DNAME=hybrid_reuse -DPRESET=default -DMAPS=1 -DPASSES=4
          -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
 set_tests_properties(gpu.technique.hybrid_map_reuse PROPERTIES LABELS gpu TIMEOUT 300)
+# The projective maps under a still camera: PSM with the fixes (lesson 09) and the cascades (lesson 10).
+add_test(NAME gpu.technique.psm_map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_09_psm_fixes>
+         -DNAME=psm_reuse -DPRESET=default -DMAPS=1 -DPASSES=1
+         -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
+add_test(NAME gpu.technique.cascades_map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
+         -DNAME=csm_reuse -DPRESET=default -DMAPS=1 -DPASSES=1 -DREUSE=csm.reuse_maps
+         -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
+set_tests_properties(gpu.technique.psm_map_reuse gpu.technique.cascades_map_reuse PROPERTIES LABELS gpu TIMEOUT 300)
 
 # The frame budget on a software renderer (a window under Xvfb), lesson 03.
 find_program(XVFB_RUN xvfb-run)

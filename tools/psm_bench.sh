@@ -32,15 +32,17 @@ command -v python3 >/dev/null || { echo "psm_bench: needs python3" >&2; exit 2; 
 mkdir -p "$out"
 
 # The four techniques at 2048^2 texels per light (equal_texels gives LiSPSM and the uniform map
-# the PSM's map_size); the original is lesson 08's parameters in lesson 09.
-common="triangles=$triangles map_size=2048"
+# the PSM's map_size); the original is lesson 08's parameters in lesson 09. Every map is redrawn
+# every frame (reuse_maps=false): a sample's held pose would otherwise keep its maps and time none.
+redraw="reuse_maps=false lispsm.reuse_maps=false uniform.reuse_maps=false"
+common="triangles=$triangles map_size=2048 $redraw"
 uniform="uniform 2048: technique=uniform $common"
 original="original PSM 2048: technique=psm fix.inverse=false fix.clip=false fix.faces=never fix.fallback=false bias=constant bias.normal_offset=0 $common"
 fixed="PSM all fixes 2048: technique=psm $common"
 lispsm="LiSPSM 2048: technique=lispsm $common"
 # The second goal: PSM with the fixes at 1024^2 against the uniform map at 4096^2.
-fixed1k="PSM all fixes 1024: technique=psm triangles=$triangles map_size=1024"
-uniform4k="uniform 4096: technique=uniform triangles=$triangles map_size=4096"
+fixed1k="PSM all fixes 1024: technique=psm triangles=$triangles map_size=1024 $redraw"
+uniform4k="uniform 4096: technique=uniform triangles=$triangles map_size=4096 $redraw"
 
 run() {  # run NAME SCENE PATH SAMPLES REPEATS CONFIG...
   local name=$1 scene=$2 path=$3 n=$4 r=$5

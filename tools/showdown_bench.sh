@@ -62,17 +62,16 @@ mkdir -p "$out"
 configs=()
 for b in $budgets; do
   for t in uniform psm lispsm csm hybrid; do
-    # (the uniform and hybrid maps redrawn every frame, as on a moving path: their reuse would time nothing)
-    extra=""
-    [[ $t == uniform || $t == hybrid ]] && extra=" $t.reuse_maps=false"
+    # (every map redrawn every frame, as on a moving path: a held pose's reuse would time nothing)
+    extra=" $t.reuse_maps=false"
     configs+=(--config "$t $b: technique=$t texels=$b triangles=$triangles$extra")
   done
 done
 configs+=(--config "volumes -: technique=volumes triangles=$triangles")
 # The comparison of Lloyd et al. 2006: the cascades with a LiSPSM warp inside each (csm.warp) at
 # 2048^2 total against one LiSPSM map at 4096^2 (with --quick 4096^2 is not among the budgets).
-configs+=(--config "csm+warp 2048: technique=csm csm.warp=true texels=2048 triangles=$triangles")
-if ((quick)); then configs+=(--config "lispsm 4096: technique=lispsm texels=4096 triangles=$triangles"); fi
+configs+=(--config "csm+warp 2048: technique=csm csm.warp=true texels=2048 triangles=$triangles csm.reuse_maps=false")
+if ((quick)); then configs+=(--config "lispsm 4096: technique=lispsm texels=4096 triangles=$triangles lispsm.reuse_maps=false"); fi
 
 run() {  # run NAME SCENE PATH SAMPLES [EXTRA CONFIG ARGS...]
   local name=$1 scene=$2 path=$3 n=$4

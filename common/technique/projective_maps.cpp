@@ -54,6 +54,8 @@ void ProjectiveMapSet::declare(ParamRegistry& r, const std::string& n) {
         "the lookup moves this many texels along N (their world size at the point), more at grazing light");
   r.add(n + "offset.factor", &p_.slopeOffset, 0, 10,
         "glPolygonOffset factor in the depth pass: the depth slope of each caster in the map itself");
+  r.add(n + "reuse_maps", &p_.reuseMaps,
+        "keep a light's maps nothing invalidated (light, casters, the maps' matrices unchanged: a still camera)");
 }
 
 void ProjectiveMapSet::init() {
@@ -79,6 +81,7 @@ void ProjectiveMapSet::ensureArray(PerLight& l, int light, int side, int layers)
   if (l.array && l.side == side && l.format == p_.format && l.layers >= layers) return;
   const std::string label = "light" + std::to_string(light) + " projective maps";
   l.array = gl::makeTexture(GL_TEXTURE_2D_ARRAY, label);
+  ++l.generation;
   l.side = side;
   l.layers = layers;
   l.format = p_.format;
@@ -126,8 +129,15 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
   l.used = int(std::min<std::size_t>(maps.size(), kPsmMaps));
   l.faces = faces;
   if (l.used == 0) return;
-  auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(light));
   ensureArray(l, light, side, l.used);
+  stats.bytes += std::uint64_t(l.side) * std::uint64_t(l.side) * std::uint64_t(l.layers) * depthBytes(l.format);
+  PassKey key = passKey(c, l, maps.first(std::size_t(l.used)), side, keep, worldLight);
+  if (p_.reuseMaps && key == l.rendered) {
+    ++stats.reusedMaps;
+    return;
+  }
+  l.rendered = std::move(key);
+  auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(light));
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   // Casters nearer than the near plane (or, for the inverse projection, far behind the camera at
@@ -158,9 +168,20 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
   }
   glDisable(GL_DEPTH_CLAMP);
   glDisable(GL_POLYGON_OFFSET_FILL);
-  stats.bytes += std::uint64_t(l.side) * std::uint64_t(l.side) * std::uint64_t(l.layers) * depthBytes(l.format);
   glBindFramebuffer(GL_FRAMEBUFFER, c.frame.framebuffer);
   glViewport(0, 0, c.frame.width, c.frame.height);
+}
+
+// What light `l`'s maps depend on: the scene, the array they live in, the depth pass's settings
+// (fix 4's bias and the light it pushes away from, or a student's), and per map its matrix and the
+// casters it draws. Still camera, still light, static scene: the same key, the maps stay.
+PassKey ProjectiveMapSet::passKey(const ShadowContext& c, const PerLight& l, std::span<const ProjectiveMapView> maps,
+                                  int side, std::span<const char> keep, const glm::dvec4& worldLight) const {
+  PassKey key;
+  key << c.scene.revision() << l.generation << side << p_.format << p_.bias << p_.worldA << p_.worldB << p_.worldMax
+      << p_.slopeOffset << bool(studentBias) << worldLight << maps.size() << keep;
+  for (const ProjectiveMapView& m : maps) key << m.worldToClip << m.keep;
+  return key;
 }
 
 // impl=student: the student's texelSizeBias moves every caster vertex on the CPU (the paper's per

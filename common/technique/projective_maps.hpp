@@ -19,6 +19,7 @@
 #include "gl/objects.hpp"
 #include "gl/program.hpp"
 #include "gl/shadow_map.hpp"
+#include "technique/pass_key.hpp"
 #include "technique/casters.hpp"
 #include "technique/technique.hpp"
 
@@ -41,6 +42,7 @@ struct ProjectiveMapParams {
   float worldMax = 1.0f;                                    // the most a caster moves (a texel can be unbounded)
   float slopeOffset = 1.0f;   // glPolygonOffset factor: steep casters in the map's own depth
   float normalOffset = 1.0f;  // the lookup moves this many texels (their world size there) along N, times sin(theta)
+  bool reuseMaps = true;      // skip a light's depth passes when nothing they depend on changed (PassKey)
 };
 
 // One map to render: its world -> clip matrix (double, converted at the GL boundary), and the
@@ -116,7 +118,11 @@ class ProjectiveMapSet {
     std::array<glm::mat4, kPsmMaps> matrices{};
     std::array<glm::vec4, kPsmMaps> texelStep{}, clipW{};  // fix 4's factors, for the receiver's texel size
     FaceLookup faces;
+    int generation = 0;  // counts the array's re-creations: a new array holds no map yet
+    PassKey rendered;    // what the maps were last drawn from
   };
+  PassKey passKey(const ShadowContext& c, const PerLight& l, std::span<const ProjectiveMapView> maps, int side,
+                  std::span<const char> keep, const glm::dvec4& worldLight) const;
   void ensureArray(PerLight& l, int light, int side, int layers);
   void setBiasUniforms(const glm::dmat4& worldToClip, int side, const glm::dvec4& worldLight);
   std::size_t drawStudentBiased(const ShadowContext& c, const glm::dmat4& worldToClip, int side,

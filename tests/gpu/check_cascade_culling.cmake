@@ -3,10 +3,11 @@
 # (csm.cull_per_cascade) on the same frame: the picture must be byte for byte the same (a caster
 # left out of a cascade writes no texel of it), the culled casters more and the shadow triangles
 # fewer with it on, and some caster culled at all (the city from lesson 10's default view: the near
-# cascade covers a few metres, most blocks cannot reach it).
+# cascade covers a few metres, most blocks cannot reach it). The maps are redrawn in every frame
+# (csm.reuse_maps=false): the figures are the measured frame's, and a kept map draws no triangle.
 # Run: cmake -DLESSON=... -DOUT_DIR=... [-DARGS=a;b] -DNAME=... -P this
 function(run name)
-  execute_process(COMMAND ${LESSON} --headless --frames 2 --size 320x180 --strict-gl --set technique=csm ${ARGS}
+  execute_process(COMMAND ${LESSON} --headless --frames 2 --size 320x180 --strict-gl --set technique=csm --set csm.reuse_maps=false ${ARGS}
                           ${ARGN} --measure ${OUT_DIR}/${NAME}_${name}.json --screenshot ${OUT_DIR}/${NAME}_${name}.png
                   RESULT_VARIABLE rc ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)

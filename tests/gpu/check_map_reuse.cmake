@@ -4,8 +4,9 @@
 # its picture is byte for byte the one drawn with every map rendered every frame (reuse_maps=false,
 # whose CSV must show the passes in every frame: the control).
 # The same for another lesson: NAME (file names), PRESET, MAPS (maps drawn in frame 0) and PASSES
-# (timed passes per map: lesson 07's hybrid map has its depth pass, index, merge and records).
-# Run: cmake -DLESSON=... -DOUT_DIR=... [-DNAME=... -DPRESET=... -DMAPS=... -DPASSES=...] -P this
+# (timed passes per map: lesson 07's hybrid map has its depth pass, index, merge and records) and
+# REUSE (the switch's name: csm.reuse_maps in lesson 10).
+# Run: cmake -DLESSON=... -DOUT_DIR=... [-DNAME=... -DPRESET=... -DMAPS=... -DPASSES=... -DREUSE=...] -P this
 if(NOT DEFINED NAME)
   set(NAME reuse)
 endif()
@@ -17,6 +18,9 @@ if(NOT DEFINED MAPS)
 endif()
 if(NOT DEFINED PASSES)
   set(PASSES 1)
+endif()
+if(NOT DEFINED REUSE)
+  set(REUSE reuse_maps)
 endif()
 function(run name)
   execute_process(COMMAND ${LESSON} --headless --frames 6 --size 320x180 --strict-gl --preset ${PRESET} ${ARGN}
@@ -44,7 +48,7 @@ endfunction()
 
 file(MAKE_DIRECTORY ${OUT_DIR})
 run(kept)
-run(redrawn --set reuse_maps=false)
+run(redrawn --set ${REUSE}=false)
 count_passes(kept kept_total kept_late)
 count_passes(redrawn redrawn_total redrawn_late)
 math(EXPR once "${MAPS} * ${PASSES}")
@@ -53,7 +57,7 @@ if(NOT kept_total EQUAL once OR NOT kept_late EQUAL 0)
   message(FATAL_ERROR "reused maps: ${kept_total} shadow passes, ${kept_late} after frame 0 (expected ${once} and 0)")
 endif()
 if(NOT redrawn_total EQUAL every)
-  message(FATAL_ERROR "reuse_maps=false: ${redrawn_total} shadow passes in 6 frames (expected ${every}): the control failed")
+  message(FATAL_ERROR "${REUSE}=false: ${redrawn_total} shadow passes in 6 frames (expected ${every}): the control failed")
 endif()
 file(READ ${OUT_DIR}/${NAME}_kept.json json)
 string(JSON reused GET "${json}" counters "maps reused")
