@@ -73,6 +73,33 @@ psm_case(control.student_stubs fail 150 500 ${DOWN} --set impl=student)
 psm_case(control.no_bias fail 150 500 --set bias=constant --set bias.constant=0 --set bias.normal_offset=0
          --set offset.factor=0)
 
+# psm_bench's vanishing shadows: the terrain path (bench/paths/psm_terrain_orbit.path, sampled at
+# 8 frames as the bench does, t = 11 k / 7; 320x180, 30,000 triangles, 2048^2 texels), frames 1, 3
+# and 4 under the low sun facing the view, with the receiver plane (bias.receiver_plane): each tap
+# compares against the receiver's own plane, and no texel-sized normal offset lifts the receivers
+# of thin grazing shadows out of them. Frames 1 and 4 (4,723 and 1,494 truly shadowed pixels) must
+# leak under 5 % of their shadow (the issue's "a shadow vanishes"). Frame 3's 1,121 are thin shadows
+# on the far hills a texel or less wide, which every technique at 2048^2 loses in part (the uniform
+# map 19 %, LiSPSM 21 %, psm_bench 2026-12-01); its bound is 25 %, where the normal offset loses all
+# of them (the control). Misclassified: 1.5 % as above, 4.5 % on frame 3, whose smooth-shaded
+# terminator band (facets facing away from the sun, normals facing it: ~3 % of the facing pixels,
+# which the map cannot tell from shadow) counts as false shadow.
+function(psm_terrain_frame name expect max_bp max_leak_bp t)
+  add_test(NAME gpu.psm.${name} COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_09_psm_fixes>
+           -DOUT=${psm_out}/${name}.json -DNAME=${name} -DEXPECT=${expect} -DMAX_BP=${max_bp} -DMAX_LEAK_BP=${max_leak_bp}
+           -DMIN_FACING=20000 -DSIZE=320x180 "-DARGS=--set;scene=terrain;--set;triangles=30000;--set;map_size=2048;--set;technique=psm;--replay;${CMAKE_SOURCE_DIR}/bench/paths/psm_terrain_orbit.path@${t};${ARGN}"
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_psm_case.cmake)
+  set_tests_properties(gpu.psm.${name} PROPERTIES LABELS gpu TIMEOUT 300)
+endfunction()
+set(plane --set bias.receiver_plane=true)
+psm_terrain_frame(terrain_frame1 ok 150 500 1.571429 ${plane})
+psm_terrain_frame(terrain_frame3 ok 450 2500 4.714286 ${plane})
+psm_terrain_frame(terrain_frame4 ok 150 500 6.285714 ${plane})
+# Controls: the same frames with the normal offset (bias.receiver_plane=false, the default) lose
+# their shadows: frame 4 half of it, frame 3 all.
+psm_terrain_frame(control.terrain_frame3_offset fail 450 2500 4.714286)
+psm_terrain_frame(control.terrain_frame4_offset fail 150 500 6.285714)
+
 # The light sweep's directions where the warp aliased more than the uniform map (1.55x and 1.11x
 # before fix.fallback); the control turns the fall back off and must alias more again.
 function(psm_sweep name expect t)

@@ -52,6 +52,10 @@ void ProjectiveMapSet::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "bias.max", &p_.worldMax, 0, 10, "the most a caster moves (one texel can be unbounded near infinity)");
   r.add(n + "bias.normal_offset", &p_.normalOffset, 0, 4,
         "the lookup moves this many texels along N (their world size at the point), more at grazing light");
+  r.add(n + "bias.receiver_plane", &p_.receiverPlane,
+        "each tap compares against the receiver's plane at its texel (depth slope from screen derivatives)");
+  r.add(n + "bias.plane_normal_offset", &p_.planeNormalOffset, 0, 4,
+        "with the receiver plane: the normal offset in texels where the facet faces the light");
   r.add(n + "offset.factor", &p_.slopeOffset, 0, 10,
         "glPolygonOffset factor in the depth pass: the depth slope of each caster in the map itself");
   r.add(n + "reuse_maps", &p_.reuseMaps,
@@ -238,7 +242,9 @@ bool ProjectiveMapSet::anyFaces() const {
 std::vector<std::string> ProjectiveMapSet::shaderDefines() const {
   std::vector<std::string> defines;
   if (anyFaces()) defines.push_back("PSM_FACES");
-  if (p_.normalOffset > 0) defines.push_back("PSM_NORMAL_OFFSET");
+  if (p_.normalOffset > 0 || (p_.receiverPlane && p_.planeNormalOffset > 0)) defines.push_back("PSM_NORMAL_OFFSET");
+  if (p_.receiverPlane)
+    defines.push_back(p_.filter == ProjectiveFilter::Hardware2x2 ? "PSM_RECEIVER_PLANE 2" : "PSM_RECEIVER_PLANE 1");
   if (studentLookup) defines.push_back("SHADOWLAB_STUDENT_PSM_LOOKUP");
   if (studentFaces) defines.push_back("SHADOWLAB_STUDENT_PSM_FACES");
   return defines;
@@ -247,7 +253,10 @@ std::vector<std::string> ProjectiveMapSet::shaderDefines() const {
 void ProjectiveMapSet::bind(const gl::Program& lit, int firstUnit) const {
   lit.set("uPsmConstantBias", p_.bias == ProjectiveBias::Constant ? p_.constantBias : 0.0f);
   lit.set("uPsmNormalOffset", p_.normalOffset);
-  const GLuint sampler = p_.filter == ProjectiveFilter::Hardware2x2 ? compareLinear_.id() : compareNearest_.id();
+  lit.set("uPsmPlaneNormalOffset", p_.planeNormalOffset);
+  // The receiver plane filters its own 2x2 taps, each with its own reference depth.
+  const bool linear = p_.filter == ProjectiveFilter::Hardware2x2 && !p_.receiverPlane;
+  const GLuint sampler = linear ? compareLinear_.id() : compareNearest_.id();
   for (int i = 0; i < kPsmLights; ++i) {
     const PerLight& l = lights_[std::size_t(i)];
     lit.set(indexed("uPsmLayers", i).c_str(), l.used);

@@ -42,6 +42,14 @@ struct ProjectiveMapParams {
   float worldMax = 1.0f;                                    // the most a caster moves (a texel can be unbounded)
   float slopeOffset = 1.0f;   // glPolygonOffset factor: steep casters in the map's own depth
   float normalOffset = 1.0f;  // the lookup moves this many texels (their world size there) along N, times sin(theta)
+  // The receiver plane (Isidoro 2006): each of the lookup's taps compares against the receiver's
+  // own plane at that texel's centre, its depth slope from the world point's screen derivatives
+  // through the map's projective matrix. Then planeNormalOffset applies where the pixel's facet
+  // faces the light, none at a smooth surface's terminator (facet away, normal towards the light)
+  // and normalOffset only where the normal faces away (V unseen). Off by default: see lesson 09's
+  // README ("The receiver plane") for what it gains and what it costs.
+  bool receiverPlane = false;
+  float planeNormalOffset = 0.0f;
   bool reuseMaps = true;      // skip a light's depth passes when nothing they depend on changed (PassKey)
 };
 

@@ -48,7 +48,8 @@ PsmParams PsmParams::original() {
   p.faces = psm::FaceMode::Never;
   p.uniformFallback = false;
   p.maps.bias = ProjectiveBias::Constant;
-  p.maps.normalOffset = 0.0f;  // the original knew no normal offset either
+  p.maps.normalOffset = 0.0f;    // the original knew no normal offset either
+  p.maps.receiverPlane = false;  // nor the receiver plane
   return p;
 }
 

@@ -32,13 +32,14 @@ int cascadeOf(int light, vec3 worldPos, out float nextWeight) {
 
 float shadowVisibility(int light, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   texelCoords = vec2(0.0);
+  vec3 dPdx = dFdx(worldPos), dPdy = dFdy(worldPos);  // the receiver plane's, before any branch
   float w;
   int k = cascadeOf(light, worldPos, w);
   if (k < 0) return 1.0;  // no cascade covers the point (light off, or beyond the last): lit
-  float v = projectiveLookup(light, k, worldPos, N, texelCoords);
+  float v = projectiveLookup(light, k, worldPos, N, dPdx, dPdy, texelCoords);
   if (w > 0.0) {
     vec2 unused;
-    v = mix(v, projectiveLookup(light, k + 1, worldPos, N, unused), w);
+    v = mix(v, projectiveLookup(light, k + 1, worldPos, N, dPdx, dPdy, unused), w);
   }
   return v;
 }

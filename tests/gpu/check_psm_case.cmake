@@ -3,8 +3,12 @@
 # non-finite visibility or texel Jacobian, and, against ground truth, at most MAX_BP / 100 %
 # misclassified and at most MAX_LEAK_BP / 100 % of the truly shadowed pixels leaked (a vanished shadow). With
 # EXPECT=fail (a control) the same bounds must be broken: the check can tell a wrong answer.
-# Run: cmake -DLESSON=... -DOUT=...json -DNAME=... -DEXPECT=ok|fail -DMAX_BP=... -DMAX_LEAK_BP=... -DARGS=a;b;c -P this
-execute_process(COMMAND ${LESSON} --headless --frames 2 --size 480x270 --strict-gl ${ARGS} --measure ${OUT}
+# Run: cmake -DLESSON=... -DOUT=...json -DNAME=... -DEXPECT=ok|fail -DMAX_BP=... -DMAX_LEAK_BP=... [-DSIZE=WxH (480x270)]
+#   -DARGS=a;b;c -P this
+if(NOT DEFINED SIZE)
+  set(SIZE 480x270)
+endif()
+execute_process(COMMAND ${LESSON} --headless --frames 2 --size ${SIZE} --strict-gl ${ARGS} --measure ${OUT}
                 RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${NAME}: lesson exited ${rc}: ${err}")
