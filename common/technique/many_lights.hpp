@@ -20,8 +20,10 @@ struct ManyLightsParams {
   // 1024^2 per sample: 64 of them hold 256 MiB (the header shows it). No slope-scaled polygon
   // offset: it scales with the CASTER's own depth slope, so a leaf card seen nearly edge-on by a
   // sample is pushed back past the card it touches and its contact shadow leaks (lesson 05's README,
-  // "Measured"). The receiver's slope bias stays: the showcase's steep faces need it.
-  SoftMapParams maps{.mapSize = 2, .offsetFactor = 0.0f};
+  // "Measured"). The receiver's slope bias stays on solid receivers: the showcase's steep faces need
+  // it. On the leaf cards none, and 0.7 texels along the normal instead (the forest's 16 lights:
+  // 2.47x -> 1.99x the noise floor at R 0.6 m, 2.10x -> 1.79x at 1.2 m; the showcase unchanged).
+  SoftMapParams maps{.mapSize = 2, .offsetFactor = 0.0f, .cardSlopeBias = 0.0f, .cardNormalOffset = 0.7f};
 };
 
 class ManyLights : public ShadowTechnique {

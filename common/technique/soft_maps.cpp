@@ -24,6 +24,8 @@ void SoftMaps::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "bias.offset_factor", &p_.offsetFactor, 0, 8,
         "glPolygonOffset factor in the depth pass (times the depth slope)");
   r.add(n + "bias.offset_units", &p_.offsetUnits, 0, 16, "glPolygonOffset units in the depth pass");
+  r.add(n + "bias.card_slope", &p_.cardSlopeBias, 0, 8, "bias.slope on two-sided materials (leaf cards)");
+  r.add(n + "bias.card_normal_offset", &p_.cardNormalOffset, 0, 4, "bias.normal_offset on two-sided materials");
 }
 
 int SoftMaps::mapSize() const { return std::stoi(UniformShadowMaps::mapSizes()[std::size_t(p_.mapSize)]); }
@@ -145,6 +147,8 @@ void SoftMaps::bind(const gl::Program& p, int unit) const {
   p.set("uSoftBias", p_.bias);
   p.set("uSoftSlopeBias", p_.slopeBias);
   p.set("uSoftNormalOffset", p_.normalOffset);
+  p.set("uSoftCardSlopeBias", p_.cardSlopeBias);
+  p.set("uSoftCardNormalOffset", p_.cardNormalOffset);
   p.set("uSoftMaps", unit);
   p.set("uSoftDepths", unit + 1);
   for (int u = 0; u < 2; ++u) {

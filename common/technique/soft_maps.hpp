@@ -31,6 +31,14 @@ struct SoftMapParams {
   float offsetFactor = 1.0f;   // glPolygonOffset in the depth pass: times the caster's depth slope
   float offsetUnits = 2.0f;    // and in units of the depth format's resolution
   float minNear = 0.2f;        // the light cameras' near plane fits the scene, but not nearer than this
+  // The same on two-sided materials (leaf cards, fences: thin and flat, lit from either side). The
+  // slope bias moves the comparison toward the light by slope x tan(theta) texels (up to 5 at the
+  // cap tan(theta) = 10), and on a card that is a contact shadow from the card it touches leaking
+  // through; a step along the normal off the card's plane escapes its own depth without it. Each
+  // technique picks its own (many lights: lesson 05's README, "Measured"); by default the same as
+  // the solid receivers'.
+  float cardSlopeBias = 0.5f;
+  float cardNormalOffset = 0.25f;
 };
 
 // One light as the soft techniques see it this frame.

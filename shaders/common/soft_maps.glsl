@@ -20,6 +20,8 @@ uniform int uSoftSampleCount;
 uniform float uSoftMapSize;
 uniform float uSoftBias, uSoftSlopeBias;  // texels of world size at the receiver; per tan(theta)
 uniform float uSoftNormalOffset;          // texels along the normal
+uniform float uSoftCardSlopeBias, uSoftCardNormalOffset;  // the same two on two-sided materials
+uniform bool uTwoSided;                   // scene.frag's: the receiver is a two-sided card
 uniform sampler2DArrayShadow uSoftMaps;   // comparison, GL_LINEAR: hardware 2x2 PCF per lookup
 uniform sampler2DArray uSoftDepths;       // the same texture, raw: the blocker search reads depths
 
@@ -40,6 +42,7 @@ struct SoftReceiver {
   float z;         // distance along the axis
   float texel;     // world size of one map texel at the receiver
   float tanTheta;  // of the angle between N and the direction to the light, capped at 10
+  float slopeBias; // uSoftSlopeBias, or uSoftCardSlopeBias on a two-sided card
 };
 
 SoftReceiver softReceiver(int i, vec3 worldPos, vec3 N) {
@@ -49,13 +52,15 @@ SoftReceiver softReceiver(int i, vec3 worldPos, vec3 N) {
   float distance = max(-(uSoftView[i] * vec4(worldPos, 1.0)).z, 1e-3);
   r.texel = 2.0 * distance * uSoftTanHalfFov[i] / uSoftMapSize;
   r.tanTheta = min(sinT / cosT, 10.0);
-  r.view = (uSoftView[i] * vec4(worldPos + N * (uSoftNormalOffset * r.texel * sinT), 1.0)).xyz;
+  r.slopeBias = uTwoSided ? uSoftCardSlopeBias : uSoftSlopeBias;
+  float offset = uTwoSided ? uSoftCardNormalOffset : uSoftNormalOffset;
+  r.view = (uSoftView[i] * vec4(worldPos + N * (offset * r.texel * sinT), 1.0)).xyz;
   r.z = max(-r.view.z, 1e-4);
   r.uv = 0.5 + r.view.xy / (2.0 * r.z * uSoftTanHalfFov[i]);
   return r;
 }
 
-float softBias(SoftReceiver r) { return (uSoftBias + uSoftSlopeBias * r.tanTheta) * r.texel; }
+float softBias(SoftReceiver r) { return (uSoftBias + r.slopeBias * r.tanTheta) * r.texel; }
 
 // Nothing is known in front of the near plane (behind the light) or beyond the far plane: lit.
 bool softOutside(int i, SoftReceiver r) { return r.z <= uSoftDepthRange[i].x || r.z >= uSoftDepthRange[i].y; }
