@@ -50,7 +50,7 @@ struct ProjectiveMapParams {
   // README ("The receiver plane") for what it gains and what it costs.
   bool receiverPlane = false;
   float planeNormalOffset = 0.0f;
-  bool reuseMaps = true;      // skip a light's depth passes when nothing they depend on changed (PassKey)
+  bool reuseMaps = true;  // skip a light's depth passes when nothing they depend on changed (PassKey)
 };
 
 // One map to render: its world -> clip matrix (double, converted at the GL boundary), and the
