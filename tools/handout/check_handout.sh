@@ -159,10 +159,30 @@ score() {
   echo "score $points / $max, $failed of $cases cases failed, $hidden hidden"
   [ "$hidden" -gt 0 ] || { echo "FAIL: no hidden case ran"; exit 1; }
   case $want in
-    zero) [ "$failed" = "$cases" ] && awk -v p="$points" 'BEGIN {exit !(p == 0)}' || { echo "FAIL: expected 0 points"; exit 1; } ;;
-    full) [ "$failed" = 0 ] && awk -v p="$points" -v m="$max" 'BEGIN {exit !(p == m && m > 0)}' || { echo "FAIL: expected full marks"; exit 1; } ;;
+    zero) [ "$failed" = "$cases" ] && awk -v p="$points" 'BEGIN {exit !(p == 0)}' || { explain "$out" true; echo "FAIL: expected 0 points"; exit 1; } ;;
+    full) [ "$failed" = 0 ] && awk -v p="$points" -v m="$max" 'BEGIN {exit !(p == m && m > 0)}' || { explain "$out" false; echo "FAIL: expected full marks"; exit 1; } ;;
     *) echo "usage: score OUT_DIR zero|full" >&2; exit 2 ;;
   esac
+}
+
+# A failed score names what to replay: the seed (grade_submission.sh draws one at random), every
+# case whose "passed" is not what was wanted, with its grader's output, and a copy of the run that
+# the next run of the test does not overwrite.
+explain() {
+  local out=$1 wrong=$2 keep
+  grep -m1 -o 'seed [0-9]*' "$out.log" | sed 's/^seed /replay with SEED=/' || true
+  python3 - "$out/runs" "$wrong" <<'PY' || true
+import json, pathlib, sys
+wrong = sys.argv[2] == "true"
+for f in sorted(pathlib.Path(sys.argv[1]).glob("*.json")):
+    run = json.loads(f.read_text())
+    for c in run.get("cases", []):
+        if c.get("passed") == wrong:
+            print(f"{f.stem} (seed {run.get('seed')}): {'passed' if wrong else 'failed'}: {c['name']}"
+                  f"{' [hidden]' if c.get('hidden') else ''}\n  {c.get('output', '')[:600]}")
+PY
+  keep=$out.failed-$(date +%Y%m%d-%H%M%S)
+  cp -r "$out" "$keep" && cp "$out.log" "$keep/grade.log" && echo "the failing run is kept in $keep"
 }
 
 reference_submission() {
@@ -188,6 +208,7 @@ grade() {
     reference_submission "$submission"
   fi
   bash tools/grading/grade_submission.sh "$submission" "$out" >"$out.log" 2>&1 || { cat "$out.log"; exit 1; }
+  grep -m1 '^grade: .*, seed [0-9]*$' "$out.log" || true
   tail -3 "$out.log"
   score "$out" "$want"
 }
