@@ -332,4 +332,21 @@ float rotationAngle(const glm::vec2& pixel) {
   return (h - std::floor(h)) * 6.28318530718f;
 }
 
+bool boxOutsideClip(const glm::mat4& viewProj, const Aabb& box) {
+  if (box.empty()) return true;
+  unsigned outside = 0x3f;  // bit k: every corner so far is outside plane k
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 c = viewProj * glm::vec4(i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
+                                             i & 4 ? box.max.z : box.min.z, 1.0f);
+    unsigned here = 0;
+    for (int a = 0; a < 3; ++a) {
+      if (c[a] < -c.w) here |= 1u << (2 * a);
+      if (c[a] > c.w) here |= 2u << (2 * a);
+    }
+    outside &= here;
+    if (!outside) return false;
+  }
+  return true;
+}
+
 }  // namespace shadowlab::shadow

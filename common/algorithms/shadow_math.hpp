@@ -92,6 +92,12 @@ bool volumesMayIntersect(const ConvexVolume& a, const ConvexVolume& b);
 // miss. Used to find the receivers the view needs: the scene bounds inside the view frustum.
 std::vector<glm::vec3> intersectionPoints(const ConvexVolume& a, const ConvexVolume& b);
 
+// View culling in clip space: true when every corner of `box` lies outside one and the same of
+// the six planes -w <= x, y, z <= w of `viewProj` (linear in homogeneous coordinates, so exact for
+// corners behind the eye too). Such a box draws no fragment; false may still draw none. An empty
+// box is outside.
+bool boxOutsideClip(const glm::mat4& viewProj, const Aabb& box);
+
 // Caster culling against the light volume swept from the view frustum toward the light
 // (directional light travelling along lightDirection): a caster can shade something in the view
 // only if the box swept along lightDirection reaches the volume. False when some plane has the box

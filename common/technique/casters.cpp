@@ -38,7 +38,9 @@ std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& viewProj,
   std::size_t triangles = 0;
   int current = -1;
   unsigned prepared = 0;  // the builds whose per-pass uniforms are set
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+  const std::size_t count = o.order.empty() ? scene.objects.size() : o.order.size();
+  for (std::size_t n = 0; n < count; ++n) {
+    const std::size_t i = o.order.empty() ? n : o.order[n];
     const SceneObject& object = scene.objects[i];
     if ((!object.castsShadow && !o.allObjects) || (!keep.empty() && !keep[i])) continue;
     const Material& m = scene.materials[object.material];

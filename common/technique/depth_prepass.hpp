@@ -6,7 +6,10 @@
 // turns the cost of the lit shader from per overlapping fragment (alpha-tested cards defeat early
 // depth tests) into per pixel. The lit pass must use the same vertex shader, with `invariant
 // gl_Position`, so the depths match bit for bit.
+#include <cstdint>
+#include <span>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -23,9 +26,17 @@ class DepthPrepass {
   void begin(const SceneCache& scene, const glm::mat4& viewProj);
   // Back to plain depth LESS with writes on, stencil off.
   void end();
+  // Whether object i can draw a fragment in the last begin()'s view (its world box not wholly
+  // outside one clip plane): the shading pass skips the same objects (a filter for gl::drawScene).
+  bool inView(std::size_t i) const { return i < inView_.size() && inView_[i]; }
+  std::size_t culled() const { return culled_; }  // objects left out by the view
 
  private:
   CasterPass pass_;
+  std::vector<char> inView_;
+  std::vector<std::uint32_t> order_;  // near to far
+  std::vector<float> distance_;
+  std::size_t culled_ = 0;
 };
 
 }  // namespace shadowlab::tech

@@ -53,6 +53,7 @@ std::size_t LitPass::draw(const ShadowContext& c, const ShadowTechnique& t, cons
   gl::SceneDrawOptions options;
   options.specular = s.specular;
   options.shininess = s.shininess;
+  if (s.depthPrepass) options.filter = [this](std::size_t i) { return prepass_.inView(i); };
   const std::size_t triangles = gl::drawScene(p, c.scene.scene(), c.scene.gpu(), options);
   t.unbindVisibility(1);
   glActiveTexture(GL_TEXTURE0);

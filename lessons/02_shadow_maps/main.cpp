@@ -198,6 +198,7 @@ class ShadowMapLesson : public Lesson {
         prepass_.begin(scene_, f.projection * f.view);
         drawScene(f, textureMatrix);
         prepass_.end();
+        counters.push_back({"objects out of view", std::to_string(prepass_.culled())});
       }
     }
 
@@ -245,6 +246,7 @@ class ShadowMapLesson : public Lesson {
     glBindTexture(GL_TEXTURE_2D, map_.texture.id());
     glBindSampler(2, rawDepth_.id());
     gl::SceneDrawOptions draw;
+    draw.filter = [this](std::size_t i) { return prepass_.inView(i); };  // the pre-pass's view culling
     draw.beforeDraw = [this](std::size_t i) {  // compare=cpu_vertex: V per vertex at attribute 3
       if (p_.compare == Compare::CpuVertex && i < cpuVisibility_.size()) {
         glBindBuffer(GL_ARRAY_BUFFER, cpuVisibility_[i].id());

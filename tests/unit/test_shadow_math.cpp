@@ -215,3 +215,46 @@ TEST_CASE("shadow_math: snapping keeps the texel grid fixed while the receivers 
     CHECK(phase < 1e-2f);
   }
 }
+
+TEST_CASE("shadow_math: view culling in clip space (boxOutsideClip)") {
+  // Eye at the origin looking down -z, 90 degrees vertical, square, near 1, far 100: the frustum
+  // holds |x|, |y| <= -z for 1 <= -z <= 100.
+  const glm::mat4 vp = glm::perspective(glm::radians(90.0f), 1.0f, 1.0f, 100.0f);
+  auto box = [](glm::vec3 lo, glm::vec3 hi) {
+    Aabb b;
+    b.extend(lo);
+    b.extend(hi);
+    return b;
+  };
+  CHECK_FALSE(boxOutsideClip(vp, box({-1, -1, -11}, {1, 1, -9})));            // in front, in view
+  CHECK(boxOutsideClip(vp, box({20, -1, -11}, {22, 1, -9})));                 // right of x = -z
+  CHECK(boxOutsideClip(vp, box({-1, -1, -300}, {1, 1, -200})));               // beyond the far plane
+  CHECK(boxOutsideClip(vp, box({-1, -1, 0.5f}, {1, 1, 5})));                  // behind the eye (w < 0 corners)
+  CHECK(boxOutsideClip(vp, box({-1, -1, -0.9f}, {1, 1, -0.5f})));             // between the eye and the near plane
+  CHECK_FALSE(boxOutsideClip(vp, box({-1, -1, -5}, {1, 1, 5})));              // through the eye into the view
+  CHECK_FALSE(boxOutsideClip(vp, box({-500, -500, -500}, {500, 500, 500})));  // around the whole frustum
+  CHECK(boxOutsideClip(vp, Aabb{}));                                          // empty
+  // Sound on random boxes: a box called outside has no point of a dense grid inside the frustum.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> at(-60.0f, 60.0f), size(0.1f, 30.0f);
+  int outside = 0, inside = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const glm::vec3 lo(at(rng), at(rng), at(rng) - 50.0f);
+    const Aabb b = box(lo, lo + glm::vec3(size(rng), size(rng), size(rng)));
+    bool seen = false;
+    for (int i = 0; i <= 8 && !seen; ++i)
+      for (int j = 0; j <= 8 && !seen; ++j)
+        for (int k = 0; k <= 8 && !seen; ++k) {
+          const glm::vec3 p = b.min + b.extent() * glm::vec3(i, j, k) / 8.0f;
+          seen = -p.z >= 1.0f && -p.z <= 100.0f && std::abs(p.x) <= -p.z && std::abs(p.y) <= -p.z;
+        }
+    if (boxOutsideClip(vp, b)) {
+      ++outside;
+      CHECK_FALSE(seen);
+    } else if (seen) {
+      ++inside;
+    }
+  }
+  CHECK(outside > 200);  // the test exercises both answers
+  CHECK(inside > 200);
+}
