@@ -335,6 +335,15 @@ void StencilVolumes::measureFill(const Frame& f, int i, const VolumeCache& c, co
   if (fl.issued) glGetQueryObjectuiv(fl.query.id(), GL_QUERY_RESULT_AVAILABLE, &ready);
   if (ready) glGetQueryObjectuiv(fl.query.id(), GL_QUERY_RESULT, &fl.samples);
   if (fl.issued && !ready) return;
+  // Nothing the count depends on changed (a still camera under a still light): the pass that would
+  // count the same fragments again is skipped, as a map nothing invalidated is kept.
+  PassKey key;
+  key << c.key << f.c.scene.revision() << f.viewProj << L << p_ << f.c.frame.width << f.c.frame.height
+      << f.c.lights[std::size_t(i)] << f.c.frame.measureLight << bool(hooks.isSilhouette)
+      << bool(hooks.mayReachNearPlane);
+  for (int z : f.zFail) key << z;
+  if (fl.issued && key == fl.counted) return;
+  fl.counted = std::move(key);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthFunc(GL_ALWAYS);
   glDisable(GL_CULL_FACE);

@@ -18,6 +18,7 @@
 
 #include "algorithms/shadow_volume.hpp"
 #include "app/exercise_program.hpp"
+#include "technique/pass_key.hpp"
 #include "technique/technique.hpp"
 
 namespace shadowlab::tech {
@@ -86,6 +87,7 @@ class StencilVolumes : public ShadowTechnique {
     gl::Query query;
     bool issued = false;
     GLuint samples = 0;
+    PassKey counted;  // what the last query counted: the same volumes in the same view count the same
   };
   struct Frame;  // what one frame's passes share (matrices, the z-fail choice)
 
