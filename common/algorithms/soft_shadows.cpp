@@ -371,4 +371,19 @@ glm::vec2 depthRange(const glm::mat4& view, const Aabb& bounds, float minNear) {
   return {nearZ, std::max(hi * 1.02f, nearZ + 0.1f)};
 }
 
+float nearestCasterDepth(const glm::mat4& view, std::span<const Aabb> boxes, std::span<const char> casts,
+                         float minNear) {
+  require(boxes.size() == casts.size() && minNear > 0, "nearestCasterDepth: boxes and casts differ, or minNear <= 0");
+  float lo = 1e30f;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    if (!casts[i] || boxes[i].empty()) continue;
+    for (int k = 0; k < 8; ++k) {
+      const Aabb& b = boxes[i];
+      const glm::vec3 corner(k & 1 ? b.max.x : b.min.x, k & 2 ? b.max.y : b.min.y, k & 4 ? b.max.z : b.min.z);
+      lo = std::min(lo, -(view * glm::vec4(corner, 1.0f)).z);
+    }
+  }
+  return lo > 1e29f ? minNear : std::max(minNear, lo);
+}
+
 }  // namespace shadowlab::soft

@@ -181,5 +181,12 @@ std::optional<Light> spotCovering(const Light& point, const Aabb& bounds);
 // corner along the axis, 2 % margin, near at least minNear (a light inside the bounds). Depth
 // precision lives in near / far; a perspective map of a small scene wastes it on a fixed 0.1..1000.
 glm::vec2 depthRange(const glm::mat4& view, const Aabb& bounds, float minNear);
+// The nearest any caster comes to a light camera (view looking down -z): the smallest distance
+// along the axis of a corner of a box that casts (casts[i] != 0, same length as boxes), at least
+// minNear; minNear when none casts. Nothing in a map from that camera is nearer: PCSS's blocker
+// search sizes its region for a blocker there (pcssSearchRadiusUv), not on the near plane, which
+// fits the whole scene and the sphere's radius (a light among the bounds: minNear itself).
+float nearestCasterDepth(const glm::mat4& view, std::span<const Aabb> boxes, std::span<const char> casts,
+                         float minNear);
 
 }  // namespace shadowlab::soft

@@ -76,6 +76,8 @@ void SoftMaps::fit(const ShadowContext& c) {
         soft::depthRange(shadow::lightViewAlong(spot->position, spot->direction), c.scene.bounds(), p_.minNear);
     s.nearZ = std::max(p_.minNear, range.x - s.radius);
     s.farZ = range.y + s.radius;
+    s.casterNearZ = soft::nearestCasterDepth(shadow::lightViewAlong(spot->position, spot->direction), boxes.boxes,
+                                             boxes.casts, s.nearZ);
     s.spot = *spot;
     s.centre = shadow::spotCamera(*spot, s.nearZ, s.farZ, boxes, true);
     s.tanHalfFov = std::tan(0.5f * shadow::spotFieldOfView(*spot));
@@ -139,6 +141,7 @@ void SoftMaps::bind(const gl::Program& p, int unit) const {
     p.set(("uSoftRadius" + n).c_str(), s->radius);
     p.set(("uSoftTanHalfFov" + n).c_str(), s->tanHalfFov);
     p.set(("uSoftDepthRange" + n).c_str(), glm::vec2(s->nearZ, s->farZ));
+    p.set(("uSoftCasterNear" + n).c_str(), s->casterNearZ);
   }
   for (std::size_t k = 0; k < samples_.size(); ++k)
     p.set(("uSoftSamples[" + std::to_string(k) + "]").c_str(), samples_[k]);

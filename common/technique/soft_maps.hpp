@@ -48,8 +48,9 @@ struct SoftLight {
   Light spot;                  // the light as a spot (a point light's cone around the scene)
   shadow::LightCamera centre;  // from the sphere's centre
   float tanHalfFov = 1, nearZ = 0.2f, farZ = 60;
-  int firstLayer = 0;  // its samples' layers in the array
-  std::string why;     // when off: why (for the header)
+  float casterNearZ = 0.2f;  // the nearest caster along the axis (soft::nearestCasterDepth), >= nearZ
+  int firstLayer = 0;        // its samples' layers in the array
+  std::string why;           // when off: why (for the header)
 };
 
 // Poisson taps as the uniform array `name` (name[0], name[1], ...).

@@ -43,7 +43,8 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   float a = softRotation(gl_FragCoord.xy);
   mat2 turn = softTapTurn(a);
 #ifdef PCSS
-  float near = uSoftDepthRange[i].x, tanHalf = uSoftTanHalfFov[i], R = uSoftRadius[i];
+  // The region for a blocker at the nearest caster (no blocker is nearer), not on the near plane.
+  float near = uSoftCasterNear[i], tanHalf = uSoftTanHalfFov[i], R = uSoftRadius[i];
   float search = softPcssSearchUv(R, r.z, near, tanHalf, uMaxSearch);
   vec2 found = blockerSearch(i, r.uv, r.z, plane, bias, search, turn);  // (mean distance, count)
   if (found.y == 0.0) return softHorizon(i, worldPos, N);  // nothing can hide the light: no filter paid

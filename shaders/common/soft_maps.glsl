@@ -15,6 +15,7 @@ uniform mat4 uSoftView[MAX_LIGHTS];        // the centre camera's view
 uniform float uSoftRadius[MAX_LIGHTS];     // R
 uniform float uSoftTanHalfFov[MAX_LIGHTS];
 uniform vec2 uSoftDepthRange[MAX_LIGHTS];  // near, far
+uniform float uSoftCasterNear[MAX_LIGHTS]; // the nearest caster along the axis (>= near)
 uniform vec3 uSoftSamples[SOFT_MAX_SAMPLES];  // unit-ball points in the light's view space
 uniform int uSoftSampleCount;
 uniform float uSoftMapSize;

@@ -300,3 +300,31 @@ TEST_CASE("soft_shadows: the depth range a light camera needs for the scene") {
   CHECK(inside.y == doctest::Approx(1.02f));
   CHECK_THROWS_AS(depthRange(view, Aabb{}, 0.05f), std::invalid_argument);
 }
+
+TEST_CASE("soft_shadows: the nearest caster to a light camera bounds the blocker search") {
+  // Looking down -z from (0, 0, 10): a caster box [-1,1] x [-1,1] x [2,3] (distance 7 .. 8), a
+  // receiver that does not cast nearer still ([-5,5] x [-5,5] x [4,5], distance 5 .. 6), and a
+  // caster farther off (distance 9 .. 11): the nearest caster is 7 away, not the scene's 5.
+  const glm::mat4 view = glm::lookAt(glm::vec3(0, 0, 10), glm::vec3(0), glm::vec3(0, 1, 0));
+  auto box = [](glm::vec3 lo, glm::vec3 hi) {
+    Aabb b;
+    b.extend(lo);
+    b.extend(hi);
+    return b;
+  };
+  const std::vector<Aabb> boxes{box({-1, -1, 2}, {1, 1, 3}), box({-5, -5, 4}, {5, 5, 5}),
+                                box(glm::vec3(-1), glm::vec3(1))};
+  const std::vector<char> casts{1, 0, 1};
+  CHECK(nearestCasterDepth(view, boxes, casts, 0.05f) == doctest::Approx(7.0f));
+  const std::vector<char> all{1, 1, 1};
+  CHECK(nearestCasterDepth(view, boxes, all, 0.05f) == doctest::Approx(5.0f));
+  // A caster around the light, or none at all: minNear.
+  CHECK(nearestCasterDepth(view, std::vector<Aabb>{box({-1, -1, 9}, {1, 1, 11})}, std::vector<char>{1}, 0.05f) ==
+        doctest::Approx(0.05f));
+  const std::vector<char> none{0, 0, 0};
+  CHECK(nearestCasterDepth(view, boxes, none, 0.05f) == doctest::Approx(0.05f));
+  // The search region for a receiver 10 away, R = 0.5, tan(fov/2) = 1: from the caster's 7, not
+  // from a near plane at 0.05 (which the 0.08 cap would cut).
+  CHECK(pcssSearchRadiusUv(0.5f, 10.0f, 7.0f, 1.0f, 0.08f) == doctest::Approx(0.5f * 3.0f / (2.0f * 7.0f * 10.0f)));
+  CHECK_THROWS_AS(nearestCasterDepth(view, boxes, std::vector<char>{1}, 0.05f), std::invalid_argument);
+}
