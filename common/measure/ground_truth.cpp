@@ -465,7 +465,24 @@ ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& li
       alignas(64) int valid[16];
       int queued = 0;
       auto flush = [&] {
-        for (int q = queued; q < 16; ++q) valid[q] = 0;
+        // The lanes left out still hold finite rays: Embree's AVX2 kernels (two 8-wide halves of
+        // the packet) assert on ray.valid() over lanes that were never written, an abort that came
+        // and went with whatever the stack held (measure.ground_truth's 1x1 view, 4 samples).
+        for (int q = queued; q < 16; ++q) {
+          valid[q] = 0;
+          packet.org_x[q] = origin.x;
+          packet.org_y[q] = origin.y;
+          packet.org_z[q] = origin.z;
+          packet.dir_x[q] = n.x;
+          packet.dir_y[q] = n.y;
+          packet.dir_z[q] = n.z;
+          packet.tnear[q] = 0.0f;
+          packet.tfar[q] = 0.0f;
+          packet.time[q] = 0.0f;
+          packet.mask[q] = 0u;
+          packet.id[q] = 0;
+          packet.flags[q] = 0;
+        }
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         rtcOccluded16(valid, scene, &context, &packet);
