@@ -464,24 +464,27 @@ ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& li
       alignas(64) RTCRay16 packet;
       alignas(64) int valid[16];
       int queued = 0;
+      auto setLane = [&](int q, const glm::vec3& dir, float tfar, unsigned mask) {
+        packet.org_x[q] = origin.x;
+        packet.org_y[q] = origin.y;
+        packet.org_z[q] = origin.z;
+        packet.dir_x[q] = dir.x;
+        packet.dir_y[q] = dir.y;
+        packet.dir_z[q] = dir.z;
+        packet.tnear[q] = 0.0f;
+        packet.tfar[q] = tfar;
+        packet.time[q] = 0.0f;
+        packet.mask[q] = mask;
+        packet.id[q] = 0;
+        packet.flags[q] = 0;
+      };
       auto flush = [&] {
         // The lanes left out still hold finite rays: Embree's AVX2 kernels (two 8-wide halves of
         // the packet) assert on ray.valid() over lanes that were never written, an abort that came
         // and went with whatever the stack held (measure.ground_truth's 1x1 view, 4 samples).
         for (int q = queued; q < 16; ++q) {
           valid[q] = 0;
-          packet.org_x[q] = origin.x;
-          packet.org_y[q] = origin.y;
-          packet.org_z[q] = origin.z;
-          packet.dir_x[q] = n.x;
-          packet.dir_y[q] = n.y;
-          packet.dir_z[q] = n.z;
-          packet.tnear[q] = 0.0f;
-          packet.tfar[q] = 0.0f;
-          packet.time[q] = 0.0f;
-          packet.mask[q] = 0u;
-          packet.id[q] = 0;
-          packet.flags[q] = 0;
+          setLane(q, n, 0.0f, 0u);
         }
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
@@ -521,18 +524,7 @@ ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& li
           }
           tfar -= eps;
           if (glm::dot(dir, n) <= 0.0f || tfar <= 0.0f) continue;  // below the horizon: hidden
-          packet.org_x[queued] = origin.x;
-          packet.org_y[queued] = origin.y;
-          packet.org_z[queued] = origin.z;
-          packet.dir_x[queued] = dir.x;
-          packet.dir_y[queued] = dir.y;
-          packet.dir_z[queued] = dir.z;
-          packet.tnear[queued] = 0.0f;
-          packet.tfar[queued] = tfar;
-          packet.time[queued] = 0.0f;
-          packet.mask[queued] = 0xFFFFFFFFu;
-          packet.id[queued] = 0;
-          packet.flags[queued] = 0;
+          setLane(queued, dir, tfar, 0xFFFFFFFFu);
           valid[queued] = -1;
           if (++queued == 16) flush();
         }
