@@ -198,6 +198,63 @@ TEST_CASE("psm cone: boundary points the extremes miss still shape the cone") {
   }
 }
 
+TEST_CASE("psm cone: thousands of points from an apex (sampled core set) hold every point and are optimal") {
+  // Clouds of 400 to 6,000 points around random centres, 1e-9 to 0.13 rad across, a random apex:
+  // the path of enclosingConeFrom that starts from a sample and scans the raw directions. Sound:
+  // every direction within the half-angle. Optimal: the brute force over the points near the
+  // boundary (any cone holding all points holds those) finds no narrower cone. The depth range
+  // is exactly the least and greatest dot(p - apex, axis).
+  std::mt19937_64 rng(shadowlab::test::seedFor("psm cone sampled"));
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<glm::dvec3> core;
+  int compared = 0;
+  for (int i = 0; i < 40; ++i) {
+    const glm::dvec3 apex(g(rng) * 10.0, g(rng) * 10.0, g(rng) * 10.0);
+    const glm::dvec3 centre = glm::normalize(glm::dvec3(g(rng), g(rng), g(rng)));
+    const double spread = std::pow(10.0, -9.0 + 9.0 * (i % 10) / 10.0), dist = std::pow(10.0, 1 + i % 4);
+    const int n = 400 + (i * 1531) % 5600;
+    std::vector<glm::dvec3> pts;
+    for (int k = 0; k < n; ++k) {
+      glm::dvec3 dir = centre + spread * glm::dvec3(g(rng), g(rng), g(rng));
+      if (i % 3 == 0 && k % 97 == 0) dir = centre + 2.5 * spread * glm::normalize(glm::dvec3(g(rng), g(rng), g(rng)));
+      pts.push_back(apex + dir * dist * (1.0 + 0.5 * std::abs(g(rng))));
+    }
+    const ConeFit f = enclosingConeFrom(apex, pts, core);
+    REQUIRE(f.bad == std::numeric_limits<std::size_t>::max());
+    REQUIRE(f.cone.valid);
+    double worst = 0.0, lo = 1e300, hi = -1e300;
+    std::vector<glm::dvec3> boundary;
+    for (const glm::dvec3& p : pts) {
+      const glm::dvec3 d = p - apex;
+      const double ang = std::atan2(glm::length(glm::cross(f.cone.axis, d)), glm::dot(f.cone.axis, d));
+      worst = std::max(worst, ang - f.cone.halfAngle);
+      if (ang >= f.cone.halfAngle * (1.0 - 2e-3)) boundary.push_back(d);
+      lo = std::min(lo, glm::dot(d, f.cone.axis));
+      hi = std::max(hi, glm::dot(d, f.cone.axis));
+    }
+    CHECK(worst <= 1e-9 * f.cone.halfAngle + 1e-15);
+    CHECK(f.minAlong == lo);
+    CHECK(f.maxAlong == hi);
+    if (boundary.size() > 60) continue;  // the brute force is O(n^4)
+    ++compared;
+    const Cone brute = smallestEnclosingConeBruteForce(boundary);
+    CHECK(std::abs(f.cone.halfAngle - brute.halfAngle) <= 1e-7 * brute.halfAngle + 1e-15);
+    const Cone same = smallestEnclosingCone(std::vector<glm::dvec3>(boundary));
+    CHECK(std::abs(same.halfAngle - brute.halfAngle) <= 1e-7 * brute.halfAngle + 1e-15);
+  }
+  CHECK(compared >= 30);
+  // A point at the apex, or a NaN one, is reported by index (fitLightCamera: no cone can be aimed).
+  std::vector<glm::dvec3> pts(1000, glm::dvec3(0.0, 0.0, -5.0));
+  for (std::size_t k = 0; k < pts.size(); ++k) pts[k].x = 1e-3 * double(k % 13);
+  pts[613] = glm::dvec3(0.0);
+  CHECK(enclosingConeFrom(glm::dvec3(0.0), pts, core).bad == 613);
+  pts[613] = glm::dvec3(std::numeric_limits<double>::quiet_NaN());
+  CHECK(enclosingConeFrom(glm::dvec3(0.0), pts, core).bad == 613);
+  CHECK_THROWS_WITH_AS(smallestEnclosingCone(pts), doctest::Contains("direction 613"), std::invalid_argument);
+  pts[613] = glm::dvec3(0.0, 0.0, -5.0);
+  CHECK(enclosingConeFrom(glm::dvec3(0.0), pts, core).bad == std::numeric_limits<std::size_t>::max());
+}
+
 TEST_CASE("psm cone: 16 and more directions outside any hemisphere, or one bad, are reported") {
   std::vector<glm::dvec3> d;
   for (int k = 0; k < 30; ++k) {

@@ -122,6 +122,10 @@ void shuffleFrom(std::span<glm::dvec3> p, std::size_t from, std::uint64_t& s) {
     std::swap(p[i], p[from + std::size_t(((next(s) >> 32) * std::uint64_t(i + 1 - from)) >> 32)]);
 }
 
+// d / |d| for a finite non-zero d, the same digits wherever it is taken (the core set compares
+// directions for equality).
+inline glm::dvec3 unitOf(const glm::dvec3& d) { return d * (1.0 / std::sqrt(glm::dot(d, d))); }
+
 // all[i] / |all[i]| (unitChecked names a NaN, infinite or zero one).
 inline glm::dvec3 unitAt(std::span<const glm::dvec3> all, std::size_t i) {
   const glm::dvec3 v = all[i];
@@ -129,7 +133,7 @@ inline glm::dvec3 unitAt(std::span<const glm::dvec3> all, std::size_t i) {
   // One test for NaN, infinity and zero before the division.
   if (!(len2 > 0.0 && len2 < std::numeric_limits<double>::infinity())) [[unlikely]]
     return unitChecked(all[i], i);
-  return v * (1.0 / std::sqrt(len2));
+  return unitOf(v);
 }
 
 // Normalises every direction and moves the ones most likely to be on the cone's boundary to the
@@ -162,8 +166,8 @@ std::size_t normaliseLeadExtremes(std::span<glm::dvec3> p) {
       const glm::dvec3 w = unitChecked(p[i], i);
       ux = w.x, uy = w.y, uz = w.z;
     } else {
-      const double inv = 1.0 / std::sqrt(len2);
-      ux = v.x * inv, uy = v.y * inv, uz = v.z * inv;
+      const glm::dvec3 w = unitOf(v);
+      ux = w.x, uy = w.y, uz = w.z;
     }
     p[i].x = ux, p[i].y = uy, p[i].z = uz;
     const double x = ux * e1.x + uy * e1.y + uz * e1.z, y = ux * e2.x + uy * e2.y + uz * e2.z;
@@ -210,28 +214,157 @@ Ball coreSetBall(std::span<glm::dvec3> p, std::uint64_t& s) {
   return welzl(p);
 }
 
-}  // namespace
-
-Cone smallestEnclosingCone(std::span<glm::dvec3> all) {
-  const std::size_t n = all.size();
-  if (n == 0) return Cone{};
-  std::uint64_t s = 0x9E3779B97F4A7C15ull ^ n;
-  Ball b;
-  if (n < 16) {  // few directions: normalise, shuffle, Welzl
-    for (std::size_t i = 0; i < n; ++i) all[i] = unitAt(all, i);
-    shuffleFrom(all, 0, s);
-    b = welzl(all);
-  } else {
-    b = coreSetBall(all, s);
+// The widest direction of a front-facing set: max |a x d|^2 / (a.d)^2 (no root or division per
+// point), tracked as a point index; a division only when a new widest one is found.
+struct Widest {
+  double ratio = -1.0;
+  glm::dvec3 at{0.0};
+  void take(const glm::dvec3& d, double along, double across2) {
+    if (across2 > ratio * along * along) {
+      ratio = across2 / (along * along);
+      at = d;
+    }
   }
+};
+
+// The first point at the apex or not finite: the cone cannot be aimed (fitLightCamera) or the
+// direction is named (smallestEnclosingCone).
+bool badDirection(const glm::dvec3& d) {
+  const double len2 = glm::dot(d, d);
+  return !(len2 > 0.0 && len2 < std::numeric_limits<double>::infinity());
+}
+
+// Every direction (points - apex) normalised into core, then Welzl over all of it: few points,
+// or the core set did not settle in kRounds (the points need not fit in a hemisphere).
+ConeFit coneOverAll(const glm::dvec3& apex, std::span<const glm::dvec3> points, std::vector<glm::dvec3>& core,
+                    std::uint64_t& s) {
+  const std::size_t n = points.size();
+  core.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    core[i] = points[i] - apex;
+    if (badDirection(core[i])) {
+      ConeFit f;
+      f.bad = i;
+      return f;
+    }
+  }
+  Ball b;
+  if (n < 16) {
+    for (std::size_t i = 0; i < n; ++i) core[i] = unitAt(core, i);
+    shuffleFrom(core, 0, s);
+    b = welzl(core);
+  } else {
+    b = coreSetBall(core, s);
+  }
+  ConeFit f;
   const double cl = glm::length(b.c);
   if (!(cl > 1e-9)) {
-    Cone c = coneFromAxis(all[0], all);
-    c.valid = false;
-    return c;
+    f.cone = coneFromAxis(core[0], core);
+    f.cone.valid = false;
+  } else {
+    // The half-angle is measured, not derived from the radius, so the cone holds every input.
+    f.cone = coneFromAxis(b.c / cl, core);
   }
-  // The half-angle is measured, not derived from the radius, so the cone holds every input.
-  return coneFromAxis(b.c / cl, all);
+  for (const glm::dvec3& p : points) {
+    const double z = glm::dot(p - apex, f.cone.axis);
+    f.minAlong = std::min(f.minAlong, z);
+    f.maxAlong = std::max(f.maxAlong, z);
+  }
+  return f;
+}
+
+}  // namespace
+
+// Many points: the cone of a sample (every stride-th direction, normalised) is grown by the
+// directions outside it until one scan over the points finds none outside. The scan works on the
+// raw directions d = p - apex with no root or division: d is inside the cap of axis a and
+// tan^2 t when a.d > 0 and |a x d|^2 <= tan^2 t (a.d)^2 (cross products keep their digits for the
+// 1e-9 rad cones of far lights, where 1 - cos would not). The scan that finds none outside has
+// measured the widest direction and the extent along the axis on the way.
+ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> points, std::vector<glm::dvec3>& core) {
+  constexpr std::size_t kSample = 96;
+  constexpr int kRounds = 16;
+  const std::size_t n = points.size();
+  if (n == 0) return ConeFit{};
+  std::uint64_t s = 0x9E3779B97F4A7C15ull ^ n;
+  if (n < 4 * kSample) return coneOverAll(apex, points, core, s);
+  core.clear();
+  const std::size_t stride = n / kSample;
+  for (std::size_t i = 0; i < n; i += stride) {
+    const glm::dvec3 d = points[i] - apex;
+    if (badDirection(d)) {
+      ConeFit f;
+      f.bad = i;
+      return f;
+    }
+    core.push_back(d);
+  }
+  Ball b = coreSetBall(core, s);  // normalises the sample
+  for (int round = 0; round < kRounds; ++round) {
+    const double cl = glm::length(b.c);
+    if (!(cl > 1e-9)) break;
+    const glm::dvec3 a = b.c / cl;
+    // The cap's tan^2 measured on the core's own points (all inside the ball): exact digits.
+    Widest capped;
+    bool front = true;
+    for (const glm::dvec3& u : core) {
+      const double along = glm::dot(a, u);
+      front = front && along > 0.0;
+      capped.take(u, along, glm::dot(glm::cross(a, u), glm::cross(a, u)));
+    }
+    if (!front) break;  // the core's ball reaches past a hemisphere: Welzl over every direction
+    const double limit = capped.ratio * (1.0 + 1e-10) + 1e-30;
+    const std::size_t before = core.size();
+    Widest widest;
+    double lo = std::numeric_limits<double>::max(), hi = -std::numeric_limits<double>::max();
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::dvec3 d = points[i] - apex;
+      const double along = glm::dot(d, a);
+      const glm::dvec3 c = glm::cross(a, d);
+      const double across2 = glm::dot(c, c);
+      if (along > 0.0 && across2 <= limit * along * along) [[likely]] {
+        widest.take(d, along, across2);
+        lo = std::min(lo, along);
+        hi = std::max(hi, along);
+        continue;
+      }
+      if (badDirection(d)) [[unlikely]] {
+        ConeFit f;
+        f.bad = i;
+        return f;
+      }
+      // A direction already in the core (its own copy, or a key point found twice by the clipper)
+      // fails only by rounding: the cap's ratio and this one are computed differently. Adding it
+      // again would give Welzl a pair of equal points.
+      const glm::dvec3 u = unitOf(d);
+      if (std::find(core.begin(), core.end(), u) == core.end()) {
+        core.push_back(u);
+        continue;
+      }
+      widest.take(d, along, across2);  // it is measured like every other one
+      lo = std::min(lo, along);
+      hi = std::max(hi, along);
+    }
+    if (core.size() == before) {
+      ConeFit f;
+      f.cone.axis = a;
+      f.cone.halfAngle = std::atan2(glm::length(glm::cross(a, widest.at)), glm::dot(a, widest.at));
+      f.cone.valid = f.cone.halfAngle < std::numbers::pi / 2.0 - 1e-9;
+      f.minAlong = lo;
+      f.maxAlong = hi;
+      return f;
+    }
+    shuffleFrom(core, 0, s);  // Welzl's expected linear time over the core
+    b = welzl(core);
+  }
+  return coneOverAll(apex, points, core, s);
+}
+
+Cone smallestEnclosingCone(std::span<const glm::dvec3> directions) {
+  thread_local std::vector<glm::dvec3> core;
+  const ConeFit f = enclosingConeFrom(glm::dvec3(0.0), directions, core);
+  if (f.bad < directions.size()) unitChecked(directions[f.bad], f.bad);  // names it and throws
+  return f.cone;
 }
 
 Cone smallestEnclosingConeBruteForce(std::span<const glm::dvec3> dirs) {

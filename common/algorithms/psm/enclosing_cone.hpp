@@ -5,7 +5,10 @@
 // boundary meets the unit sphere in the cone's circle, whose centre is the ball's centre c, so
 // axis = c / |c|. The ball comes from Welzl's move-to-front recursion, written as nested loops
 // (expected linear time over a random order).
+#include <cstddef>
+#include <limits>
 #include <span>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -18,10 +21,21 @@ struct Cone {
 };
 
 // Smallest cone holding every direction (need not be unit; zero or non-finite ones throw
-// std::invalid_argument). Normalises and shuffles `directions` in place with a fixed seed, so the
-// result is deterministic and no memory is allocated. valid is false when the directions do not
-// fit in an open hemisphere (half-angle >= pi/2 - 1e-9).
-Cone smallestEnclosingCone(std::span<glm::dvec3> directions);
+// std::invalid_argument naming the index). Deterministic (a fixed seed); the directions are not
+// changed, and a per-thread buffer for the core set is reused. valid is false when the directions
+// do not fit in an open hemisphere (half-angle >= pi/2 - 1e-9).
+Cone smallestEnclosingCone(std::span<const glm::dvec3> directions);
+
+// The same cone from an apex over points (the directions p - apex, no copy of them made), with
+// the least and greatest distance along its axis, dot(p - apex, axis), measured on the way (the
+// light camera's depth range). core: scratch for the core set (kept warm, no allocation then).
+// bad < points.size(): that point is at the apex or not finite, and nothing else is meaningful.
+struct ConeFit {
+  Cone cone;
+  double minAlong = std::numeric_limits<double>::max(), maxAlong = -std::numeric_limits<double>::max();
+  std::size_t bad = std::numeric_limits<std::size_t>::max();
+};
+ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> points, std::vector<glm::dvec3>& core);
 
 // The same optimum by exhaustive search over every cone through 1, 2 or 3 of the directions:
 // O(n^4), for tests and for students checking their own on small sets.

@@ -172,18 +172,22 @@ PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts
     return fit;
   }
   // Finite light (in front or behind): smallest cone from the light over the key points.
-  scratch.resize(pts.size());
-  bool atLight = false;  // a receiver exactly at the light: no cone can be aimed
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const glm::dvec3 d = pts[i] - light.position;
-    scratch[i] = d;
-    atLight = atLight || !(glm::dot(d, d) > 0.0);
+  ConeFit cf;
+  if (opt.steps.cone) {  // the student's cone gets the directions; the depth range is measured below
+    scratch.resize(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      scratch[i] = pts[i] - light.position;
+      if (!(glm::dot(scratch[i], scratch[i]) > 0.0)) cf.bad = i;
+    }
+    if (cf.bad >= pts.size()) cf.cone = opt.steps.cone(scratch);
+  } else {
+    cf = enclosingConeFrom(light.position, pts, scratch);
   }
-  if (atLight) {
+  if (cf.bad < pts.size()) {  // a receiver exactly at the light (or not finite): no cone can be aimed
     fit.status = FitStatus::ConeTooWide;
     return fit;
   }
-  fit.cone = opt.steps.cone ? opt.steps.cone(scratch) : smallestEnclosingCone(scratch);
+  fit.cone = cf.cone;
   if (!fit.cone.valid || !(fit.cone.halfAngle <= opt.maxHalfAngle || opt.capWideCones)) {
     fit.status = FitStatus::ConeTooWide;
     return fit;
@@ -192,8 +196,11 @@ PsmFit fitImpl(const PostProjectiveLight& light, std::span<const glm::dvec3> pts
   cam.axis = fit.cone.axis;
   cam.halfAngle = std::min(fit.cone.halfAngle, opt.maxHalfAngle) * (1.0 + kAngleMargin) + 1e-12;
   cam.view = lookAlong(cam.eye, cam.axis);
-  // Depth range over the points the map holds (all of them, unless a capped cone left some out).
-  const auto [zMin, zMax] = depthAlongAxis(pts, cam, fit.cone.halfAngle > opt.maxHalfAngle);
+  // Depth range over the points the map holds: all of them (measured with the cone), unless a
+  // capped cone (or the student's) left some out.
+  const bool capped = fit.cone.halfAngle > opt.maxHalfAngle;
+  const auto [zMin, zMax] =
+      capped || opt.steps.cone ? depthAlongAxis(pts, cam, capped) : std::pair<double, double>(cf.minAlong, cf.maxAlong);
   if (!(zMin > 0.0) || zMin > zMax) {  // a capped cone holding no point: nothing to aim at
     fit.status = FitStatus::ConeTooWide;
     return fit;
