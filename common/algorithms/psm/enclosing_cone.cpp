@@ -333,18 +333,28 @@ ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> po
         f.bad = i;
         return f;
       }
-      // A direction already in the core (its own copy, or a key point found twice by the clipper)
-      // fails only by rounding: the cap's ratio and this one are computed differently. Adding it
-      // again would give Welzl a pair of equal points.
-      const glm::dvec3 u = unitOf(d);
-      if (std::find(core.begin(), core.end(), u) == core.end()) {
-        core.push_back(u);
-        continue;
+      // Outside, or a direction already in the core failing only by rounding (the cap's ratio
+      // was taken on its unit vector, this one on the raw direction); such a one is measured like
+      // every other, and dropped below.
+      if (along > 0.0) {
+        widest.take(d, along, across2);
+        lo = std::min(lo, along);
+        hi = std::max(hi, along);
       }
-      widest.take(d, along, across2);  // it is measured like every other one
-      lo = std::min(lo, along);
-      hi = std::max(hi, along);
+      core.push_back(unitOf(d));
     }
+    // Keep only the directions new to the core (Welzl on pairs of equal points grew the cap): both
+    // parts sorted, the new part without its repeats and without what the core holds.
+    auto less = [](const glm::dvec3& p, const glm::dvec3& q) {
+      return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : p.z < q.z);
+    };
+    const auto old = core.begin() + std::ptrdiff_t(before);
+    std::sort(core.begin(), old, less);
+    std::sort(old, core.end(), less);
+    auto kept = old;
+    for (auto it = old; it != core.end(); ++it)
+      if ((kept == old || *(kept - 1) != *it) && !std::binary_search(core.begin(), old, *it, less)) *kept++ = *it;
+    core.erase(kept, core.end());
     if (core.size() == before) {
       ConeFit f;
       f.cone.axis = a;
