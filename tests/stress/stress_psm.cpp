@@ -92,7 +92,8 @@ glm::dvec3 randomUnit(Rng& r) {
   return {s * std::cos(a), s * std::sin(a), z};
 }
 
-Config makeConfig(std::uint64_t seed, std::uint64_t index) {
+// boxCount > 0: that many receiver boxes instead of 1 to 4 (the same camera and light).
+Config makeConfig(std::uint64_t seed, std::uint64_t index, int boxCount = 0) {
   Config c;
   c.seed = seed;
   c.index = index;
@@ -149,8 +150,8 @@ Config makeConfig(std::uint64_t seed, std::uint64_t index) {
     }
     default: c.light = glm::dvec4(c.eye - fwd * r.logUniform(c.zn * 0.01, c.zf), 1.0); break;
   }
-  const int nb = 1 + r.below(4);
-  for (int tries = 0; tries < 20 && static_cast<int>(c.boxes.size()) < nb; ++tries) {
+  const int drawn = 1 + r.below(4), nb = boxCount > 0 ? boxCount : drawn;
+  for (int tries = 0; tries < std::max(20, 5 * nb) && static_cast<int>(c.boxes.size()) < nb; ++tries) {
     const int kind = r.below(3);
     const double depth = r.logUniform(c.zn, c.zf);
     glm::dvec3 centre, half;
@@ -471,4 +472,56 @@ TEST_CASE("stress: PSM light cameras, cone, cube faces and bias over random conf
   if (s.failures) FAIL_CHECK("first failing configuration per invariant:\n" << s.firstFailure);
   CHECK(s.failures == 0);
   CHECK(s.configs == (std::getenv("SHADOWLAB_STRESS_ONLY") ? 1u : count));
+}
+
+TEST_CASE("stress: the same invariants over 100 to 400 receiver boxes (the cone from a sampled core)") {
+  // The cone takes another path from 384 key points on (a sample's cap grown by the points outside
+  // it); the configurations above have at most 4 boxes. Every invariant of runOne, and the cone
+  // optimal: no narrower cone through the key points near its boundary (brute force over them).
+  const std::uint64_t seed = shadowlab::test::seedFor("psm-stress-many");
+  const std::uint64_t count = std::max<std::uint64_t>(envCount("SHADOWLAB_STRESS_CONFIGS", 100000) / 200, 20);
+  Summary s;
+  PsmFitter fitter;
+  std::uint64_t sampled = 0, optimal = 0;
+  double worstGap = 0.0;
+  std::string firstGap;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const Config c = makeConfig(seed, i, 100 + int(i % 301));
+    try {
+      runOne(c, s);
+      const glm::dmat3 R = glm::mat3_cast(c.rot);
+      glm::dmat4 view(glm::transpose(R));
+      view[3] = glm::dvec4(-(glm::transpose(R) * c.eye), 1.0);
+      const PsmFit& fit = fitter.fit(makeCamera(view, c.fovY, c.aspect, c.zn, c.zf), c.light, c.boxes);
+      const auto post = fitter.postKeyPoints();
+      if (post.size() < 384 || fit.status != FitStatus::Ok || fit.light.kind == PostLightKind::Direction) continue;
+      ++sampled;
+      std::vector<glm::dvec3> boundary;
+      for (const glm::dvec3& p : post) {
+        const glm::dvec3 d = p - fit.light.position;
+        const double ang = std::atan2(glm::length(glm::cross(fit.cone.axis, d)), glm::dot(fit.cone.axis, d));
+        if (ang >= fit.cone.halfAngle * (1.0 - 1e-6)) boundary.push_back(d);  // the optimum touches its support points
+      }
+      if (boundary.size() > 60) continue;  // the brute force is O(n^4)
+      ++optimal;
+      const Cone brute = smallestEnclosingConeBruteForce(boundary);
+      const double gap = std::abs(fit.cone.halfAngle - brute.halfAngle) / std::max(brute.halfAngle, 1e-300);
+      worstGap = std::max(worstGap, gap);
+      if (!(std::abs(fit.cone.halfAngle - brute.halfAngle) <= 1e-7 * brute.halfAngle + 1e-12) && firstGap.empty())
+        firstGap = describe(c) + "  cone " + std::to_string(fit.cone.halfAngle) + " rad, brute force over the " +
+                   std::to_string(boundary.size()) + " boundary points " + std::to_string(brute.halfAngle) + " rad\n";
+    } catch (const std::exception& e) {
+      ++s.failures;
+      if (s.firstFailure.empty()) s.firstFailure = describe(c) + "  threw: " + e.what() + "\n";
+    }
+  }
+  MESSAGE("[psm stress, many boxes] " << s.configs << " configurations, " << s.checks << " checks, " << s.failures
+                                      << " failing; " << sampled << " cones from 384+ key points, " << optimal
+                                      << " of them against the brute force, worst gap " << worstGap << " (rel)");
+  if (s.failures) FAIL_CHECK("first failing configuration:\n" << s.firstFailure);
+  CHECK(s.failures == 0);
+  CHECK_MESSAGE(firstGap.empty(), firstGap);
+  CHECK(s.configs == count);
+  CHECK(sampled * 4 >= count);  // the path is exercised
+  CHECK(optimal * 2 >= sampled);
 }
