@@ -60,6 +60,19 @@ std::uint64_t next(std::uint64_t& s) {
   return s;
 }
 
+// The widest direction of a front-facing set: max |a x d|^2 / (a.d)^2 (no root or division per
+// point); a division only when a new widest one is found.
+struct Widest {
+  double ratio = -1.0;
+  glm::dvec3 at{0.0};
+  void take(const glm::dvec3& d, double along, double across2) {
+    if (across2 > ratio * along * along) {
+      ratio = across2 / (along * along);
+      at = d;
+    }
+  }
+};
+
 Cone coneFromAxis(const glm::dvec3& axis, std::span<const glm::dvec3> units) {
   Cone cone;
   cone.axis = axis;
@@ -67,21 +80,16 @@ Cone coneFromAxis(const glm::dvec3& axis, std::span<const glm::dvec3> units) {
   // taken once, for the widest direction: in front of the axis the angle grows with
   // |a x u|^2 / (a.u)^2 (no root, no atan per direction); anything at or past 90 degrees is
   // measured on its own.
-  double worstRatio = -1.0, worstBehind = 0.0;
-  glm::dvec3 widest = axis;
+  Widest widest;
+  widest.at = axis;
+  double worstBehind = 0.0;
   for (const auto& u : units) {
     const glm::dvec3 c = glm::cross(axis, u);
     const double d = glm::dot(axis, u), c2 = glm::dot(c, c);
-    if (d > 0.0) {
-      if (c2 > worstRatio * d * d) {
-        worstRatio = c2 / (d * d);
-        widest = u;
-      }
-    } else {
-      worstBehind = std::max(worstBehind, std::atan2(std::sqrt(c2), d));
-    }
+    if (d > 0.0) widest.take(u, d, c2);
+    else worstBehind = std::max(worstBehind, std::atan2(std::sqrt(c2), d));
   }
-  const double front = std::atan2(glm::length(glm::cross(axis, widest)), glm::dot(axis, widest));
+  const double front = std::atan2(glm::length(glm::cross(axis, widest.at)), glm::dot(axis, widest.at));
   cone.halfAngle = std::max(front, worstBehind);
   cone.valid = cone.halfAngle < std::numbers::pi / 2.0 - 1e-9;
   return cone;
@@ -213,19 +221,6 @@ Ball coreSetBall(std::span<glm::dvec3> p, std::uint64_t& s) {
   shuffleFrom(p, head, s);
   return welzl(p);
 }
-
-// The widest direction of a front-facing set: max |a x d|^2 / (a.d)^2 (no root or division per
-// point), tracked as a point index; a division only when a new widest one is found.
-struct Widest {
-  double ratio = -1.0;
-  glm::dvec3 at{0.0};
-  void take(const glm::dvec3& d, double along, double across2) {
-    if (across2 > ratio * along * along) {
-      ratio = across2 / (along * along);
-      at = d;
-    }
-  }
-};
 
 // The first point at the apex or not finite: the cone cannot be aimed (fitLightCamera) or the
 // direction is named (smallestEnclosingCone).
