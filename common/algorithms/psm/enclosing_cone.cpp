@@ -134,14 +134,18 @@ void shuffleFrom(std::span<glm::dvec3> p, std::size_t from, std::uint64_t& s) {
 // directions for equality).
 inline glm::dvec3 unitOf(const glm::dvec3& d) { return d * (1.0 / std::sqrt(glm::dot(d, d))); }
 
+// The first point at the apex or not finite: the cone cannot be aimed (fitLightCamera) or the
+// direction is named (smallestEnclosingCone).
+bool badDirection(const glm::dvec3& d) {
+  const double len2 = glm::dot(d, d);
+  return !(len2 > 0.0 && len2 < std::numeric_limits<double>::infinity());
+}
+
 // all[i] / |all[i]| (unitChecked names a NaN, infinite or zero one).
 inline glm::dvec3 unitAt(std::span<const glm::dvec3> all, std::size_t i) {
-  const glm::dvec3 v = all[i];
-  const double len2 = glm::dot(v, v);
-  // One test for NaN, infinity and zero before the division.
-  if (!(len2 > 0.0 && len2 < std::numeric_limits<double>::infinity())) [[unlikely]]
+  if (badDirection(all[i])) [[unlikely]]  // one test for NaN, infinity and zero before the division
     return unitChecked(all[i], i);
-  return unitOf(v);
+  return unitOf(all[i]);
 }
 
 // Normalises every direction and moves the ones most likely to be on the cone's boundary to the
@@ -222,13 +226,6 @@ Ball coreSetBall(std::span<glm::dvec3> p, std::uint64_t& s) {
   return welzl(p);
 }
 
-// The first point at the apex or not finite: the cone cannot be aimed (fitLightCamera) or the
-// direction is named (smallestEnclosingCone).
-bool badDirection(const glm::dvec3& d) {
-  const double len2 = glm::dot(d, d);
-  return !(len2 > 0.0 && len2 < std::numeric_limits<double>::infinity());
-}
-
 // Every direction (points - apex) normalised into core, then Welzl over all of it: few points,
 // or the core set did not settle in kRounds (the points need not fit in a hemisphere).
 ConeFit coneOverAll(const glm::dvec3& apex, std::span<const glm::dvec3> points, std::vector<glm::dvec3>& core,
@@ -305,7 +302,8 @@ ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> po
     for (const glm::dvec3& u : core) {
       const double along = glm::dot(a, u);
       front = front && along > 0.0;
-      capped.take(u, along, glm::dot(glm::cross(a, u), glm::cross(a, u)));
+      const glm::dvec3 c = glm::cross(a, u);
+      capped.take(u, along, glm::dot(c, c));
     }
     if (!front) break;  // the core's ball reaches past a hemisphere: Welzl over every direction
     const double limit = capped.ratio * (1.0 + 1e-10) + 1e-30;
@@ -317,11 +315,13 @@ ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> po
       const double along = glm::dot(d, a);
       const glm::dvec3 c = glm::cross(a, d);
       const double across2 = glm::dot(c, c);
-      if (along > 0.0 && across2 <= limit * along * along) [[likely]] {
+      // Every point in front is measured: the scan that finds none outside is the last.
+      if (along > 0.0) [[likely]] {
         widest.take(d, along, across2);
         lo = std::min(lo, along);
         hi = std::max(hi, along);
-        continue;
+        if (across2 <= limit * along * along) [[likely]]
+          continue;
       }
       if (badDirection(d)) [[unlikely]] {
         ConeFit f;
@@ -329,13 +329,7 @@ ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> po
         return f;
       }
       // Outside, or a direction already in the core failing only by rounding (the cap's ratio
-      // was taken on its unit vector, this one on the raw direction); such a one is measured like
-      // every other, and dropped below.
-      if (along > 0.0) {
-        widest.take(d, along, across2);
-        lo = std::min(lo, along);
-        hi = std::max(hi, along);
-      }
+      // was taken on its unit vector, this one on the raw direction): dropped below.
       core.push_back(unitOf(d));
     }
     // Keep only the directions new to the core (Welzl on pairs of equal points grew the cap): both
