@@ -40,6 +40,15 @@ add_test(NAME gpu.technique.cascades_map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON
          -DNAME=csm_reuse -DPRESET=default -DMAPS=1 -DPASSES=1 -DREUSE=csm.reuse_maps
          -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
 set_tests_properties(gpu.technique.psm_map_reuse gpu.technique.cascades_map_reuse PROPERTIES LABELS gpu TIMEOUT 300)
+# Lesson 05's soft maps under a still spherical light: PCSS's one map, and the four maps of four
+# point lights on the sphere (one timed pass for the light's four).
+add_test(NAME gpu.technique.soft_map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows>
+         -DNAME=soft_reuse -DPRESET=contact_hardening -DMAPS=1 -DPASSES=1 -DREUSE=pcss.reuse_maps
+         -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
+add_test(NAME gpu.technique.many_map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows>
+         -DNAME=many_reuse -DPRESET=many_4 -DMAPS=4 -DROWS=1 -DREUSE=many.reuse_maps
+         -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
+set_tests_properties(gpu.technique.soft_map_reuse gpu.technique.many_map_reuse PROPERTIES LABELS gpu TIMEOUT 300)
 
 # The frame budget on a software renderer (a window under Xvfb), lesson 03.
 find_program(XVFB_RUN xvfb-run)

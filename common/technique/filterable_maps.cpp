@@ -46,7 +46,7 @@ void FilterableMaps::declare(ParamRegistry& r, const std::string& n) {
   } else {
     r.add(n + "exponent", &p_.exponent, 1, 88, "c of exp(c t): sharper and more overflow-prone as it grows");
   }
-  maps_.declare(r, n);
+  maps_.declare(r, n, false);  // the moments are drawn by its own pass
 }
 
 void FilterableMaps::init() {

@@ -16,7 +16,7 @@ void setTaps(const gl::Program& p, const std::string& name, const std::vector<gl
   for (std::size_t k = 0; k < taps.size(); ++k) p.set((name + "[" + std::to_string(k) + "]").c_str(), taps[k]);
 }
 
-void SoftMaps::declare(ParamRegistry& r, const std::string& n) {
+void SoftMaps::declare(ParamRegistry& r, const std::string& n, bool reuseSwitch) {
   r.addChoice(n + "map_size", &p_.mapSize, UniformShadowMaps::mapSizes(), "texels per side of each light sample's map");
   r.add(n + "bias.constant", &p_.bias, 0, 8, "depth bias in texels of world size at the receiver");
   r.add(n + "bias.slope", &p_.slopeBias, 0, 8, "depth bias in texels per unit of tan(theta)");
@@ -26,6 +26,8 @@ void SoftMaps::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "bias.offset_units", &p_.offsetUnits, 0, 16, "glPolygonOffset units in the depth pass");
   r.add(n + "bias.card_slope", &p_.cardSlopeBias, 0, 8, "bias.slope on two-sided materials (leaf cards)");
   r.add(n + "bias.card_normal_offset", &p_.cardNormalOffset, 0, 4, "bias.normal_offset on two-sided materials");
+  if (reuseSwitch)
+    r.add(n + "reuse_maps", &p_.reuseMaps, "keep the maps while nothing they depend on changes (a still light)");
 }
 
 int SoftMaps::mapSize() const { return std::stoi(UniformShadowMaps::mapSizes()[std::size_t(p_.mapSize)]); }
@@ -96,38 +98,57 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
   for (std::size_t i = 0; i < lights_.size(); ++i)
     if (!lights_[i].on && c.lights[i].enabled)
       stats.extra.push_back({"light" + std::to_string(i), "no soft shadow (" + lights_[i].why + ")"});
+  redrawn_ = false;
   if (!renderMaps) return;
   int layers = 0;
   for (const SoftLight& s : lights_) layers += s.on ? int(samples_.size()) : 0;
   const int size = mapSize();
   ensureArray(layers > 0 ? size : 1, std::max(layers, 1));
   const shadow::CasterBoxes boxes = c.scene.casterBoxes();
+  // Every sample's camera first: what the maps depend on, with the scene and the pass's settings.
+  std::vector<shadow::LightCamera> cameras;
+  PassKey key;
+  key << c.scene.revision() << size << arrayLayers_ << p_.offsetFactor << p_.offsetUnits;
+  for (const SoftLight& s : lights_) {
+    if (!s.on) continue;
+    const glm::mat3 toWorld = glm::transpose(glm::mat3(s.centre.view));
+    Light moved = s.spot;  // same axis and cone: the same rotation, moved by R s_k
+    for (const glm::vec3& sample : samples_) {
+      moved.position = s.spot.position + toWorld * (s.radius * sample);
+      cameras.push_back(shadow::spotCamera(moved, s.nearZ, s.farZ, boxes, true));
+      key << s.firstLayer << cameras.back().viewProj() << std::span<const char>(cameras.back().casters);
+      stats.culledCasters += cameras.back().culled;
+    }
+  }
+  stats.bytes += std::uint64_t(arraySize_) * std::uint64_t(arraySize_) * std::uint64_t(arrayLayers_) * 4;
+  redrawn_ = !(p_.reuseMaps && key == rendered_);
+  if (!redrawn_) {
+    stats.reusedMaps += int(cameras.size());
+    return;
+  }
+  rendered_ = std::move(key);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, size, size);
   glDepthMask(GL_TRUE);
   CasterOptions options;
+  std::size_t next = 0;
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     const SoftLight& s = lights_[i];
     if (!s.on) continue;
     auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
-    const glm::mat3 toWorld = glm::transpose(glm::mat3(s.centre.view));
-    Light moved = s.spot;  // same axis and cone: the same rotation, moved by R s_k
     for (std::size_t k = 0; k < samples_.size(); ++k) {
-      moved.position = s.spot.position + toWorld * (s.radius * samples_[k]);
-      const shadow::LightCamera camera = shadow::spotCamera(moved, s.nearZ, s.farZ, boxes, true);
+      const shadow::LightCamera& camera = cameras[next++];
       glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, array_.id(), 0, s.firstLayer + int(k));
       glClear(GL_DEPTH_BUFFER_BIT);
       stats.triangles += casters_.draw(c.scene, camera.viewProj(), camera.casters, options);
-      stats.culledCasters += camera.culled;
       stats.texels += std::uint64_t(size) * std::uint64_t(size);
     }
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
   glBindFramebuffer(GL_FRAMEBUFFER, c.frame.framebuffer);
   glViewport(0, 0, c.frame.width, c.frame.height);
-  stats.bytes += std::uint64_t(arraySize_) * std::uint64_t(arraySize_) * std::uint64_t(arrayLayers_) * 4;
 }
 
 // ==== 3. what the visibility shaders read (shaders/common/soft_maps.glsl) ========================

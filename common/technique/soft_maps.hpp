@@ -17,6 +17,7 @@
 #include "algorithms/light_cameras.hpp"
 #include "gl/shadow_map.hpp"
 #include "technique/casters.hpp"
+#include "technique/pass_key.hpp"
 #include "technique/technique.hpp"
 
 namespace shadowlab::tech {
@@ -39,6 +40,7 @@ struct SoftMapParams {
   // the solid receivers'.
   float cardSlopeBias = 0.5f;
   float cardNormalOffset = 0.25f;
+  bool reuseMaps = true;  // skip the depth passes when nothing they depend on changed (PassKey)
 };
 
 // One light as the soft techniques see it this frame.
@@ -60,11 +62,14 @@ class SoftMaps {
  public:
   explicit SoftMaps(std::string label, SoftMapParams defaults = {})
       : label_(std::move(label)), p_(defaults), casters_(label_ + ": depth pass") {}
-  void declare(ParamRegistry& r, const std::string& prefix);
+  // reuseSwitch: declare reuse_maps (not for a technique that draws maps of its own).
+  void declare(ParamRegistry& r, const std::string& prefix, bool reuseSwitch = true);
   void init();
   // Fits every light to the scene and renders one map per light and sample (samples: unit-ball
   // points in the light's view space, at most kMaxSamples). Counts into `stats`. renderMaps false:
   // only the cameras (a technique with maps of its own, VSM and ESM, uses them and the uniforms).
+  // When the cameras, the casters they keep, the scene and the pass's settings are those the maps
+  // were drawn with, the passes are skipped (stats.reusedMaps; redrawn() false).
   void render(const ShadowContext& c, const std::vector<glm::vec3>& samples, ShadowStats& stats,
               bool renderMaps = true);
   // The uniforms of soft_maps.glsl, the maps with a comparison sampler on `unit` and raw (for the
@@ -78,6 +83,10 @@ class SoftMaps {
   const std::vector<SoftLight>& lights() const { return lights_; }
   const std::vector<glm::vec3>& samples() const { return samples_; }
   int mapSize() const;
+  bool redrawn() const { return redrawn_; }  // the last render() drew the maps (not reused)
+  GLuint arrayId() const { return array_.id(); }
+  GLuint rawSamplerId() const { return raw_.id(); }
+  int arraySize() const { return arraySize_; }
   const SoftMapParams& params() const { return p_; }
   SoftMapParams& params() { return p_; }
 
@@ -94,6 +103,8 @@ class SoftMaps {
   gl::Framebuffer fbo_;
   int arraySize_ = 0, arrayLayers_ = 0;
   gl::Sampler compare_, raw_;
+  PassKey rendered_;  // what the maps were last drawn from
+  bool redrawn_ = false;
 };
 
 }  // namespace shadowlab::tech

@@ -5,8 +5,10 @@
 # whose CSV must show the passes in every frame: the control).
 # The same for another lesson: NAME (file names), PRESET, MAPS (maps drawn in frame 0) and PASSES
 # (timed passes per map: lesson 07's hybrid map has its depth pass, index, merge and records) and
-# REUSE (the switch's name: csm.reuse_maps in lesson 10).
-# Run: cmake -DLESSON=... -DOUT_DIR=... [-DNAME=... -DPRESET=... -DMAPS=... -DPASSES=... -DREUSE=...] -P this
+# REUSE (the switch's name: csm.reuse_maps in lesson 10), and ROWS where the timed passes are not
+# one per map (lesson 05's soft maps: one timed pass per light for all its sample maps).
+# Run: cmake -DLESSON=... -DOUT_DIR=... [-DNAME=... -DPRESET=... -DMAPS=... -DPASSES=... -DREUSE=...
+#      -DROWS=...] -P this
 if(NOT DEFINED NAME)
   set(NAME reuse)
 endif()
@@ -51,7 +53,11 @@ run(kept)
 run(redrawn --set ${REUSE}=false)
 count_passes(kept kept_total kept_late)
 count_passes(redrawn redrawn_total redrawn_late)
-math(EXPR once "${MAPS} * ${PASSES}")
+if(DEFINED ROWS)
+  set(once ${ROWS})
+else()
+  math(EXPR once "${MAPS} * ${PASSES}")
+endif()
 math(EXPR every "6 * ${once}")
 if(NOT kept_total EQUAL once OR NOT kept_late EQUAL 0)
   message(FATAL_ERROR "reused maps: ${kept_total} shadow passes, ${kept_late} after frame 0 (expected ${once} and 0)")
