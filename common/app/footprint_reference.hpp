@@ -30,7 +30,9 @@ class FootprintReference {
   // Samples every covered pixel of `scene` with `sample`; the view shows the CPU's picture, or
   // with `difference` |GPU - CPU| times `gain`. Pixels the scene did not texture keep the GPU's,
   // and so do all of them with an empty sampler (what the CPU cannot sample: a 3D texture).
-  Result sample(const gl::FootprintTarget& scene, const Sampler& sample, bool difference, float gain);
+  // Rows are sampled on `threads` threads (0: every core; the sampler must then be safe to call
+  // from several at once); the figures do not depend on the count.
+  Result sample(const gl::FootprintTarget& scene, const Sampler& sample, bool difference, float gain, int threads = 0);
   // The framebuffer holding the last sample()'s view (to blit to the screen).
   GLuint framebuffer() const { return fbo_.id(); }
 

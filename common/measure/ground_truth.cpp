@@ -10,6 +10,8 @@
 
 #include <embree3/rtcore.h>
 
+#include "core/parallel.hpp"
+
 namespace shadowlab::measure {
 
 namespace {
@@ -84,24 +86,6 @@ void orthonormalBasis(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
   float a = -1.0f / (s + n.z), c = n.x * n.y * a;
   t = {1 + s * n.x * n.x * a, s * c, -s * n.x};
   b = {c, s + n.y * n.y * a, -n.y};
-}
-
-template <class RowFn>
-void parallelRows(int height, int threads, RowFn&& fn) {
-  int count = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  count = std::max(1, std::min(count, height));
-  std::atomic<int> next{0};
-  auto worker = [&] {
-    for (int y; (y = next.fetch_add(1)) < height;) fn(y);
-  };
-  if (count == 1) {
-    worker();
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (int i = 1; i < count; ++i) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
 }
 
 double msSince(std::chrono::steady_clock::time_point start) {
