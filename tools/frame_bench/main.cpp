@@ -75,10 +75,21 @@ Options parse(int argc, char** argv) {
             "'; valid: --bin --out --lessons --size --repeat --frames --window --quick --default-only");
   }
   if (o.bin.empty() || o.out.empty()) usage("--bin and --out are required");
-  if (o.lessons.empty())
-    for (const auto& e : fs::directory_iterator(o.bin)) {
-      const std::string name = e.path().filename().string();
-      if (name.rfind("lesson_", 0) == 0 && name != "lesson_check") o.lessons.push_back(name.substr(7));
+  std::error_code error;
+  if (!fs::is_directory(o.bin, error)) usage("--bin " + o.bin + ": not a directory");
+  std::vector<std::string> found;  // the lessons built in --bin
+  for (const auto& e : fs::directory_iterator(o.bin)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("lesson_", 0) == 0 && name != "lesson_check") found.push_back(name.substr(7));
+  }
+  std::sort(found.begin(), found.end());
+  if (found.empty()) usage("--bin " + o.bin + ": no lesson_* programs there (build first)");
+  if (o.lessons.empty()) o.lessons = found;
+  for (const auto& l : o.lessons)
+    if (!std::binary_search(found.begin(), found.end(), l)) {
+      std::string valid;
+      for (const auto& f : found) valid += (valid.empty() ? "" : ", ") + f;
+      usage("--lessons: no lesson '" + l + "' in " + o.bin + "; valid: " + valid);
     }
   std::sort(o.lessons.begin(), o.lessons.end());
   if (o.quick) {
@@ -140,6 +151,8 @@ struct Runner {
               << std::flush;
   }
 
+  std::vector<std::string> failures;  // runs that exited non-zero or wrote no frames
+
   // One run of `lesson` with `args`; its frames from frame 2 on.
   Frames run(const std::string& lesson, const std::vector<std::string>& args, bool floor, bool window,
              const std::string& size, int frames) {
@@ -152,8 +165,16 @@ struct Runner {
     po.stdoutPath = o.out + "/frames_run.log";
     if (floor) po.setEnv.push_back("SHADOWLAB_FLOOR_SHADER=1");
     fs::remove(csv);
-    if (runProcess(cmd, po) != 0) return {};
-    return readBench(csv, window ? frames / 2 : 2);
+    const int rc = runProcess(cmd, po);
+    const Frames f = rc == 0 ? readBench(csv, window ? frames / 2 : 2) : Frames{};
+    if (!f.ok) {
+      std::string line;
+      for (const auto& c : cmd) line += (line.empty() ? "" : " ") + c;
+      failures.push_back((floor ? "SHADOWLAB_FLOOR_SHADER=1 " : "") + line + ": " +
+                         (rc != 0 ? "exit " + std::to_string(rc) : std::string("no frames in the CSV")) + " (log " +
+                         po.stdoutPath + ")");
+    }
+    return f;
   }
 
   std::vector<std::string> presets(const std::string& lesson) {
@@ -272,5 +293,6 @@ int main(int argc, char** argv) {
     std::cout << row.lesson << " " << row.preset << ": " << fixed(row.ms, 1) << " ms, floor " << fixed(row.floorMs, 1)
               << " ms" << (row.windowFps > 0 ? ", window " + fixed(row.windowFps, 1) + " fps" : "") << '\n';
   std::cout << "frame_bench: " << o.out << "/frames.csv, " << o.out << "/frames.html\n";
-  return 0;
+  for (const auto& f : r.failures) std::cerr << "frame_bench: a run failed: " << f << '\n';
+  return r.failures.empty() ? 0 : 1;
 }
