@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "algorithms/psm/psm_camera.hpp"
@@ -44,8 +45,25 @@ int main(int argc, char** argv) {
     b.max = glm::vec3(x + w, h, z + w);
     all.push_back(b);
   }
+  // One optional argument, the CSV's path: anything like a flag, or more than one, is a mistake
+  // (a "--help" once became a file of that name).
+  const std::string usage = "usage: bench_psm_setup [out.csv] (the CSV to stdout without one)";
+  if (argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::cout << usage << '\n';
+    return 0;
+  }
+  if (argc > 2 || (argc == 2 && (argv[1][0] == '-' || argv[1][0] == '\0'))) {
+    std::cerr << "bench_psm_setup: unexpected argument '" << argv[argc > 2 ? 2 : 1] << "'; " << usage << '\n';
+    return 2;
+  }
   std::ofstream file;
-  if (argc > 1) file.open(argv[1]);
+  if (argc > 1) {
+    file.open(argv[1]);
+    if (!file) {
+      std::cerr << "bench_psm_setup: cannot write " << argv[1] << '\n';
+      return 2;
+    }
+  }
   std::ostream& csv = argc > 1 ? static_cast<std::ostream&>(file) : std::cout;
   csv << "boxes,median_us,min_us,per_box_ns,key_points,status\n";
   std::cout << "boxes      median (us)   min (us)   per box (ns)   key points   status\n";

@@ -156,3 +156,11 @@ set_tests_properties(gpu.framework.ui_layout PROPERTIES LABELS gpu)
 bad_input(03_shadow_quality.pcf_size_even $<TARGET_FILE:lesson_03_shadow_quality> 2
           "pcf.size = 4: the N x N kernel needs an odd N; valid: 1, 3, 5, 7, 9"
           -- --headless --frames 1 --size 160x90 --set pcf.size=4)
+
+# bench_psm_setup takes one CSV path: a flag or a second argument is refused, not written to.
+if(NOT SHADOWLAB_UNIT_ONLY AND EXISTS ${CMAKE_SOURCE_DIR}/bench/CMakeLists.txt)  # added after tests/
+  bad_input(bench_psm_setup.flag $<TARGET_FILE:bench_psm_setup> 2
+            "bench_psm_setup: unexpected argument '--bogus'" -- --bogus)
+  bad_input(bench_psm_setup.unwritable $<TARGET_FILE:bench_psm_setup> 2
+            "bench_psm_setup: cannot write /nonexistent-dir/setup.csv" -- /nonexistent-dir/setup.csv)
+endif()
