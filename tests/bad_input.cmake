@@ -164,3 +164,8 @@ if(NOT SHADOWLAB_UNIT_ONLY AND EXISTS ${CMAKE_SOURCE_DIR}/bench/CMakeLists.txt) 
   bad_input(bench_psm_setup.unwritable $<TARGET_FILE:bench_psm_setup> 2
             "bench_psm_setup: cannot write /nonexistent-dir/setup.csv" -- /nonexistent-dir/setup.csv)
 endif()
+# gen_textures takes the output directory: a flag is refused, not created as a directory.
+if(TARGET gen_textures)
+  bad_input(gen_textures.flag $<TARGET_FILE:gen_textures> 2
+            "gen_textures: unexpected argument '--bogus'; usage: gen_textures OUTDIR" -- --bogus)
+endif()

@@ -3,13 +3,21 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <string>
 
 #include "core/image.hpp"
 #include "core/texture_gen.hpp"
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: %s OUTDIR\n", argv[0]);
+  if (argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::printf("usage: gen_textures OUTDIR (writes the course's procedural textures there as PNG)\n");
+    return 0;
+  }
+  // A flag is a mistake, not a directory to create.
+  if (argc != 2 || argv[1][0] == '-' || argv[1][0] == '\0') {
+    std::fprintf(stderr, "gen_textures: %s; usage: gen_textures OUTDIR\n",
+                 argc != 2 ? "one argument, the output directory"
+                           : (std::string("unexpected argument '") + argv[1] + "'").c_str());
     return 2;
   }
   try {
