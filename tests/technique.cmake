@@ -48,7 +48,25 @@ add_test(NAME gpu.technique.soft_map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<T
 add_test(NAME gpu.technique.many_map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows>
          -DNAME=many_reuse -DPRESET=many_4 -DMAPS=4 -DROWS=1 -DREUSE=many.reuse_maps
          -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
-set_tests_properties(gpu.technique.soft_map_reuse gpu.technique.many_map_reuse PROPERTIES LABELS gpu TIMEOUT 300)
+# Both spherical lights (two PCSS maps), and ESM's moments with their blur.
+add_test(NAME gpu.technique.two_soft_lights_map_reuse COMMAND ${CMAKE_COMMAND}
+         -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows> -DNAME=two_soft_reuse -DPRESET=two_lights -DMAPS=2
+         -DREUSE=pcss.reuse_maps -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots
+         -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
+add_test(NAME gpu.technique.esm_map_reuse COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows>
+         -DNAME=esm_reuse -DPRESET=esm -DMAPS=1 -DREUSE=esm.reuse_maps
+         -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
+set_tests_properties(gpu.technique.soft_map_reuse gpu.technique.many_map_reuse gpu.technique.two_soft_lights_map_reuse
+                     gpu.technique.esm_map_reuse PROPERTIES LABELS gpu TIMEOUT 300)
+# And under a light moving on every frame the soft maps and ESM's moments are drawn every frame.
+foreach(t pcss many esm)
+  add_test(NAME gpu.technique.${t}_maps_follow_the_light COMMAND ${CMAKE_COMMAND}
+           -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows> -DNAME=${t}_moving -DSET=technique=${t}
+           "-DPATH=${CMAKE_CURRENT_SOURCE_DIR}/data/paths/soft_light_moves.path" -DREUSE=${t}.reuse_maps -DROWS=1
+           -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_moving.cmake)
+  set_tests_properties(gpu.technique.${t}_maps_follow_the_light PROPERTIES LABELS gpu TIMEOUT 300)
+endforeach()
+
 
 # The frame budget on a software renderer (a window under Xvfb), lesson 03.
 find_program(XVFB_RUN xvfb-run)

@@ -46,6 +46,7 @@ void FilterableMaps::declare(ParamRegistry& r, const std::string& n) {
   } else {
     r.add(n + "exponent", &p_.exponent, 1, 88, "c of exp(c t): sharper and more overflow-prone as it grows");
   }
+  r.add(n + "reuse_maps", &p_.reuseMaps, "keep the moments while nothing they depend on changes (a still light)");
   maps_.declare(r, n, false);  // the moments are drawn by its own pass
 }
 
@@ -117,9 +118,20 @@ void FilterableMaps::renderShadows(const ShadowContext& c) {
   glBindSampler(0, 0);
   for (std::size_t i = 0; i < lights.size(); ++i) {
     if (!lights[i].on) continue;
-    auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
     Target& target = targets_[i];
     ensure(target, size, name() + " light" + std::to_string(i));
+    stats_.culledCasters += lights[i].centre.culled;
+    stats_.bytes += std::uint64_t(size) * std::uint64_t(size) * (kind_ == Kind::Vsm ? 8 : 4) * 2 + 4ull * size * size;
+    // What the moments depend on: the scene, the camera and its casters, the depth range, c, the blur.
+    PassKey key;
+    key << c.scene.revision() << size << lights[i].nearZ << lights[i].farZ << p_.exponent << p_.blur
+        << lights[i].centre.viewProj() << std::span<const char>(lights[i].centre.casters);
+    if (p_.reuseMaps && key == target.rendered) {
+      ++stats_.reusedMaps;
+      continue;
+    }
+    target.rendered = std::move(key);
+    auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
     glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
     glViewport(0, 0, size, size);
     const float clearValue = kind_ == Kind::Vsm ? 1.0f : std::exp(p_.exponent);  // t = 1: nothing in front
@@ -132,10 +144,8 @@ void FilterableMaps::renderShadows(const ShadowContext& c) {
       p.set("uEsm", kind_ == Kind::Esm);
     });
     stats_.triangles += casters_.draw(c.scene, lights[i].centre.viewProj(), lights[i].centre.casters, {true, false});
-    stats_.culledCasters += lights[i].centre.culled;
     blur(target);
     stats_.texels += std::uint64_t(size) * std::uint64_t(size);
-    stats_.bytes += std::uint64_t(size) * std::uint64_t(size) * (kind_ == Kind::Vsm ? 8 : 4) * 2 + 4ull * size * size;
   }
   glClearColor(0, 0, 0, 1);
   glBindFramebuffer(GL_FRAMEBUFFER, c.frame.framebuffer);

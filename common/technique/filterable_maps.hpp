@@ -11,6 +11,7 @@
 // GLSL: shaders/common/shadow_filterable.frag.
 #include <array>
 
+#include "technique/pass_key.hpp"
 #include "technique/soft_maps.hpp"
 
 namespace shadowlab::tech {
@@ -20,6 +21,7 @@ struct FilterableParams {
   float minVariance = 2e-6f;  // vsm: variance floor (depth precision)
   float bleed = 0.2f;         // vsm: light-bleeding reduction, the share of Chebyshev's tail cut away
   float exponent = 60.0f;     // esm: c (exp(c) must stay finite in 32-bit floats: c <= 88)
+  bool reuseMaps = true;      // keep a light's moments while nothing they depend on changed (PassKey)
   // 1024^2 and a 2-texel blur: on the showcase both blurred less and sampled finer measured closer
   // to the reference than 512^2 and 4 texels (tools/soft_bench.sh), and the contact stays dark.
   SoftMapParams maps{2};
@@ -46,6 +48,7 @@ class FilterableMaps : public ShadowTechnique {
     gl::Renderbuffer depth;
     gl::Framebuffer fbo, scratchFbo;
     int size = 0;
+    PassKey rendered;  // what the moments were last drawn and blurred from
   };
   void ensure(Target& t, int size, const std::string& label);
   void blur(Target& t);
