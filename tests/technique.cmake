@@ -61,9 +61,9 @@ set_tests_properties(gpu.technique.soft_map_reuse gpu.technique.many_map_reuse g
 # And under a light moving on every frame the soft maps and ESM's moments are drawn every frame.
 foreach(t pcss many esm)
   add_test(NAME gpu.technique.${t}_maps_follow_the_light COMMAND ${CMAKE_COMMAND}
-           -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows> -DNAME=${t}_moving -DSET=technique=${t}
-           "-DPATH=${CMAKE_CURRENT_SOURCE_DIR}/data/paths/soft_light_moves.path" -DREUSE=${t}.reuse_maps -DROWS=1
-           -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_moving.cmake)
+           -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows> -DNAME=${t}_moving -DPRESET=default -DSET=technique=${t} -DMAPS=1
+           "-DREPLAY=${CMAKE_CURRENT_SOURCE_DIR}/data/paths/soft_light_moves.path" -DREUSE=${t}.reuse_maps -DROWS=1
+           -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_map_reuse.cmake)
   set_tests_properties(gpu.technique.${t}_maps_follow_the_light PROPERTIES LABELS gpu TIMEOUT 300)
 endforeach()
 
