@@ -98,7 +98,6 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
   for (std::size_t i = 0; i < lights_.size(); ++i)
     if (!lights_[i].on && c.lights[i].enabled)
       stats.extra.push_back({"light" + std::to_string(i), "no soft shadow (" + lights_[i].why + ")"});
-  redrawn_ = false;
   if (!renderMaps) return;
   int layers = 0;
   for (const SoftLight& s : lights_) layers += s.on ? int(samples_.size()) : 0;
@@ -121,8 +120,7 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
     }
   }
   stats.bytes += std::uint64_t(arraySize_) * std::uint64_t(arraySize_) * std::uint64_t(arrayLayers_) * 4;
-  redrawn_ = !(p_.reuseMaps && key == rendered_);
-  if (!redrawn_) {
+  if (p_.reuseMaps && key == rendered_) {
     stats.reusedMaps += int(cameras.size());
     return;
   }

@@ -69,7 +69,7 @@ class SoftMaps {
   // points in the light's view space, at most kMaxSamples). Counts into `stats`. renderMaps false:
   // only the cameras (a technique with maps of its own, VSM and ESM, uses them and the uniforms).
   // When the cameras, the casters they keep, the scene and the pass's settings are those the maps
-  // were drawn with, the passes are skipped (stats.reusedMaps; redrawn() false).
+  // were drawn with, the passes are skipped (stats.reusedMaps).
   void render(const ShadowContext& c, const std::vector<glm::vec3>& samples, ShadowStats& stats,
               bool renderMaps = true);
   // The uniforms of soft_maps.glsl, the maps with a comparison sampler on `unit` and raw (for the
@@ -83,10 +83,6 @@ class SoftMaps {
   const std::vector<SoftLight>& lights() const { return lights_; }
   const std::vector<glm::vec3>& samples() const { return samples_; }
   int mapSize() const;
-  bool redrawn() const { return redrawn_; }  // the last render() drew the maps (not reused)
-  GLuint arrayId() const { return array_.id(); }
-  GLuint rawSamplerId() const { return raw_.id(); }
-  int arraySize() const { return arraySize_; }
   const SoftMapParams& params() const { return p_; }
   SoftMapParams& params() { return p_; }
 
@@ -104,7 +100,6 @@ class SoftMaps {
   int arraySize_ = 0, arrayLayers_ = 0;
   gl::Sampler compare_, raw_;
   PassKey rendered_;  // what the maps were last drawn from
-  bool redrawn_ = false;
 };
 
 }  // namespace shadowlab::tech
