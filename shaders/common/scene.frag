@@ -101,11 +101,10 @@ void main() {
   }
   vec3 kd = uAlbedo * texel.rgb;
   vec3 color = uAmbient * kd;
-  for (int i = 0; i < LIGHTS; ++i) {
-    if (!LIGHT_IS_ON(i)) continue;
-    Light light = sceneLight(i);
-    color += lightContribution(N, toLight(light, vWorldPos), V, incidentRadiance(light, vWorldPos), vis[i], kd,
-                               uSpecular, uShininess, true);
-  }
+  // Written out per light with a constant index, as VISIBILITY above: each light's switch and kind
+  // are then constants that fold away. The same as a loop with `continue` over the lights, which
+  // llvmpipe ran slower (lesson 03's default scene pass 57-69 -> 43-57 ms, the picture unchanged).
+#define SHADE(i) if (i < LIGHTS && LIGHT_IS_ON(i)) { Light light = sceneLight(i); color += lightContribution(N, toLight(light, vWorldPos), V, incidentRadiance(light, vWorldPos), vis[i], kd, uSpecular, uShininess, true); }
+  SHADE(0) SHADE(1) SHADE(2) SHADE(3)
   fragColor = vec4(toDisplay(color), 1.0);
 }
