@@ -5,11 +5,12 @@
 // defines shadowVisibility (shaders/common/shadow_*.frag). One shader for any technique and any
 // number of lights (up to MAX_LIGHTS).
 //
-// Specialised (common/technique/lit_pass): a software renderer pays for every light the loop
+// Specialised (common/technique/lit_pass): a software renderer pays for every light the shader
 // visits, even one a uniform switches off, so LitPass compiles a variant per light set with
 //   LIGHT_COUNT n   LIGHT_ON a, b, c, d (1 on, 0 off)   LIGHT_KINDS k0, k1, k2, k3   VIEW v
-// and the loops unroll around the lights that are on, each of its kind. Without the defines (the
-// generic variant, drawn while a specialised one compiles) the same code runs on the uniforms.
+// and the per-light code (VISIBILITY, SHADE: a constant index each) folds to the lights that are
+// on, each of its kind. Without the defines (the generic variant, drawn while a specialised one
+// compiles) the same code runs on the uniforms.
 #include "common/lighting.glsl"
 #include "common/measure.glsl"
 
@@ -56,8 +57,8 @@ Light sceneLight(int i) {
   return l;
 }
 #else
-// A loop of constant length unrolls, so each light's index (and the technique's sampler for it)
-// is a constant too: a sampler array indexed by a variable costs a software renderer dearly.
+// Every light's index is a constant here too (VISIBILITY, SHADE), and so is the technique's sampler
+// for it: a sampler array indexed by a variable costs a software renderer dearly.
 #define LIGHTS MAX_LIGHTS
 #define LIGHT_IS_ON(i) (i < uLightCount)
 #define SCENE_VIEW uView
