@@ -47,7 +47,9 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   float near = uSoftCasterNear[i], tanHalf = uSoftTanHalfFov[i], R = uSoftRadius[i];
   float search = softPcssSearchUv(R, r.z, near, tanHalf, uMaxSearch);
   vec2 found = blockerSearch(i, r.uv, r.z, plane, bias, search, turn);  // (mean distance, count)
-  if (found.y == 0.0) return softHorizon(i, worldPos, N);  // nothing can hide the light: no filter paid
+  // Nothing can hide the light: lit. A GPU skips the filter for such pixels; llvmpipe runs it under
+  // a mask anyway (docs/adding_a_technique.md, measured).
+  if (found.y == 0.0) return softHorizon(i, worldPos, N);
   // No "every search tap blocked: umbra" exit (Fernando's): a few taps over leaf cards with holes
   // all land on leaves where the sphere still shows through the holes; the filter decides.
   float zBlocker = found.x;
