@@ -169,3 +169,44 @@ if(TARGET gen_textures)
   bad_input(gen_textures.flag $<TARGET_FILE:gen_textures> 2
             "gen_textures: unexpected argument '--bogus'; usage: gen_textures OUTDIR" -- --bogus)
 endif()
+
+# Every tool's --help prints its usage on stdout and exits 0; a mistyped flag where a path belongs
+# is refused with exit 2, naming it. Neither writes anything (check_cli.cmake runs each in an empty
+# directory): measure_report_demo wrote a whole report into ./--help, psm_stress and lesson_check
+# tried to run "--help" as the lesson, and filter_sweep and frame_bench answered --help with exit 2.
+function(cli_check name program exit stdout stderr)
+  add_test(NAME cli.${name}
+           COMMAND ${CMAKE_COMMAND} -DPROGRAM=${program} "-DARGS=${ARGN}" -DEXIT=${exit} "-DSTDOUT=${stdout}"
+                   "-DSTDERR=${stderr}" -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli/${name}
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/support/check_cli.cmake)
+  set_tests_properties(cli.${name} PROPERTIES LABELS unit)
+endfunction()
+# Deferred to the end of tests/: some tools are defined by modules included after this one.
+function(shadowlab_tool_cli_checks)
+  foreach(tool lesson_check psm_stress frame_bench filter_sweep shadowlab_bench measure_report_demo gen_textures
+               shadowlab)
+    if(TARGET ${tool})
+      cli_check(${tool}.help $<TARGET_FILE:${tool}> 0 "^usage: ${tool} " "" --help)
+    endif()
+  endforeach()
+  set(flag_errors
+      "lesson_check|^lesson_check: no program at '--bogus'"
+      "psm_stress|^psm_stress: no lesson program at '--bogus'"
+      "shadowlab_bench|^shadowlab_bench: the first argument is the lesson program, not '--bogus'"
+      "measure_report_demo|^measure_report_demo: unexpected argument '--bogus'; usage: measure_report_demo OUT_DIR"
+      "frame_bench|^frame_bench: unknown argument '--bogus'; valid: --bin"
+      "filter_sweep|^filter_sweep: unknown flag '--bogus'")
+  foreach(entry IN LISTS flag_errors)
+    string(FIND "${entry}" "|" bar)
+    string(SUBSTRING "${entry}" 0 ${bar} tool)
+    math(EXPR from "${bar} + 1")
+    string(SUBSTRING "${entry}" ${from} -1 error)
+    if(TARGET ${tool})
+      cli_check(${tool}.flag $<TARGET_FILE:${tool}> 2 "" "${error}" --bogus)
+    endif()
+  endforeach()
+endfunction()
+cmake_language(DEFER CALL shadowlab_tool_cli_checks)
+if(NOT SHADOWLAB_UNIT_ONLY AND EXISTS ${CMAKE_SOURCE_DIR}/bench/CMakeLists.txt)  # added after tests/
+  cli_check(bench_psm_setup.help $<TARGET_FILE:bench_psm_setup> 0 "^usage: bench_psm_setup " "" --help)
+endif()

@@ -50,13 +50,16 @@ struct Result {
   int frames = 0;
 };
 
-[[noreturn]] void usage(const std::string& error) {
-  std::cerr
-      << "filter_sweep: " << error << "\n"
-      << "usage: filter_sweep --lesson PATH --out DIR [--size WxH] [--frames N] [--supersample S] [--modes a,b,...]\n"
+void printUsage(std::ostream& out) {
+  out << "usage: filter_sweep --lesson PATH --out DIR [--size WxH] [--frames N] [--supersample S] [--modes a,b,...]\n"
       << "modes:";
-  for (const Mode& m : allModes()) std::cerr << ' ' << m.name;
-  std::cerr << '\n';
+  for (const Mode& m : allModes()) out << ' ' << m.name;
+  out << '\n';
+}
+
+[[noreturn]] void usage(const std::string& error) {
+  std::cerr << "filter_sweep: " << error << "\n";
+  printUsage(std::cerr);
   std::exit(2);
 }
 
@@ -192,8 +195,10 @@ int main(int argc, char** argv) {
       else if (a == "--frames") frames = std::stoi(value());
       else if (a == "--supersample") ss = std::stoi(value());
       else if (a == "--modes") modeList = value();
-      else if (a == "--help" || a == "-h") usage("help");
-      else usage("unknown flag '" + a + "'");
+      else if (a == "--help" || a == "-h") {
+        printUsage(std::cout);
+        std::exit(0);
+      } else usage("unknown flag '" + a + "'");
     } catch (const std::invalid_argument&) { usage("'" + a + "' needs an integer"); }
   }
   if (lesson.empty() || out.empty()) usage("--lesson and --out are required");

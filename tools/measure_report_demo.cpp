@@ -66,8 +66,15 @@ Image8 greyscale(const ImageF& vis) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: %s OUT_DIR\n", argv[0]);
+  const char* usage = "usage: measure_report_demo OUT_DIR (writes a sample measurement report there)\n";
+  if (argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::fputs(usage, stdout);
+    return 0;
+  }
+  // One argument, the directory: a flag there is a mistake, not a name to create ("--help" was).
+  if (argc != 2 || argv[1][0] == '-' || argv[1][0] == '\0') {
+    if (argc > 1) std::fprintf(stderr, "measure_report_demo: unexpected argument '%s'; ", argv[argc > 2 ? 2 : 1]);
+    std::fputs(usage, stderr);
     return 2;
   }
   try {

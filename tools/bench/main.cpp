@@ -45,12 +45,13 @@ struct Options {
   int pathSamples = 1, repeat = 3, frames = 6;
 };
 
+constexpr const char* kUsage =
+    "usage: shadowlab_bench LESSON_PROGRAM --out DIR [--config \"label: name=value ...\"]... [--preset NAME]...\n"
+    "       [--scenes a,b] [--model FILE] [--path FILE [--path-samples N]] [--repeat N] [--frames N] [--size WxH] "
+    "[--title T]\n";
+
 [[noreturn]] void usage(const std::string& error) {
-  std::cerr
-      << "shadowlab_bench: " << error << "\n"
-      << "usage: shadowlab_bench LESSON_PROGRAM --out DIR [--config \"label: name=value ...\"]... [--preset NAME]...\n"
-         "       [--scenes a,b] [--model FILE] [--path FILE [--path-samples N]] [--repeat N] [--frames N] [--size WxH] "
-         "[--title T]\n";
+  std::cerr << "shadowlab_bench: " << error << "\n" << kUsage;
   std::exit(2);
 }
 
@@ -65,6 +66,12 @@ Options parse(int argc, char** argv) {
   Options o;
   if (argc < 2) usage("no lesson program given");
   o.lesson = argv[1];
+  if (o.lesson == "--help" || o.lesson == "-h") {
+    std::cout << kUsage;
+    std::exit(0);
+  }
+  if (o.lesson.empty() || o.lesson[0] == '-') usage("the first argument is the lesson program, not '" + o.lesson + "'");
+  if (!fs::exists(o.lesson)) usage("no lesson program at " + o.lesson);
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -241,7 +248,6 @@ bool runRepeat(const Options& o, const fs::path& runs, Job& job, int r) {
 
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
-  if (!fs::exists(o.lesson)) usage("no lesson program at " + o.lesson);
   std::vector<double> pathTimes = {-1};
   if (!o.path.empty()) {
     try {

@@ -36,10 +36,12 @@ struct Options {
   bool window = false, quick = false, heaviest = true;
 };
 
+constexpr const char* kUsage =
+    "usage: frame_bench --bin DIR --out DIR [--lessons a,b] [--size WxH] [--repeat N] [--frames N] [--window] "
+    "[--quick] [--default-only]\n";
+
 [[noreturn]] void usage(const std::string& error) {
-  std::cerr << "frame_bench: " << error << "\n"
-            << "usage: frame_bench --bin DIR --out DIR [--lessons a,b] [--size WxH] [--repeat N] [--frames N] "
-               "[--window] [--quick] [--default-only]\n";
+  std::cerr << "frame_bench: " << error << "\n" << kUsage;
   std::exit(2);
 }
 
@@ -58,7 +60,10 @@ Options parse(int argc, char** argv) {
       if (end == v.c_str() || *end || n < lo) usage(a + ": '" + v + "' is not a whole number >= " + std::to_string(lo));
       return int(n);
     };
-    if (a == "--bin") o.bin = value();
+    if (a == "--help" || a == "-h") {
+      std::cout << kUsage;
+      std::exit(0);
+    } else if (a == "--bin") o.bin = value();
     else if (a == "--out") o.out = value();
     else if (a == "--size") o.size = value();
     else if (a == "--repeat") o.repeat = number(1);
@@ -262,7 +267,7 @@ int main(int argc, char** argv) {
         heaviest = p;
       }
     }
-    for (const std::string preset : {std::string("default"), heaviest}) {
+    for (const std::string& preset : {std::string("default"), heaviest}) {
       if (preset.empty()) continue;
       std::vector<double> ms, floorMs;
       Row row{lesson, preset};

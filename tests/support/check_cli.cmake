@@ -1,0 +1,33 @@
+# A tool's command line (cmake -P): PROGRAM run with ARGS (a ;-list) in an empty directory WORKDIR
+# must exit EXIT, print what STDOUT and STDERR match (regular expressions; empty: not checked), and
+# leave WORKDIR empty: `--help` or a mistyped flag is never taken for a file or directory to write
+# (measure_report_demo once wrote a report into ./--help).
+foreach(v PROGRAM EXIT WORKDIR)
+  if(NOT DEFINED ${v})
+    message(FATAL_ERROR "check_cli.cmake needs -D${v}=...")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORKDIR})
+file(MAKE_DIRECTORY ${WORKDIR})
+execute_process(COMMAND ${PROGRAM} ${ARGS} WORKING_DIRECTORY ${WORKDIR} RESULT_VARIABLE code OUTPUT_VARIABLE out
+                ERROR_VARIABLE err TIMEOUT 60)
+get_filename_component(name ${PROGRAM} NAME)
+set(failures "")
+if(NOT "${code}" STREQUAL "${EXIT}")
+  string(APPEND failures "\n  exit ${code}, expected ${EXIT}")
+endif()
+if(DEFINED STDOUT AND NOT STDOUT STREQUAL "" AND NOT out MATCHES "${STDOUT}")
+  string(APPEND failures "\n  stdout does not match '${STDOUT}'")
+endif()
+if(DEFINED STDERR AND NOT STDERR STREQUAL "" AND NOT err MATCHES "${STDERR}")
+  string(APPEND failures "\n  stderr does not match '${STDERR}'")
+endif()
+file(GLOB left LIST_DIRECTORIES true ${WORKDIR}/* ${WORKDIR}/.*)
+if(left)
+  string(APPEND failures "\n  it wrote into its working directory: ${left}")
+endif()
+file(REMOVE_RECURSE ${WORKDIR})
+if(failures)
+  message(FATAL_ERROR "${name} ${ARGS}:${failures}\nstdout:\n${out}\nstderr:\n${err}")
+endif()
+message(STATUS "${name} ${ARGS}: exit ${code} as expected")
