@@ -210,3 +210,18 @@ cmake_language(DEFER CALL shadowlab_tool_cli_checks)
 if(NOT SHADOWLAB_UNIT_ONLY AND EXISTS ${CMAKE_SOURCE_DIR}/bench/CMakeLists.txt)  # added after tests/
   cli_check(bench_psm_setup.help $<TARGET_FILE:bench_psm_setup> 0 "^usage: bench_psm_setup " "" --help)
 endif()
+# The same for the scripts (tools/script_args.sh): --help prints the header comment, a flag where
+# BUILD_DIR belongs is refused (it was taken for a build directory: "--help/bin/... not built").
+foreach(script psm_bench soft_bench shadow_bench hybrid_bench volume_bench showdown_bench fuzz)
+  set(path ${CMAKE_SOURCE_DIR}/tools/${script}.sh)
+  cli_check(${script}_sh.help bash 0 "tools/${script}\\.sh" "" ${path} --help)
+  cli_check(${script}_sh.flag bash 2 "" "^${script}\\.sh: unknown flag '--bogus'" ${path} --bogus)
+endforeach()
+find_package(Python3 COMPONENTS Interpreter QUIET)
+if(Python3_Interpreter_FOUND)
+  set(summary ${CMAKE_SOURCE_DIR}/tools/showdown_summary.py)
+  cli_check(showdown_summary.help ${Python3_EXECUTABLE} 0 "showdown_summary.py OUT_DIR SIZE REPEATS" "" ${summary}
+            --help)
+  cli_check(showdown_summary.flag ${Python3_EXECUTABLE} 2 "" "^showdown_summary.py: expected OUT_DIR SIZE REPEATS"
+            ${summary} --bogus)
+endif()

@@ -6,6 +6,8 @@
 # once fixed). Exit 1 on any finding.
 #   tools/fuzz.sh BUILD_DIR RUNS [TARGET...]
 set -uo pipefail
+source "$(dirname "$0")/script_args.sh"
+check_script_args -- "$@"
 build=${1:?usage: tools/fuzz.sh BUILD_DIR RUNS [TARGET...]}
 runs=${2:?usage: tools/fuzz.sh BUILD_DIR RUNS [TARGET...]}
 shift 2

@@ -22,6 +22,8 @@
 #           over rounds. The machine's load is logged with every round.
 # Writes OUT_DIR/errors.csv, OUT_DIR/timing.csv and OUT_DIR/summary.txt.
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+check_script_args -- "$@"
 build=${1:-build/default}
 out=${2:-out/hybrid_bench}
 size=${3:-960x540}

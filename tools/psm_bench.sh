@@ -14,6 +14,8 @@
 # the frames) and OUT_DIR/goals.md. Figures from a software renderer (llvmpipe) rank techniques;
 # they do not predict a GPU's milliseconds. The error figures are deterministic.
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+check_script_args -- "$@"
 build=${1:-build/default}
 out=${2:-out/psm_bench}
 size=${3:-320x180}

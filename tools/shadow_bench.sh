@@ -10,6 +10,8 @@
 # OUT_DIR/culling.csv and OUT_DIR/summary.txt. Figures from a software renderer (llvmpipe) rank
 # configurations; they do not predict a GPU's milliseconds.
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+check_script_args -- "$@"
 build=${1:-build/default}
 out=${2:-out/shadow_bench}
 size=${3:-640x360}

@@ -19,6 +19,8 @@
 # Figures from a software renderer (llvmpipe) on a shared machine rank techniques; they do not
 # predict a GPU's milliseconds. The error figures are deterministic; the timings are noisy.
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+check_script_args --quick -- "$@"
 quick=0
 if [[ ${1:-} == --quick ]]; then
   quick=1

@@ -206,7 +206,17 @@ def svg_sweep(sweep):
 
 
 def main():
+    if len(sys.argv) == 2 and sys.argv[1] in ("-h", "--help"):
+        print(__doc__.strip())
+        return
+    usage = "usage: showdown_summary.py OUT_DIR SIZE REPEATS (tools/showdown_bench.sh runs it)"
+    if len(sys.argv) != 4 or any(a.startswith("-") for a in sys.argv[1:]):
+        print(f"showdown_summary.py: expected OUT_DIR SIZE REPEATS, got {sys.argv[1:]}; {usage}", file=sys.stderr)
+        sys.exit(2)
     out, size, repeats = sys.argv[1:4]
+    if not os.path.isdir(out):
+        print(f"showdown_summary.py: no directory {out}; {usage}", file=sys.stderr)
+        sys.exit(2)
     paths = [p for p in ("city", "terrain", "forest", "city_1m", "sweep") if os.path.exists(f"{out}/{p}/report.json")]
     data = {p: load(f"{out}/{p}/report.json") for p in paths}
     tables = {p: {t: figures(rs) for t, rs in by.items()} for p, by in data.items()}

@@ -13,6 +13,8 @@
 # a reduced size on purpose. Figures from a software renderer (llvmpipe) rank techniques; they do not
 # predict a GPU's milliseconds.
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+check_script_args -- "$@"
 build=${1:-build/default}
 out=${2:-out/soft_bench}
 size=${3:-320x180}

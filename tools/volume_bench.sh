@@ -7,6 +7,8 @@
 # and the script says so. Figures from a software renderer (llvmpipe) rank techniques, they do not
 # predict a GPU's milliseconds.
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+check_script_args -- "$@"
 build=${1:-build/default}
 out=${2:-out/volume_bench}
 size=${3:-1280x720}
