@@ -54,6 +54,9 @@ LESSON ?= 01
 # Grades lesson LESSON's exercises.cpp (and exercises.glsl, where the lesson has GLSL exercises):
 # out/grades/exLESSON/{score.json, junit.xml, results.json (Gradescope)}.
 grade: build
+	@if [ ! -x $(BUILD)/bin/grade_ex$(LESSON) ]; then \
+	  echo "make grade: LESSON=$(LESSON) has no grader; valid: $$(ls $(BUILD)/bin | sed -n 's/^grade_ex\([0-9][0-9]*\)$$/\1/p' | paste -sd ' ' -)" >&2; \
+	  exit 2; fi
 	@rm -rf out/grades/ex$(LESSON) && mkdir -p out/grades/ex$(LESSON); bin=$(BUILD)/bin; \
 	  $$bin/grade_ex$(LESSON) --results-json=out/grades/ex$(LESSON)/cpp.json >/dev/null; \
 	  glsl=$$(ls $$bin/glsl_lesson_$(LESSON)_* 2>/dev/null | head -1); \
