@@ -184,7 +184,7 @@ endfunction()
 # Deferred to the end of tests/: some tools are defined by modules included after this one.
 function(shadowlab_tool_cli_checks)
   foreach(tool lesson_check psm_stress frame_bench filter_sweep shadowlab_bench measure_report_demo gen_textures
-               shadowlab)
+               shadowlab grade_report)
     if(TARGET ${tool})
       cli_check(${tool}.help $<TARGET_FILE:${tool}> 0 "^usage: ${tool} " "" --help)
     endif()
@@ -224,4 +224,8 @@ if(Python3_Interpreter_FOUND)
             --help)
   cli_check(showdown_summary.flag ${Python3_EXECUTABLE} 2 "" "^showdown_summary.py: expected OUT_DIR SIZE REPEATS"
             ${summary} --bogus)
+endif()
+if(EXISTS ${CMAKE_SOURCE_DIR}/tools/grading/grade_submission.sh)  # the instructor's tree only
+  cli_check(grade_submission_sh.missing bash 2 "" "^grade_submission.sh: no submission directory '/nonexistent-dir'"
+            ${CMAKE_SOURCE_DIR}/tools/grading/grade_submission.sh /nonexistent-dir)
 endif()

@@ -32,11 +32,15 @@ void failAll(RunResult& run, const std::string& logPath) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const char* usage = "usage: grade_report --out DIR [--build-failed=LOG] RESULTS.json...\n";
   std::string out, failedLog;
   std::vector<std::pair<std::string, std::string>> inputs;  // results file, build log ("" when it built)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--out" && i + 1 < argc) out = argv[++i];
+    if (a == "--help" || a == "-h") {
+      std::cout << usage;
+      return 0;
+    } else if (a == "--out" && i + 1 < argc) out = argv[++i];
     else if (a.rfind("--build-failed=", 0) == 0) failedLog = a.substr(15);
     else if (a.rfind("--", 0) == 0) {
       std::cerr << "grade_report: unknown flag '" << a << "'; valid: --out DIR, --build-failed=LOG\n";
@@ -47,7 +51,7 @@ int main(int argc, char** argv) {
     }
   }
   if (out.empty() || inputs.empty()) {
-    std::cerr << "usage: grade_report --out DIR RESULTS.json...\n";
+    std::cerr << usage;
     return 2;
   }
   std::vector<RunResult> runs;

@@ -12,7 +12,9 @@
 # runs/ (each grader's results), logs/ (builds, graders, and calls into the reference library).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-[ $# -ge 1 ] && [ -d "$1" ] || { echo "usage: grade_submission.sh SUBMISSION_DIR [OUT_DIR]" >&2; exit 2; }
+usage="usage: grade_submission.sh SUBMISSION_DIR [OUT_DIR]"
+[ $# -ge 1 ] || { echo "$usage" >&2; exit 2; }
+[ -d "$1" ] || { echo "grade_submission.sh: no submission directory '$1'; $usage" >&2; exit 2; }
 sub=$(cd "$1" && pwd)
 out=${2:-$root/out/grades/submission}
 seed=${SEED:-$(od -An -N4 -tu4 /dev/urandom | tr -d ' ')}
