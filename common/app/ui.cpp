@@ -274,6 +274,14 @@ std::string editWidget(const Param& p, const char* label) {
 }
 }  // namespace
 
+namespace {
+// A parameter's label in the panel: its name after the group (the part before the first dot).
+const char* paramLabel(const std::string& name) {
+  const auto dot = name.find('.');
+  return name.c_str() + (dot == std::string::npos ? 0 : dot + 1);
+}
+}  // namespace
+
 bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status) {
   bool changed = false;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
@@ -290,6 +298,13 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
                                       ImVec2(vp->Size.x, std::max(maxHeight, 3 * ImGui::GetFrameHeight())));
   ImGui::SetNextWindowBgAlpha(1.0f);  // opaque, as the header
   ImGui::Begin("Parameters", nullptr, ImGuiWindowFlags_NoSavedSettings);
+  // Widgets narrow enough for the longest label to fit beside them: ImGui's default (two thirds of
+  // the panel) cut "plane_normal_offset" to "plane_normal_o". Never under 45 % of the panel.
+  float longest = 0;
+  for (const Param& p : params.params())
+    if (!p.hidden) longest = std::max(longest, ImGui::CalcTextSize(paramLabel(p.name)).x);
+  const float room = ImGui::GetContentRegionAvail().x;
+  ImGui::PushItemWidth(std::max(0.45f * room, room - longest - ImGui::GetStyle().ItemInnerSpacing.x));
 
   // Presets: load one, or save the current state under a name.
   const auto names = presets.names();
@@ -336,7 +351,7 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
       open = g.empty() || ImGui::CollapsingHeader(g.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
     }
     if (!open) continue;
-    const char* label = p.name.c_str() + (dot == std::string::npos ? 0 : dot + 1);
+    const char* label = paramLabel(p.name);
     ImGui::PushID(p.name.c_str());
     // The widget edits a copy; the registry takes it (range and checks) or refuses it, keeping
     // the last good value and saying why in the header.
@@ -351,6 +366,7 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
     }
     ImGui::PopID();
   }
+  ImGui::PopItemWidth();
   recordWindow("Parameters");
   ImGui::End();
   return changed;
