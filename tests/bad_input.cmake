@@ -151,6 +151,14 @@ add_test(NAME gpu.framework.ui_layout COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET
          -DLESSON02=$<TARGET_FILE:lesson_02_shadow_maps>
          -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_ui_layout.cmake)
 set_tests_properties(gpu.framework.ui_layout PROPERTIES LABELS gpu)
+set(panel_lessons)
+foreach(lesson IN LISTS SHADOWLAB_LESSONS)
+  list(APPEND panel_lessons $<TARGET_FILE:${lesson}>)
+endforeach()
+add_test(NAME gpu.framework.panel_labels
+         COMMAND ${CMAKE_COMMAND} "-DLESSONS=${panel_lessons}" -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots/panel
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_panel_labels.cmake)
+set_tests_properties(gpu.framework.panel_labels PROPERTIES LABELS gpu)
 
 # An even PCF kernel was silently drawn as the next odd one (issue 19): refused, with the valid sizes.
 bad_input(03_shadow_quality.pcf_size_even $<TARGET_FILE:lesson_03_shadow_quality> 2

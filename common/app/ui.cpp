@@ -298,13 +298,17 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
                                       ImVec2(vp->Size.x, std::max(maxHeight, 3 * ImGui::GetFrameHeight())));
   ImGui::SetNextWindowBgAlpha(1.0f);  // opaque, as the header
   ImGui::Begin("Parameters", nullptr, ImGuiWindowFlags_NoSavedSettings);
-  // Widgets narrow enough for the longest label to fit beside them: ImGui's default (two thirds of
-  // the panel) cut "plane_normal_offset" to "plane_normal_o". Never under 45 % of the panel.
+  // Every widget as wide as the longest label leaves room for, but never under 45 % of the panel
+  // (one long label would squeeze every value); a label still too long beside that narrows its own
+  // widget, to a fifth of the panel at the least. ImGui's default (two thirds of the panel) cut
+  // lesson 09's "plane_normal_offset" to "plane_normal_o".
+  const float gap = ImGui::GetStyle().ItemInnerSpacing.x;
   float longest = 0;
   for (const Param& p : params.params())
     if (!p.hidden) longest = std::max(longest, ImGui::CalcTextSize(paramLabel(p.name)).x);
   const float room = ImGui::GetContentRegionAvail().x;
-  ImGui::PushItemWidth(std::max(0.45f * room, room - longest - ImGui::GetStyle().ItemInnerSpacing.x));
+  const float common = std::max(0.45f * room, room - longest - gap);
+  ImGui::PushItemWidth(common);
 
   // Presets: load one, or save the current state under a name.
   const auto names = presets.names();
@@ -322,8 +326,16 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
     }
     ImGui::EndCombo();
   }
+  // The name field leaves room for the two buttons beside it, or takes the row and puts them
+  // below it where the panel is too narrow for all three (a UI scale of 2 on 1280x720).
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float buttons = ImGui::CalcTextSize("save preset").x + ImGui::CalcTextSize("defaults").x +
+                        4 * style.FramePadding.x + 2 * style.ItemSpacing.x;
+  const bool oneRow = room - buttons >= 0.4f * room;
+  ImGui::SetNextItemWidth(oneRow ? room - buttons : room);
   ImGui::InputText("##name", presetName_, sizeof presetName_);
-  ImGui::SameLine();
+  float widest = ImGui::GetItemRectMax().x;  // the right edge of the widgets and their labels
+  if (oneRow) ImGui::SameLine();
   if (ImGui::Button("save preset")) {
     try {
       presets.capture(presetName_, params);
@@ -338,6 +350,7 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
       changed = true;
     } catch (const ParamError& e) { status = e.what(); }
   }
+  widest = std::max(widest, ImGui::GetItemRectMax().x);
   ImGui::Separator();
 
   std::string group;
@@ -355,7 +368,11 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
     ImGui::PushID(p.name.c_str());
     // The widget edits a copy; the registry takes it (range and checks) or refuses it, keeping
     // the last good value and saying why in the header.
+    const float own = room - ImGui::CalcTextSize(label).x - gap;
+    if (own < common) ImGui::PushItemWidth(std::max(0.2f * room, own));
     const std::string edit = editWidget(p, label);
+    if (own < common) ImGui::PopItemWidth();
+    widest = std::max(widest, ImGui::GetItemRectMax().x);
     if (ImGui::IsItemHovered() && !p.why.empty())
       ImGui::SetTooltip("%s%s%s", p.why.c_str(), p.hotkey.empty() ? "" : "\nhotkey: ", p.hotkey.c_str());
     if (!edit.empty()) {
@@ -368,6 +385,12 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   }
   ImGui::PopItemWidth();
   recordWindow("Parameters");
+  // For the layout test: the widgets' right edge against the panel's visible content (a label
+  // past it is cut off).
+  const ImVec2 pos = ImGui::GetWindowPos();
+  const float x0 = pos.x + ImGui::GetWindowContentRegionMin().x, x1 = pos.x + ImGui::GetWindowContentRegionMax().x;
+  layout_.push_back({"Parameters content", x0, pos.y, x1 - x0, ImGui::GetWindowSize().y});
+  layout_.push_back({"Parameters widgets", x0, pos.y, widest - x0, ImGui::GetWindowSize().y});
   ImGui::End();
   return changed;
 }
