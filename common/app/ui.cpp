@@ -141,6 +141,10 @@ void Ui::header(const HeaderData& d) {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
   ImGui::Begin("shadowlab", nullptr, flags);
+  // Lines longer than the header's width wrap instead of being cut off (a long counter, the title,
+  // the renderer's name at a UI scale of 2).
+  const float wrap = maxWidth - ImGui::GetStyle().WindowPadding.x;
+  ImGui::PushTextWrapPos(wrap);
   if (d.info) ImGui::Text("%s  %s", d.info->number.c_str(), d.info->title.c_str());
   ImGui::TextDisabled("%s", d.gpu.c_str());
   ImGui::Text("%.1f ms  (%.1f fps)", d.frameMs, d.frameMs > 0 ? 1000.0 / d.frameMs : 0.0);
@@ -172,13 +176,14 @@ void Ui::header(const HeaderData& d) {
     for (const auto& c : *d.counters) ImGui::Text("%s: %s", c.name.c_str(), c.value.c_str());
   for (const auto& e : d.errors) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 50.0f);
+    ImGui::PushTextWrapPos(std::min(wrap, ImGui::GetFontSize() * 50.0f));
     ImGui::TextUnformatted(e.c_str());
     ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
   }
   if (!d.status.empty()) ImGui::TextDisabled("%s", d.status.c_str());
   ImGui::TextDisabled("F1 help   H hide UI");
+  ImGui::PopTextWrapPos();
   recordWindow("shadowlab");
   ImGui::End();
 }
