@@ -192,10 +192,14 @@ void Ui::help(const LessonInfo& info, const ParamRegistry& params, bool* open) {
   if (!*open) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(vp->Size.x * 0.5f, vp->Size.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  // Inside the frame (it scrolls), its long lines wrapped: at a UI scale of 2 they ran off its edge.
+  const float maxWidth = vp->Size.x - 16 * scale_;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(maxWidth, vp->Size.y - 16 * scale_));
   ImGui::SetNextWindowBgAlpha(0.92f);
   ImGui::Begin("Help (F1)", open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PushTextWrapPos(maxWidth - ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize);
   ImGui::Text("%s  %s", info.number.c_str(), info.title.c_str());
-  ImGui::TextWrapped("%s", info.summary.c_str());
+  ImGui::TextUnformatted(info.summary.c_str());
   ImGui::Separator();
   ImGui::TextUnformatted(info.help.c_str());
   ImGui::Separator();
@@ -211,6 +215,7 @@ void Ui::help(const LessonInfo& info, const ParamRegistry& params, bool* open) {
     any = true;
     ImGui::Text("%-3s %s  (%s)", p.hotkey.c_str(), p.name.c_str(), hotkeyAction(p).c_str());
   }
+  ImGui::PopTextWrapPos();
   recordWindow("Help (F1)");
   ImGui::End();
 }

@@ -2,16 +2,21 @@
 # panel's visible content, from --ui-layout): every lesson at 640x360 (the narrowest panel) and at
 # a projector's UI scale of 2 on 1280x720. ImGui's default widths cut lesson 09's
 # "plane_normal_offset" and pushed the presets' "defaults" button off the panel in every lesson.
+# At the scale of 2 the F1 help is drawn too and stays inside the frame (its lines ran off it).
 # Run: cmake "-DLESSONS=<program>;..." -DOUT_DIR=... -P this
 include(${CMAKE_CURRENT_LIST_DIR}/ui_layout_lib.cmake)
 file(MAKE_DIRECTORY ${OUT_DIR})
 foreach(LESSON IN LISTS LESSONS)
   get_filename_component(name ${LESSON} NAME)
-  foreach(config "640x360;1" "1280x720;2")
+  foreach(config "640x360;1;--show-ui" "1280x720;2;--show-help")
     list(GET config 0 size)
     list(GET config 1 scale)
-    layout(panel_${name}_${scale} --size ${size} --ui-scale ${scale} --show-ui)
+    list(GET config 2 show)
+    layout(panel_${name}_${scale} --size ${size} --ui-scale ${scale} ${show})
     check_within("${json}" "Parameters widgets" "Parameters content")
+    if(show STREQUAL "--show-help")
+      check_inside("${json}" "Help (F1)" 1280 720)
+    endif()
   endforeach()
 endforeach()
 message(STATUS "panel labels fit in ${LESSONS}")
