@@ -199,7 +199,7 @@ function(shadowlab_tool_cli_checks)
   endforeach()
   set(flag_errors
       "lesson_check|^lesson_check: no program at '--bogus'"
-      "psm_stress|^psm_stress: no lesson program at '--bogus'"
+      "psm_stress|^psm_stress: no program at '--bogus'"
       "shadowlab_bench|^shadowlab_bench: the first argument is the lesson program, not '--bogus'"
       "measure_report_demo|^measure_report_demo: unexpected argument '--bogus'; usage: measure_report_demo OUT_DIR"
       "frame_bench|^frame_bench: unknown argument '--bogus'; valid: --bin"

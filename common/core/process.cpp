@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <iostream>
 
 extern char** environ;
 
@@ -47,6 +49,21 @@ int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
     *o.cpuSeconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
                     1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   return WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
+}
+
+int checkProgramArgument(const char* tool, int argc, char** argv, const char* usage) {
+  const std::string program = argc > 1 ? argv[1] : "";
+  if (program == "--help" || program == "-h") {
+    std::cout << usage;
+    return 0;
+  }
+  std::error_code error;
+  if (program.empty() || !std::filesystem::is_regular_file(program, error)) {
+    if (!program.empty()) std::cerr << tool << ": no program at '" << program << "'\n";
+    std::cerr << usage;
+    return 2;
+  }
+  return -1;
 }
 
 }  // namespace shadowlab

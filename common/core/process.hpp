@@ -19,4 +19,9 @@ struct ProcessOptions {
 // when it was killed, or -1 when it could not be started.
 int runProcess(const std::vector<std::string>& args, const ProcessOptions& options = {});
 
+// A tool's first argument, the program it runs (lesson_check, psm_stress): "--help" or "-h" prints
+// `usage` on stdout and returns 0; absent or not a file, it is named on stderr with the usage and
+// 2 returned (a flag there is not a program to start); -1 when it is a file: go on.
+int checkProgramArgument(const char* tool, int argc, char** argv, const char* usage);
+
 }  // namespace shadowlab

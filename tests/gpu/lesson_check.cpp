@@ -112,19 +112,8 @@ int main(int argc, char** argv) {
   const char* usage =
       "usage: lesson_check LESSON [--expect-exit N] [--expect-stderr TEXT] [--png FILE] [--golden DIR] [--root DIR] "
       "[--all-presets] -- ARGS\n";
-  if (argc < 2) {
-    std::cerr << usage;
-    return 2;
-  }
+  if (const int code = shadowlab::checkProgramArgument("lesson_check", argc, argv, usage); code >= 0) return code;
   const std::string lesson = argv[1];
-  if (lesson == "--help" || lesson == "-h") {
-    std::cout << usage;
-    return 0;
-  }
-  if (std::error_code e; !fs::is_regular_file(lesson, e)) {
-    std::cerr << "lesson_check: no program at '" << lesson << "'\n" << usage;
-    return 2;
-  }
   int expectExit = 0;
   std::string expectStderr, png, root, golden;
   bool allPresets = false;

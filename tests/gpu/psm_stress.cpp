@@ -240,19 +240,8 @@ int main(int argc, char** argv) {
   const char* usage =
       "usage: psm_stress LESSON [--out DIR] [--configs N] [--seed S] [--size WxH] [--only I] [--max-edge P] "
       "[--max-leak P] [--set name=value]...\n";
-  if (argc < 2) {
-    std::cerr << usage;
-    return 2;
-  }
+  if (const int code = checkProgramArgument("psm_stress", argc, argv, usage); code >= 0) return code;
   const std::string lesson = argv[1];
-  if (lesson == "--help" || lesson == "-h") {
-    std::cout << usage;
-    return 0;
-  }
-  if (std::error_code e; !fs::is_regular_file(lesson, e)) {
-    std::cerr << "psm_stress: no lesson program at '" << lesson << "'\n" << usage;
-    return 2;
-  }
   std::string out = "psm_stress", size = "160x90";
   int configs = 240, only = -1;
   std::uint64_t seed = 12;
