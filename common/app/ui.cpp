@@ -4,6 +4,7 @@
 #include "core/slider_style.hpp"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the context's windows: the lesson's own ones in the layout
 #include <nlohmann/json.hpp>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <charconv>
 #include <string>
+#include <string_view>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -120,6 +122,13 @@ void writeUiLayout(const std::string& path, int width, int height, const std::ve
 }
 
 void Ui::render() {
+  // The lesson's own windows (a theory plot) in the layout too, so the layout tests see them.
+  for (const ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
+    const ImGuiWindowFlags skip = ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup;
+    if (!w->Active || (w->Flags & skip) || std::string_view(w->Name).find("##") != std::string_view::npos) continue;
+    if (std::none_of(layout_.begin(), layout_.end(), [&](const Rect& r) { return r.name == w->Name; }))
+      layout_.push_back({w->Name, w->Pos.x, w->Pos.y, w->Size.x, w->Size.y});
+  }
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }

@@ -1,9 +1,11 @@
 #include "technique/soft_theory.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // FindWindowByName: where the framework's windows are this frame
 
 namespace shadowlab::tech {
 
@@ -36,16 +38,32 @@ PlotFigures compareFractions(const FractionFn& exact, const FractionFn& linear) 
 void visibleFractionPlot(const FractionFn& exact, const FractionFn& linear) {
   const float em = ImGui::GetFontSize();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(em, display.y - 15.0f * em), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(22.0f * em, 14.0f * em), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("A_frac, the visible fraction")) {
+  // Bottom left, in the band between the framework's header and what sits below it (the exercises
+  // panel, a heatmap's legend; all drawn before the lesson's UI this frame), 14 lines tall at most:
+  // at a fixed 14 lines it covered the exercises panel, and at a UI scale of 2 on 1280x720 the
+  // header too.
+  float top = em, bottom = display.y - em;
+  auto active = [](const char* name) {
+    const ImGuiWindow* w = ImGui::FindWindowByName(name);
+    return w && w->Active ? w : nullptr;
+  };
+  if (const ImGuiWindow* h = active("shadowlab")) top = h->Pos.y + h->Size.y + 0.5f * em;
+  for (const char* below : {"Exercises", "Legend"})
+    if (const ImGuiWindow* w = active(below)) bottom = std::min(bottom, w->Pos.y - 0.5f * em);
+  const float height = std::clamp(bottom - top, 6.0f * em, 14.0f * em);
+  ImGui::SetNextWindowPos(ImVec2(em, bottom - height), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(22.0f * em, height), ImGuiCond_Always);
+  if (!ImGui::Begin("A_frac, the visible fraction", nullptr, ImGuiWindowFlags_NoScrollbar)) {
     ImGui::End();
     return;
   }
   const PlotFigures f = compareFractions(exact, linear);
   ImGui::Text("max |difference| %.2f %% at a/R %+.2f", 100.0f * f.maxDifference, f.at);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
-  const ImVec2 size(ImGui::GetContentRegionAvail().x, std::max(ImGui::GetContentRegionAvail().y - 1.5f * em, 4 * em));
+  // The graph takes what the key line below it leaves, 2.5 lines at the least (no scrollbar: the
+  // graph follows the window).
+  const float keyLine = ImGui::GetStyle().ItemSpacing.y + ImGui::GetTextLineHeight();
+  const ImVec2 size(ImGui::GetContentRegionAvail().x, std::max(ImGui::GetContentRegionAvail().y - keyLine, 2.5f * em));
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(120, 120, 120, 255));
   auto at = [&](float t, float v) {

@@ -3,6 +3,8 @@
 # a projector's UI scale of 2 on 1280x720. ImGui's default widths cut lesson 09's
 # "plane_normal_offset" and pushed the presets' "defaults" button off the panel in every lesson.
 # At the scale of 2 the F1 help is drawn too and stays inside the frame (its lines ran off it).
+# Lesson 05's A_frac plot keeps clear of the header, the panel and the exercises panel (it covered
+# the exercises panel at every scale, and the header at 2 on 1280x720).
 # Run: cmake "-DLESSONS=<program>;..." -DOUT_DIR=... -P this
 include(${CMAKE_CURRENT_LIST_DIR}/ui_layout_lib.cmake)
 file(MAKE_DIRECTORY ${OUT_DIR})
@@ -16,6 +18,13 @@ foreach(LESSON IN LISTS LESSONS)
     check_within("${json}" "Parameters widgets" "Parameters content")
     if(show STREQUAL "--show-help")
       check_inside("${json}" "Help (F1)" 1280 720)
+    endif()
+    # A lesson's own window (lesson 05's A_frac plot) clear of the framework's.
+    has("${json}" "A_frac, the visible fraction" plot)
+    if(plot)
+      foreach(other shadowlab Parameters Exercises)
+        check_apart("${json}" "A_frac, the visible fraction" ${other})
+      endforeach()
     endif()
   endforeach()
 endforeach()
