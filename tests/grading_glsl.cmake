@@ -7,11 +7,13 @@
 # valid (label validity, in make test): validity.exNN_glsl.reference (the reference GLSL as the
 # student's file passes every case), validity.exNN_glsl.stubs (the untouched stubs score 0; needs
 # the pristine hash of exercises.glsl), validity.exNN_glsl.stubs_seeds (the same with each of 10
-# seeds, renders left out) and validity.exNN_glsl.compile_error (a file that does not
-# compile scores 0, its compiler error in the report).
+# seeds, renders left out), validity.exNN_glsl.stub_seed_S (renders included, at a seed that
+# once let the stub pass a hidden render) and validity.exNN_glsl.compile_error (a file that does
+# not compile scores 0, its compiler error in the report).
 if(SHADOWLAB_UNIT_ONLY)
   return()
 endif()
+set(stub_seeds_09 322703142)  # validity.exNN_glsl.stub_seed_S below
 file(GLOB GLSL_CASE_FILES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/grading/glsl/ex*_glsl.cpp)
 foreach(cases IN LISTS GLSL_CASE_FILES)
   get_filename_component(case_name ${cases} NAME_WE)
@@ -74,10 +76,18 @@ foreach(cases IN LISTS GLSL_CASE_FILES)
     add_test(NAME validity.ex${nn}_glsl.stubs COMMAND ${grade_glsl} --expect-stub-scores-zero)
     set_tests_properties(validity.ex${nn}_glsl.stubs PROPERTIES LABELS validity)
     # Each of 10 seeds, the cases without the renders (those redraw placements that show too
-    # little to grade: grading::renderInformative, unit-tested).
+    # little to grade, grading::renderInformative, unit-tested, or where the untouched stub's
+    # render matches the reference's: no seed can give the stub a render it passes).
     add_test(NAME validity.ex${nn}_glsl.stubs_seeds COMMAND ${grade_glsl} --expect-stub-scores-zero --cases-only
                                                              --seeds=1-10)
     set_tests_properties(validity.ex${nn}_glsl.stubs_seeds PROPERTIES LABELS validity)
+    # Seeds whose hidden renders once let the untouched stub pass, renders included, so the
+    # redraw stays: 09 322703142 (a CI run's grade_untouched: lesson 09 fell back to its uniform
+    # map in "hidden render 1: face maps", so the stub's cubeFaceLayer never ran).
+    foreach(seed IN LISTS stub_seeds_${nn})
+      add_test(NAME validity.ex${nn}_glsl.stub_seed_${seed} COMMAND ${grade_glsl} --expect-stub-scores-zero --seed=${seed})
+      set_tests_properties(validity.ex${nn}_glsl.stub_seed_${seed} PROPERTIES LABELS validity)
+    endforeach()
   elseif(SHADOWLAB_REQUIRE_PRISTINE_STUBS)
     message(FATAL_ERROR "shaders/${lesson}/exercises.glsl differs from its recorded pristine hash; if the stubs changed on purpose, run `make stub-hashes`")
   else()

@@ -58,9 +58,11 @@ struct GlslRender {
   bool measure = false;
   bool hidden = false;
   // A random placement (hidden renders): the arguments drawn again for attempt 1, 2, ... The
-  // grader redraws while the reference's render of the last arguments shows too little to tell
-  // any answer from the stub's (a camera facing a wall, no shadow in view): a draw like that
-  // would let an untouched stub pass. Empty: a fixed view, graded as it is.
+  // grader redraws while the reference's render of the last arguments shows too little to grade
+  // (a camera facing a wall, no shadow in view) or the untouched stub's render matches it (the
+  // lesson never ran the exercise's code in view, e.g. lesson 09 falling back to its uniform map
+  // where face maps were asked for): a draw like that would let an untouched stub pass. Empty: a
+  // fixed view, graded as it is.
   std::function<std::vector<std::string>(int attempt)> redraw;
 };
 

@@ -49,6 +49,8 @@ namespace {
 
 struct Options {
   std::string lessonBinary, student = "tree", exercise, images;
+  std::string tree;            // this tree's root (its shaders hold the untouched stubs)
+  bool studentIsStub = false;  // the student's exercises.glsl is this tree's untouched file
   grading::ReportFiles reports;
   bool expectStubsScoreZero = false, casesOnly = false;
   std::uint64_t seedFrom = 0, seedTo = 0;  // --seeds; seedTo == 0: the one seed in use
@@ -110,13 +112,24 @@ int parse(int argc, char** argv, Options& o) {
   return 0;
 }
 
+// The exercises.glsl that --student names (other than "tree").
+fs::path studentFile(const std::string& student, const std::string& lesson) {
+  return student == "reference" ? fs::path(sourceRoot()) / "shaders" / lesson / "exercises_reference.glsl"
+                                : fs::path(student) / "shaders" / lesson / "exercises.glsl";
+}
+
+bool sameContents(const fs::path& a, const fs::path& b) {
+  std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+  if (!fa || !fb) return false;
+  return std::string(std::istreambuf_iterator<char>(fa), {}) == std::string(std::istreambuf_iterator<char>(fb), {});
+}
+
 // A copy of the shader tree with the student's exercises.glsl in place; lessons/ and textures/
 // are links to this tree. Returns the new root ("" for this tree as it is).
 std::string stageRoot(const std::string& student, const std::string& lesson, std::string& error) {
   if (student == "tree") return "";
   const fs::path tree = sourceRoot();
-  const fs::path file = student == "reference" ? tree / "shaders" / lesson / "exercises_reference.glsl"
-                                               : fs::path(student) / "shaders" / lesson / "exercises.glsl";
+  const fs::path file = studentFile(student, lesson);
   if (!fs::is_regular_file(file)) {
     error = "no student file " + file.string();
     return "";
@@ -136,9 +149,12 @@ struct Render {
   std::string png, measure, log;
 };
 
-Render renderLesson(const Options& o, const GlslRender& r, bool student, const fs::path& dir) {
+// One run of the lesson at the render's placement. side names its files (student, reference,
+// stub); impl=student runs an exercises.glsl: the student's (SHADOWLAB_ROOT as staged), or with
+// root set, the one under that root.
+Render renderLesson(const Options& o, const GlslRender& r, const std::string& side, bool student, const fs::path& dir,
+                    const std::string& root = "") {
   Render out;
-  const std::string side = student ? "student" : "reference";
   out.png = (dir / (side + ".png")).string();
   out.measure = (dir / (side + ".json")).string();
   std::vector<std::string> args{o.lessonBinary, "--headless", "--frames",     "2",
@@ -150,6 +166,7 @@ Render renderLesson(const Options& o, const GlslRender& r, bool student, const f
   ProcessOptions options;
   options.stdoutPath = log;  // stderr too: the compile error, file:line
   options.setEnv = {"SHADOWLAB_STRICT_GL=1"};
+  if (!root.empty()) options.setEnv.push_back("SHADOWLAB_ROOT=" + root);
   out.exit = runProcess(args, options);
   std::ifstream in(log);
   out.log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -217,19 +234,37 @@ grading::CaseResult renderCase(const Options& o, const std::string& lesson, Glsl
                                         : fs::path(o.images);
   const fs::path caseDir = dir / (lesson + "_render_" + std::to_string(index));
   fs::create_directories(caseDir);
-  Render ref = renderLesson(o, r, false, caseDir);
+  // A random placement grades only if the reference's render shows enough (informative) and the
+  // untouched stub's render of it differs from the reference's beyond the tolerances: where they
+  // match (the lesson drew no face map, the exercise's code never ran in view), the stub would
+  // pass. The placement follows from the seed alone, never from the student's answer.
+  const bool random = r.redraw && r.measure;
+  const std::string stubSide = o.studentIsStub ? "student" : "stub";
+  Render ref = renderLesson(o, r, "reference", false, caseDir), stub;
+  bool haveStub = false;
   std::string why, redrawn;
+  auto gradable = [&] {
+    haveStub = false;
+    if (!random || ref.exit != 0) return true;
+    if (!informative(ref, why)) return false;
+    stub = renderLesson(o, r, stubSide, true, caseDir, o.tree);
+    haveStub = true;
+    if (stub.exit != 0) return why = "the untouched stub's run failed, exit " + std::to_string(stub.exit), false;
+    if (!compareRenders(r, stub, ref).empty()) return true;
+    return why = "the untouched stub's render matches the reference's", false;
+  };
   constexpr int kDraws = 8;
-  for (int attempt = 1; r.redraw && r.measure && ref.exit == 0 && !informative(ref, why) && attempt <= kDraws;
-       ++attempt) {
+  bool ok = gradable();
+  for (int attempt = 1; !ok && attempt <= kDraws; ++attempt) {
     redrawn += "\n  drawn again:" + commandLine(r) + " (" + why + ")";
     std::cout << "[shadowlab] " << r.name << ": placement drawn again, the reference's render of" << commandLine(r)
-              << " shows too little to grade (" << why << ")\n";
+              << " cannot grade (" << why << ")\n";
     r.args = r.redraw(attempt);
-    ref = renderLesson(o, r, false, caseDir);
+    ref = renderLesson(o, r, "reference", false, caseDir);
+    ok = gradable();
   }
-  const bool uninformative = r.redraw && r.measure && ref.exit == 0 && !informative(ref, why);
-  const Render mine = renderLesson(o, r, true, caseDir);
+  const bool uninformative = !ok;
+  const Render mine = haveStub && o.studentIsStub ? stub : renderLesson(o, r, "student", true, caseDir);
   const std::string what = "lesson " + lesson + commandLine(r) + ", impl=student against impl=reference (320x180)";
   if (uninformative)
     c.output = what + "\n  no placement in " + std::to_string(kDraws + 1) +
@@ -291,6 +326,9 @@ int main(int argc, char** argv) {
   if (const char* env = std::getenv("SHADOWLAB_SEED")) grading::setSeed(std::strtoull(env, nullptr, 10));
   const std::string lesson = SHADOWLAB_GLSL_LESSON;
   std::string error;
+  o.tree = sourceRoot();
+  o.studentIsStub = o.student == "tree" || sameContents(studentFile(o.student, lesson),
+                                                        fs::path(o.tree) / "shaders" / lesson / "exercises.glsl");
   const std::string root = stageRoot(o.student, lesson, error);
   if (!error.empty()) {
     std::cerr << "grade_glsl: " << error << "\n";

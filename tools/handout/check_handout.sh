@@ -175,11 +175,11 @@ explain() {
 import json, pathlib, sys
 wrong = sys.argv[2] == "true"
 for f in sorted(pathlib.Path(sys.argv[1]).glob("*.json")):
-    run = json.loads(f.read_text())
-    for c in run.get("cases", []):
-        if c.get("passed") == wrong:
-            print(f"{f.stem} (seed {run.get('seed')}): {'passed' if wrong else 'failed'}: {c['name']}"
-                  f"{' [hidden]' if c.get('hidden') else ''}\n  {c.get('output', '')[:600]}")
+    for run in json.loads(f.read_text()).get("runs", []):
+        for c in run.get("cases", []):
+            if c.get("passed") == wrong:
+                print(f"{f.stem} (seed {run.get('seed')}): {'passed' if wrong else 'failed'}: {c['name']}"
+                      f"{' [hidden]' if c.get('hidden') else ''}\n  {c.get('output', '')[:600]}")
 PY
   keep=$out.failed-$(date +%Y%m%d-%H%M%S)
   cp -r "$out" "$keep" && cp "$out.log" "$keep/grade.log" && echo "the failing run is kept in $keep"
