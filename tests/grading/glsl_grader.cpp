@@ -268,7 +268,7 @@ grading::CaseResult renderCase(const Options& o, const std::string& lesson, Glsl
   const std::string what = "lesson " + lesson + commandLine(r) + ", impl=student against impl=reference (320x180)";
   if (uninformative)
     c.output = what + "\n  no placement in " + std::to_string(kDraws + 1) +
-               " draws shows enough to grade (a grader bug): " + why + redrawn;
+               " draws can grade (a grader bug): " + why + redrawn;
   else if (ref.exit != 0)
     c.output = what + "\n  the reference run failed (a grader bug), exit " + std::to_string(ref.exit) + ": " + ref.log;
   else if (mine.exit != 0)
