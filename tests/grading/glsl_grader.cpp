@@ -267,8 +267,8 @@ grading::CaseResult renderCase(const Options& o, const std::string& lesson, Glsl
   const Render mine = haveStub && o.studentIsStub ? stub : renderLesson(o, r, "student", true, caseDir);
   const std::string what = "lesson " + lesson + commandLine(r) + ", impl=student against impl=reference (320x180)";
   if (uninformative)
-    c.output = what + "\n  no placement in " + std::to_string(kDraws + 1) +
-               " draws can grade (a grader bug): " + why + redrawn;
+    c.output = what + "\n  no placement in " + std::to_string(kDraws + 1) + " draws can grade (a grader bug): " + why +
+               redrawn;
   else if (ref.exit != 0)
     c.output = what + "\n  the reference run failed (a grader bug), exit " + std::to_string(ref.exit) + ": " + ref.log;
   else if (mine.exit != 0)
