@@ -76,7 +76,22 @@ int clipPolygon(const glm::dvec3* in, int n, const Plane& plane, glm::dvec3* out
   return m;
 }
 
-std::size_t clipBoxToFrustum(const Aabb& box, const Frustum& frustum, std::vector<glm::dvec3>& out) {
+namespace {
+
+// Per plane, the index of the box corner farthest along its normal (corner i: x = i&1, y = i&2,
+// z = i&4 take the box's max); the nearest is 7 - that. The same for every box of a frustum.
+struct FarCorners {
+  int index[6];
+  explicit FarCorners(const Frustum& f) {
+    for (int k = 0; k < 6; ++k) {
+      const glm::dvec3& n = f.planes[std::size_t(k)].normal;
+      index[k] = (n.x >= 0 ? 1 : 0) | (n.y >= 0 ? 2 : 0) | (n.z >= 0 ? 4 : 0);
+    }
+  }
+};
+
+std::size_t clipBox(const Aabb& box, const Frustum& frustum, const FarCorners& farCorner,
+                    std::vector<glm::dvec3>& out) {
   const glm::dvec3 lo(box.min), hi(box.max);
   // The common case in three comparisons per axis; validateBox names what is wrong otherwise.
   const glm::dvec3 size = hi - lo;
@@ -85,21 +100,21 @@ std::size_t clipBoxToFrustum(const Aabb& box, const Frustum& frustum, std::vecto
       !(size.x > 0.0 || size.y > 0.0 || size.z > 0.0)) [[unlikely]]
     validateBox(box);
   const std::size_t before = out.size();
+  // The corners first: each plane's farthest and nearest corner is one of them, picked by index
+  // (FarCorners), not by a select per coordinate and plane.
+  glm::dvec3 c[8];
+  for (int i = 0; i < 8; ++i) c[i] = glm::dvec3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
   // Per plane: every corner outside (reject), every corner inside (the plane cannot cut the box),
   // or it straddles. Only straddled planes cut: most boxes are wholly inside (their 8 corners),
   // and a box on the frustum's edge usually straddles one or two planes.
   int straddled[6], count = 0;
   for (int k = 0; k < 6; ++k) {
     const Plane& p = frustum.planes[std::size_t(k)];
-    const glm::dvec3 far(p.normal.x >= 0 ? hi.x : lo.x, p.normal.y >= 0 ? hi.y : lo.y, p.normal.z >= 0 ? hi.z : lo.z);
-    if (p.distance(far) < 0.0) return 0;
-    const glm::dvec3 near(p.normal.x >= 0 ? lo.x : hi.x, p.normal.y >= 0 ? lo.y : hi.y, p.normal.z >= 0 ? lo.z : hi.z);
-    if (p.distance(near) < 0.0) straddled[count++] = k;
+    if (p.distance(c[farCorner.index[k]]) < 0.0) return 0;
+    if (p.distance(c[7 - farCorner.index[k]]) < 0.0) straddled[count++] = k;
   }
   if (count == 0) {
-    out.resize(before + 8);
-    glm::dvec3* c = out.data() + before;
-    for (int i = 0; i < 8; ++i) c[i] = glm::dvec3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+    out.insert(out.end(), c, c + 8);
     return 8;
   }
   // Vertices of B ∩ F lie on a face of B or a face of F: clip B's faces by the straddled planes of
@@ -139,9 +154,16 @@ std::size_t clipBoxToFrustum(const Aabb& box, const Frustum& frustum, std::vecto
   return out.size() - before;
 }
 
+}  // namespace
+
+std::size_t clipBoxToFrustum(const Aabb& box, const Frustum& frustum, std::vector<glm::dvec3>& out) {
+  return clipBox(box, frustum, FarCorners(frustum), out);
+}
+
 void receiverKeyPoints(std::span<const Aabb> boxes, const Frustum& frustum, std::vector<glm::dvec3>& out) {
   out.clear();
-  for (const Aabb& b : boxes) clipBoxToFrustum(b, frustum, out);
+  const FarCorners farCorner(frustum);
+  for (const Aabb& b : boxes) clipBox(b, frustum, farCorner, out);
 }
 
 void toPostProjectivePoints(const glm::dmat4& viewProj, std::span<const glm::dvec3> world,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "algorithms/psm/conventions.hpp"
+#include "algorithms/psm/lanes.hpp"
 
 namespace shadowlab::psm {
 
@@ -59,6 +60,10 @@ std::uint64_t next(std::uint64_t& s) {
   s ^= s << 17;
   return s;
 }
+
+using lanes::pick;
+using lanes::splat;
+using lanes::V2;
 
 // The widest direction of a front-facing set: max |a x d|^2 / (a.d)^2 (no root or division per
 // point); a division only when a new widest one is found.
@@ -310,7 +315,8 @@ ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> po
     const std::size_t before = core.size();
     Widest widest;
     double lo = std::numeric_limits<double>::max(), hi = -std::numeric_limits<double>::max();
-    for (std::size_t i = 0; i < n; ++i) {
+    // One point: false for a bad direction (f.bad), else measured, and added to the core if outside.
+    auto scan = [&](std::size_t i) {
       const glm::dvec3 d = points[i] - apex;
       const double along = glm::dot(d, a);
       const glm::dvec3 c = glm::cross(a, d);
@@ -321,17 +327,53 @@ ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> po
         lo = std::min(lo, along);
         hi = std::max(hi, along);
         if (across2 <= limit * along * along) [[likely]]
-          continue;
+          return true;
       }
-      if (badDirection(d)) [[unlikely]] {
-        ConeFit f;
-        f.bad = i;
-        return f;
-      }
+      if (badDirection(d)) [[unlikely]]
+        return false;
       // Outside, or a direction already in the core failing only by rounding (the cap's ratio
       // was taken on its unit vector, this one on the raw direction): dropped below.
       core.push_back(unitOf(d));
+      return true;
+    };
+    // Four points at a time in the common case (in front, inside the cap, not the widest so far),
+    // two to a vector register: glm's dot and cross written out in their order of operations, so
+    // the same digits as scan(); any other four go through scan() one by one, in order. On
+    // bench_psm_setup's 1,000 boxes (6,134 points, two scans) this is a sixth of the set-up.
+    const V2 ax = splat(a.x), ay = splat(a.y), az = splat(a.z);
+    const V2 px = splat(apex.x), py = splat(apex.y), pz = splat(apex.z), zero = splat(0.0);
+    auto common = [&](std::size_t j, V2& along) {
+      const glm::dvec3 &p = points[j], &q = points[j + 1];
+      const V2 dx = V2{p.x, q.x} - px, dy = V2{p.y, q.y} - py, dz = V2{p.z, q.z} - pz;
+      along = (dx * ax + dy * ay) + dz * az;
+      const V2 cx = ay * dz - dy * az, cy = az * dx - dz * ax, cz = ax * dy - dx * ay;
+      const V2 across2 = (cx * cx + cy * cy) + cz * cz;
+      return (along > zero) & (across2 <= (splat(limit) * along) * along) &
+             (across2 <= (splat(widest.ratio) * along) * along);
+    };
+    auto badAt = [](std::size_t k) {
+      ConeFit f;
+      f.bad = k;
+      return f;
+    };
+    V2 lo2 = splat(lo), hi2 = splat(hi);
+    std::size_t i = 0;
+    for (; i + 3 < n; i += 4) {
+      V2 a0, a1;
+      if (lanes::both(common(i, a0) & common(i + 2, a1))) [[likely]] {
+        lo2 = pick(a0 < lo2, a0, lo2);
+        hi2 = pick(a0 > hi2, a0, hi2);
+        lo2 = pick(a1 < lo2, a1, lo2);
+        hi2 = pick(a1 > hi2, a1, hi2);
+        continue;
+      }
+      for (std::size_t k = i; k < i + 4; ++k)
+        if (!scan(k)) return badAt(k);
     }
+    for (; i < n; ++i)
+      if (!scan(i)) return badAt(i);
+    lo = std::min({lo, lo2[0], lo2[1]});
+    hi = std::max({hi, hi2[0], hi2[1]});
     // Keep only the directions new to the core (Welzl on pairs of equal points grew the cap): both
     // parts sorted, the new part without its repeats and without what the core holds.
     auto less = [](const glm::dvec3& p, const glm::dvec3& q) {
