@@ -255,6 +255,44 @@ TEST_CASE("psm cone: thousands of points from an apex (sampled core set) hold ev
   CHECK(enclosingConeFrom(glm::dvec3(0.0), pts, core).bad == std::numeric_limits<std::size_t>::max());
 }
 
+TEST_CASE("psm cone: among thousands of points a bad one, the widest or one behind is found in every lane") {
+  // enclosingConeFrom's scans take four points at a time (two vector registers of two lanes) and
+  // hand any four that are not the common case to the scalar code: plant the exception at each
+  // place of a four, and in the tail after the last whole four.
+  const glm::dvec3 apex(1.0, -2.0, 3.0), axis = glm::normalize(glm::dvec3(0.3, 0.4, -1.0));
+  const glm::dvec3 side = glm::normalize(glm::cross(axis, glm::dvec3(0.0, 1.0, 0.0)));
+  std::vector<glm::dvec3> cloud;
+  const int n = 1003;  // the sample takes every 10th point; 1,000 in fours, then a tail of 3
+  for (int k = 0; k < n; ++k) {
+    const double t = 0.05 * std::sin(0.37 * k), u = 0.05 * std::cos(1.91 * k);
+    cloud.push_back(apex + 10.0 * (axis + t * side + u * glm::cross(axis, side)));
+  }
+  std::vector<glm::dvec3> core;
+  for (std::size_t at : {401u, 402u, 403u, 404u, 405u, 1001u, 1002u}) {
+    CAPTURE(at);
+    std::vector<glm::dvec3> pts = cloud;
+    pts[at] = apex;  // at the light: no direction
+    CHECK(enclosingConeFrom(apex, pts, core).bad == at);
+    pts[at] = glm::dvec3(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0);
+    CHECK(enclosingConeFrom(apex, pts, core).bad == at);
+    // The widest: 0.3 rad off the axis, where the cloud reaches 0.071.
+    pts[at] = apex + 10.0 * (axis + std::tan(0.3) * side);
+    ConeFit f = enclosingConeFrom(apex, pts, core);
+    REQUIRE(f.bad == std::numeric_limits<std::size_t>::max());
+    REQUIRE(f.cone.valid);
+    double worst = -1.0;
+    for (const glm::dvec3& p : pts) {
+      const glm::dvec3 d = p - apex;
+      worst = std::max(worst, std::atan2(glm::length(glm::cross(f.cone.axis, d)), glm::dot(f.cone.axis, d)));
+    }
+    CHECK(worst <= f.cone.halfAngle * (1.0 + 1e-12));
+    CHECK(f.cone.halfAngle > 0.15);  // the planted point widened it (about (0.3 + 0.07) / 2)
+    // Behind the light: no cone under 90 degrees holds it and the cloud.
+    pts[at] = apex - 10.0 * axis;
+    CHECK_FALSE(enclosingConeFrom(apex, pts, core).cone.valid);
+  }
+}
+
 TEST_CASE("psm cone: 16 and more directions outside any hemisphere, or one bad, are reported") {
   std::vector<glm::dvec3> d;
   for (int k = 0; k < 30; ++k) {
