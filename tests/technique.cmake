@@ -75,7 +75,20 @@ if(XVFB_RUN)
            -DLESSON=$<TARGET_FILE:lesson_03_shadow_quality> -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots
            -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_frame_budget.cmake)
   set_tests_properties(gpu.framework.frame_budget PROPERTIES LABELS gpu TIMEOUT 300)
+  # Lesson 02 skips its depth pre-pass while the budget draws at half size or less (depth_prepass=auto).
+  add_test(NAME gpu.02_shadow_maps.prepass_under_budget COMMAND ${CMAKE_COMMAND} -DXVFB_RUN=${XVFB_RUN}
+           -DLESSON=$<TARGET_FILE:lesson_02_shadow_maps> -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_prepass_budget.cmake)
+  set_tests_properties(gpu.02_shadow_maps.prepass_under_budget PROPERTIES LABELS gpu TIMEOUT 300)
 endif()
+# Without its pre-pass lesson 02 draws the picture it draws with it (depth ties between leaf cards
+# aside: within the golden images' tolerance), and without a GL error.
+add_test(NAME gpu.02_shadow_maps.prepass_off_golden
+         COMMAND lesson_check $<TARGET_FILE:lesson_02_shadow_maps> --png ${CMAKE_BINARY_DIR}/test-screenshots/02_prepass_off.png
+                 --golden ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/02_shadow_maps
+                 -- --headless --frames 2 --size 320x180 --set depth_prepass=off
+                 --screenshot ${CMAKE_BINARY_DIR}/test-screenshots/02_prepass_off.png)
+set_tests_properties(gpu.02_shadow_maps.prepass_off_golden PROPERTIES LABELS gpu)
 
 # The frames table of `make bench` (tools/frame_bench), on one lesson's default view: it runs, and
 # writes a row with a frame time and a floor.

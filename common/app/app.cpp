@@ -431,7 +431,7 @@ class Runner {
     // The frame budget may hand the lesson a smaller target; the projection keeps the window's aspect.
     int w = width_, h = height_;
     const unsigned fbo = budget_.begin(context_->framebuffer(), width_, height_, w, h);
-    FrameInfo fi{frame, time_, dt, w, h, fbo};
+    FrameInfo fi{frame, time_, dt, w, h, budget_.scale(), fbo};
     fi.view = lesson_.camera.view();
     fi.projection = lesson_.camera.projection(float(width_) / float(height_));
     fi.eye = lesson_.camera.position();

@@ -36,6 +36,7 @@ struct FrameInfo {
   int index = 0;
   double time = 0, dt = 0;  // seconds; headless runs use a fixed dt so frames are reproducible
   int width = 0, height = 0;
+  float renderScale = 1.0f;  // width and height over the window's: below 1 while the frame budget scales
   unsigned framebuffer = 0;  // draw here (not necessarily 0)
   int measureLight = -1;     // pass to the scene shader's uMeasureLight (shaders/common/measure.glsl)
   // The camera to DRAW with: the lesson's camera, or the god view's camera outside the scene.

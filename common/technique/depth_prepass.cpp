@@ -6,7 +6,7 @@
 
 namespace shadowlab::tech {
 
-void DepthPrepass::begin(const SceneCache& scene, const glm::mat4& viewProj) {
+void DepthPrepass::begin(const SceneCache& scene, const glm::mat4& viewProj, bool draw) {
   // Objects wholly outside the view draw no fragment, but llvmpipe still transforms, clips and
   // bins every vertex of them, in this pass and in the shading pass.
   const std::span<const Aabb> boxes = scene.boxes();
@@ -14,6 +14,10 @@ void DepthPrepass::begin(const SceneCache& scene, const glm::mat4& viewProj) {
   culled_ = 0;
   for (std::size_t i = 0; i < boxes.size(); ++i)
     if (shadow::boxOutsideClip(viewProj, boxes[i])) inView_[i] = 0, ++culled_;
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  if (!draw) return;
   // Near to far by the clip w of each box's centre (the eye distance along the view); the depth
   // test's LESS keeps the nearest whatever the order, so the image is the same.
   distance_.resize(boxes.size());
@@ -24,9 +28,6 @@ void DepthPrepass::begin(const SceneCache& scene, const glm::mat4& viewProj) {
   }
   std::stable_sort(order_.begin(), order_.end(),
                    [&](std::uint32_t a, std::uint32_t b) { return distance_[a] < distance_[b]; });
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   // The stencil starts at 0 by a clear, not by the depth pass writing it: a fragment shader with
   // discard (the alpha-tested cards) that also writes stencil gets its depth test after the shader

@@ -17,13 +17,24 @@
 
 namespace shadowlab::tech {
 
+// Whether a lesson lays the depth down first: on, off, or auto: on, except while the frame budget
+// renders at half the window's size or less. There a scene of many cheap triangles (lesson 02's
+// forest, 100,000) pays more for the second geometry pass than for the overdraw it saves (lesson
+// 02's README, "Measured"); lit passes whose shading dominates (lessons 03, 05, 07, 10) keep theirs.
+enum class PrepassMode { Auto, On, Off };
+inline bool prepassOn(PrepassMode mode, float renderScale) {
+  return mode == PrepassMode::On || (mode == PrepassMode::Auto && renderScale > 0.5f);
+}
+
 class DepthPrepass {
  public:
   DepthPrepass(std::string label, std::string vertexShader)
       : pass_(std::move(label), std::move(vertexShader), "uViewProj") {}
   void build() { pass_.build(); }
   // Lays down the depth (and stencil 0) of every object, then sets the state for the shading pass.
-  void begin(const SceneCache& scene, const glm::mat4& viewProj);
+  // With draw false it only culls (inView, culled) and leaves plain depth LESS with writes on: the
+  // shading pass then discards its own holes (compiled without DEPTH_PREPASS).
+  void begin(const SceneCache& scene, const glm::mat4& viewProj, bool draw = true);
   // Back to plain depth LESS with writes on, stencil off.
   void end();
   // Whether object i can draw a fragment in the last begin()'s view (its world box not wholly

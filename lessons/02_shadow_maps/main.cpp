@@ -54,8 +54,9 @@ struct Params {
   Impl impl = Impl::Reference;               // student: your texture matrix and (cpu_vertex) lookup
   float lightNear = 2.0f, lightFar = 80.0f;  // the light frustum's depth range: precision lives here
   float ambient = 0.12f;
-  bool animate = false;  // swing the spot around the scene
-  Light light;           // light0 of the course's rig: a spot
+  bool animate = false;                                 // swing the spot around the scene
+  tech::PrepassMode prepass = tech::PrepassMode::Auto;  // off while the frame budget halves the size
+  Light light;                                          // light0 of the course's rig: a spot
 };
 
 // What the launcher and the F1 overlay say about this lesson.
@@ -104,6 +105,8 @@ class ShadowMapLesson : public Lesson {
     r.add("shadow.far", &p_.lightFar, 1, 500, "the light frustum's far plane");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: what remains in the shadow");
     r.add("animate", &p_.animate, "swing the spot light around the scene").hotkey = "L";
+    r.addChoice("depth_prepass", &p_.prepass, {"auto", "on", "off"},
+                "depth first, then the lit shader once per pixel; auto: off at render scale 0.5 or less");
     Light& l = p_.light;
     l = {LightKind::Spot, {14.0f, 26.0f, 10.0f}};
     l.direction = glm::normalize(glm::vec3(-14.0f, -26.0f, -10.0f));
@@ -188,18 +191,21 @@ class ShadowMapLesson : public Lesson {
 
     // ==== 2. the scene from the eye, V from the map ================================================
     // Depth first, with the scene's own vertex shader (the forest's cards overlap many times over:
-    // the lit shader then runs once per pixel, where the depth test passes EQUAL).
-    {
-      auto t = scope("scene");
-      glEnable(GL_DEPTH_TEST);
-      glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      if (p_.view != View::ShadowMap) {
-        prepass_.begin(scene_, f.projection * f.view);
-        drawScene(f, textureMatrix);
-        prepass_.end();
-        counters.push_back({"objects out of view", std::to_string(prepass_.culled())});
+    // the lit shader then runs once per pixel, where the depth test passes EQUAL). Not while the
+    // frame budget draws at half size or less: the forest's triangles then cost more than its overdraw.
+    glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (p_.view != View::ShadowMap) {
+      const bool prepass = tech::prepassOn(p_.prepass, f.renderScale);
+      {
+        auto t = scope(prepass ? "depth pre-pass" : "view culling");
+        prepass_.begin(scene_, f.projection * f.view, prepass);
       }
+      auto t = scope("scene");
+      drawScene(f, textureMatrix, prepass);
+      prepass_.end();
+      counters.push_back({"objects out of view", std::to_string(prepass_.culled())});
+      counters.push_back({"depth pre-pass", prepass ? "on" : "off"});
     }
 
     // ==== 3. views: the shadow map (full screen or inset), the light ==============================
@@ -221,10 +227,12 @@ class ShadowMapLesson : public Lesson {
   }
 
  private:
-  void drawScene(const FrameInfo& f, const glm::mat4& textureMatrix) {
-    // Compiled for the comparison and the view in use (both are constants in that variant).
-    const gl::Program& program = sceneVariants_.get(
-        {"COMPARE " + std::to_string(int(p_.compare)), "VIEW " + std::to_string(int(p_.view)), "DEPTH_PREPASS 1"});
+  void drawScene(const FrameInfo& f, const glm::mat4& textureMatrix, bool afterPrepass) {
+    // Compiled for the comparison, the view and the pre-pass in use (constants in that variant).
+    std::vector<std::string> defines = {"COMPARE " + std::to_string(int(p_.compare)),
+                                        "VIEW " + std::to_string(int(p_.view))};
+    if (afterPrepass) defines.push_back("DEPTH_PREPASS 1");
+    const gl::Program& program = sceneVariants_.get(defines);
     program.use();
     program.set("uViewProj", f.projection * f.view);
     program.set("uEye", f.eye);
