@@ -193,6 +193,7 @@ class ShadowMapLesson : public Lesson {
     // Depth first, with the scene's own vertex shader (the forest's cards overlap many times over:
     // the lit shader then runs once per pixel, where the depth test passes EQUAL). Not while the
     // frame budget draws at half size or less: the forest's triangles then cost more than its overdraw.
+    glEnable(GL_DEPTH_TEST);
     glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (p_.view != View::ShadowMap) {
