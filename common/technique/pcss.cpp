@@ -28,9 +28,9 @@ void PcssShadows::declare(ParamRegistry& r, const std::string& n) {
 }
 
 std::vector<std::string> PcssShadows::shaderDefines() const {
-  std::vector<std::string> d = {"SEARCH_TAPS " + std::to_string(searchCount()),
-                                "FILTER_TAPS " + std::to_string(filterCount())};
-  if (adaptive_) d.push_back("PCSS");
+  // PCSS's filter count is a uniform (bindVisibility), PCF's compiles in: see shadow_pcss.frag.
+  std::vector<std::string> d = {"SEARCH_TAPS " + std::to_string(searchCount())};
+  d.push_back(adaptive_ ? "PCSS" : "FILTER_TAPS " + std::to_string(filterCount()));
   if (adaptive_ && studentSearch) d.push_back("SHADOWLAB_STUDENT_PCSS");
   return d;
 }
@@ -53,6 +53,7 @@ void PcssShadows::bindVisibility(const gl::Program& lit, int firstUnit) const {
   // Different seeds: the search and the filter should not sample the same directions.
   setTaps(lit, "uSearchTaps", soft::poissonDisk(searchCount(), 11));
   setTaps(lit, "uFilterTaps", soft::poissonDisk(filterCount(), 12));
+  if (adaptive_) lit.set("uFilterCount", filterCount());
   lit.set("uFixedRadius", p_.fixedRadius);
   lit.set("uMaxSearch", p_.maxSearch);
   lit.set("uMinFilter", p_.minFilter);

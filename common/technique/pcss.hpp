@@ -4,7 +4,8 @@
 //   pcf   a fixed kernel radius (texels): the baseline, one penumbra width for every caster
 //   pcss  percentage-closer soft shadows (Fernando 2005): a blocker search, the penumbra estimate
 //         w = (d_receiver - d_blocker) / d_blocker * R, then the filter over w: contact hardening
-// Tap counts compile in (a software renderer pays for every loop trip). The maths:
+// Tap counts compile in (a software renderer pays for every loop trip), but for PCSS's filter:
+// a uniform, so that groups of pixels with no blocker skip its loop (soft_maps.glsl). The maths:
 // algorithms/soft_shadows (pcssPenumbraWidth, pcssFilterRadiusUv, pcssSearchRadiusUv, poissonDisk).
 // GLSL: shaders/common/shadow_pcss.frag.
 #include "technique/soft_maps.hpp"

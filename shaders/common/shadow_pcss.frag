@@ -12,12 +12,21 @@
 #ifndef SEARCH_TAPS
 #define SEARCH_TAPS 16
 #endif
+
+uniform vec2 uSearchTaps[SEARCH_TAPS];  // Poisson disks in the unit disk (soft::poissonDisk)
+#ifdef PCSS
+// The filter's count a uniform, not compiled in, so that its loop stays a loop: pixels whose search
+// found no blocker skip it (SOFT_MAX_TAPS in soft_maps.glsl). PCF filters every pixel: compiled in.
+uniform vec2 uFilterTaps[SOFT_MAX_TAPS];  // the first uFilterCount
+uniform int uFilterCount;
+#define FILTER_COUNT uFilterCount
+#else
 #ifndef FILTER_TAPS
 #define FILTER_TAPS 16
 #endif
-
-uniform vec2 uSearchTaps[SEARCH_TAPS];  // Poisson disks in the unit disk (soft::poissonDisk)
 uniform vec2 uFilterTaps[FILTER_TAPS];
+#define FILTER_COUNT FILTER_TAPS
+#endif
 uniform float uFixedRadius;    // PCF: texels
 uniform float uMaxSearch;      // PCSS: the search region's cap, in uv
 uniform float uMinFilter;      // PCSS: the smallest filter radius, texels (a contact stays antialiased)
@@ -47,8 +56,8 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   float near = uSoftCasterNear[i], tanHalf = uSoftTanHalfFov[i], R = uSoftRadius[i];
   float search = softPcssSearchUv(R, r.z, near, tanHalf, uMaxSearch);
   vec2 found = blockerSearch(i, r.uv, r.z, plane, bias, search, turn);  // (mean distance, count)
-  // Nothing can hide the light: lit. A GPU skips the filter for such pixels; llvmpipe runs it under
-  // a mask anyway (docs/adding_a_technique.md, measured).
+  // Nothing can hide the light: lit. Where a whole group of pixels returns here, the filter loop
+  // below is skipped, by a GPU and by llvmpipe alike, as long as it stays a loop (soft_maps.glsl).
   if (found.y == 0.0) return softHorizon(i, worldPos, N);
   // No "every search tap blocked: umbra" exit (Fernando's): a few taps over leaf cards with holes
   // all land on leaves where the sphere still shows through the holes; the filter decides.
@@ -58,9 +67,9 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   float radius = uFixedRadius / uSoftMapSize;
 #endif
   float v = 0.0;
-  for (int k = 0; k < FILTER_TAPS; ++k) {
+  for (int k = 0; k < FILTER_COUNT; ++k) {
     vec2 o = turn * uFilterTaps[k] * radius;
     v += softCompare(i, 0, r.uv + o, r.z + dot(plane, o) - bias);
   }
-  return v / float(FILTER_TAPS) * softHorizon(i, worldPos, N);
+  return v / float(FILTER_COUNT) * softHorizon(i, worldPos, N);
 }
