@@ -103,3 +103,16 @@ function(four_up_case name preset quarters bounds)
 endfunction()
 four_up_case(four_up four_up "uniform;psm;lispsm;csm" "150;150;150;150")
 four_up_case(four_up_mixed four_up_mixed "hybrid;volumes;csm;uniform" "300;150;150;150")
+
+# Every frame of the views whose lit pass is not the lesson's own gets a --bench row (frame_bench
+# found none for frames 1-3 of these: the four-up view switched the timers off, and the cascades'
+# colouring pass drew untimed while their maps were kept): check_bench_frames.cmake.
+function(bench_frames_case name preset passes)
+  add_test(NAME gpu.10_showdown.bench_frames.${name} COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
+           -DPRESET=${preset} -DFRAMES=4 -DOUT=${showdown_out}/bench_frames_${name}.csv "-DPASSES=${passes}"
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_bench_frames.cmake)
+  set_tests_properties(gpu.10_showdown.bench_frames.${name} PROPERTIES LABELS gpu TIMEOUT 120)
+endfunction()
+bench_frames_case(four_up four_up "^quarter 3: csm$")
+bench_frames_case(four_up_mixed four_up_mixed "^quarter 1: volumes$")
+bench_frames_case(csm_colours csm_colours "^scene$")

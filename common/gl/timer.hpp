@@ -37,7 +37,10 @@ class GpuTimers {
   void setSynchronous(bool on) { sync_ = on; }
   bool synchronous() const { return sync_; }
   // Off: begin/end do nothing (the god view re-renders the lesson; its passes must not be counted).
+  // Turned off while a pass is open, the passes begun inside do nothing and the open one still
+  // ends: one figure for a whole stretch (lesson 10's four-up quarters).
   void setEnabled(bool on) { enabled_ = on; }
+  bool enabled() const { return enabled_; }
   void begin(const std::string& pass);
   void end();
   // Once a frame, after the passes: collects every result that is ready.

@@ -222,11 +222,12 @@ class ShowdownLesson : public Lesson {
 
   // ==== the four-up view: each quarter a technique on the same camera, drawn into its own target ====
   // at a quarter of the frame (the same aspect), then copied into place. Its wall time (glFinish at
-  // both ends) is the quarter's figure; the framework's timers and measurement see only the frame.
+  // both ends) is the quarter's figure; the framework's timers see each quarter as one pass
+  // ("quarter 0: psm", in --bench too), not the technique's own passes; measurement sees the frame.
   void renderFourUp(const FrameInfo& f) {
     const int w = std::max(f.width / 2, 1), h = std::max(f.height / 2, 1);
     counters.clear();
-    timers.setEnabled(false);
+    const bool timed = timers.enabled();  // off while the god view re-renders the lesson
     for (int q = 0; q < 4; ++q) {
       Quarter& quarter = quarters_[std::size_t(q)];
       if (quarter.target.width != w || quarter.target.height != h)
@@ -239,6 +240,8 @@ class ShowdownLesson : public Lesson {
       glBindFramebuffer(GL_FRAMEBUFFER, fq.framebuffer);
       glViewport(0, 0, w, h);
       tech::ShadowTechnique& t = *techniques_[std::size_t(p_.quarter[q])];
+      if (timed) timers.begin("quarter " + std::to_string(q) + ": " + kNames[p_.quarter[q]]);
+      timers.setEnabled(false);  // the technique's own passes: the quarter is the figure
       glFinish();
       const auto start = std::chrono::steady_clock::now();
       const tech::ShadowContext c = context(fq);
@@ -246,6 +249,8 @@ class ShowdownLesson : public Lesson {
       drawLit(c, t);
       glFinish();
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      timers.setEnabled(timed);
+      if (timed) timers.end();
       if (!f.godView) {
         quarter.ms = quarter.ms > 0.0 ? 0.8 * quarter.ms + 0.2 * ms : ms;
         quarter.label = quarterLabel(q, t);
@@ -256,7 +261,6 @@ class ShowdownLesson : public Lesson {
       const int x0 = (q % 2) * w, y0 = (q < 2 ? h : 0);  // GL rows from the bottom: quarters 0, 1 on top
       glBlitFramebuffer(0, 0, w, h, x0, y0, x0 + w, y0 + h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }
-    timers.setEnabled(true);
     glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer);
     glViewport(0, 0, f.width, f.height);
   }
