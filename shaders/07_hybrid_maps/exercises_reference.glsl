@@ -10,7 +10,7 @@ HybridTexel hybridDescend(usampler2D root, usampler2D records, int levels, ivec2
   uint word = texelFetch(root, s >> levels, 0).r;
   // One pointer a level, so at most `levels` (hybrid::kMaxLevels = 3). The count from the uniform,
   // not the constant 3: the compiler cannot unroll the loop then, and llvmpipe leaves it as soon as
-  // every pixel of a group has found its leaf (lesson 07's pcf preset 131-136 -> 102-106 ms).
+  // every pixel of a group has found its leaf (lesson 07's pcf preset 133-137 -> 108-117 ms).
   for (int k = 0; k < levels; ++k) {
     if ((word & HYBRID_POINTER) == 0u || t.level == 0) break;
     uint r = word & ~HYBRID_POINTER;

@@ -14,7 +14,7 @@
 // then. llvmpipe runs every instruction of an `if` under a mask whether or not a pixel takes it,
 // but it leaves a loop as soon as no pixel of its group (4 x 2 pixels with AVX2) is still in it;
 // and a loop with a count it knows, or can bound by the size of the array indexed, it unrolls (16
-// taps were unrolled, 32 and 64 stayed loops). Lesson 05's default view: 139-158 -> 107-116 ms,
+// taps were unrolled, 32 and 64 stayed loops). Lesson 05's default view: 139-162 -> 107-119 ms,
 // the picture byte for byte the same (its README, "What pays on llvmpipe"). Loops that every pixel
 // runs (the search, PCF's filter) stay compiled in: unrolled, they are faster (PCF 109-116 against
 // 116-127 ms as a loop).
