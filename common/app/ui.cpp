@@ -169,6 +169,14 @@ void Ui::header(const HeaderData& d) {
     for (const auto& p : *d.passes) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
+      if (!p.drawn) {  // not drawn this frame (its map reused, its view off): its old mean is no cost now
+        ImGui::TextDisabled("%s", p.name.c_str());
+        for (int c = 1; c < columns; ++c) {
+          ImGui::TableNextColumn();
+          ImGui::TextDisabled("skipped");
+        }
+        continue;
+      }
       ImGui::TextUnformatted(p.name.c_str());
       if (!d.softwareRenderer) {
         ImGui::TableNextColumn();

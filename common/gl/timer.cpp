@@ -31,11 +31,18 @@ GpuTimers::Pass& GpuTimers::pass(const std::string& name) {
   return passes_.back();
 }
 
+void GpuTimers::setFrame(int frame) {
+  if (frame != frame_)
+    for (PassTiming& t : timings_) t.drawn = false;
+  frame_ = frame;
+}
+
 void GpuTimers::begin(const std::string& name) {
   if (!enabled_) return;
   if (open_ >= 0) throw std::logic_error("GpuTimers: pass '" + name + "' begun inside '" + passes_[open_].name + "'");
   Pass& p = pass(name);
   open_ = int(&p - passes_.data());
+  timings_[std::size_t(open_)].drawn = true;
   Slot& slot = p.ring[p.next];
   if (slot.pending) {
     // The ring wrapped before the GPU answered: drop that sample rather than stall.

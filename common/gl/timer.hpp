@@ -23,6 +23,7 @@ struct PassTiming {
   double gpuMs = 0, cpuMs = 0;          // averaged over the window
   double lastGpuMs = 0, lastCpuMs = 0;  // the latest resolved sample
   int samples = 0;
+  bool drawn = false;  // begun in the current frame; false for a pass skipped there (a map reused)
 };
 
 class GpuTimers {
@@ -45,8 +46,9 @@ class GpuTimers {
   void end();
   // Once a frame, after the passes: collects every result that is ready.
   void collect();
-  // The frame number stamped on passes begun from now on (the app sets it each frame).
-  void setFrame(int frame) { frame_ = frame; }
+  // The frame number stamped on passes begun from now on (the app sets it each frame); a new frame
+  // clears every pass's `drawn`.
+  void setFrame(int frame);
   // Keep every resolved sample for takeSamples() (benchmarks); off by default.
   void keepSamples(bool on) { keep_ = on; }
   std::vector<TimingSample> takeSamples() { return std::exchange(samples_, {}); }

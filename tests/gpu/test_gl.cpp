@@ -153,6 +153,53 @@ TEST_CASE("gl: timer queries resolve without stalling, per named pass") {
   CHECK_THROWS_AS(timers.end(), std::logic_error);
 }
 
+TEST_CASE("gl: a pass not begun in this frame is not drawn; passes inside a switched-off stretch are not timed") {
+  glBindFramebuffer(GL_FRAMEBUFFER, context().framebuffer());
+  gl::GpuTimers timers;
+  timers.setFrame(1);
+  {
+    gl::TimerScope a(timers, "shadow");  // drawn in frame 1 only (its map kept afterwards)
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  {
+    gl::TimerScope b(timers, "scene");
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  REQUIRE(timers.find("shadow"));
+  CHECK(timers.find("shadow")->drawn);
+  CHECK(timers.find("scene")->drawn);
+  timers.setFrame(2);
+  CHECK_FALSE(timers.find("shadow")->drawn);
+  CHECK_FALSE(timers.find("scene")->drawn);
+  {
+    gl::TimerScope b(timers, "scene");
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  CHECK_FALSE(timers.find("shadow")->drawn);  // the header shows it as skipped
+  CHECK(timers.find("scene")->drawn);
+  timers.setFrame(2);  // the same frame again (a second render of it): nothing cleared
+  CHECK(timers.find("scene")->drawn);
+
+  // Lesson 10's four-up quarter: one pass open, the timers off inside it, the open one still ends.
+  timers.setFrame(3);
+  timers.begin("quarter 0: uniform");
+  timers.setEnabled(false);
+  CHECK_FALSE(timers.enabled());
+  {
+    gl::TimerScope inner(timers, "shadow light0");  // a no-op: no "begun inside" error
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  timers.setEnabled(true);
+  CHECK_NOTHROW(timers.end());
+  glFinish();
+  timers.collect();
+  REQUIRE(timers.find("quarter 0: uniform"));
+  CHECK(timers.find("quarter 0: uniform")->samples == 1);
+  CHECK(timers.find("quarter 0: uniform")->drawn);
+  CHECK(timers.find("shadow light0") == nullptr);
+  CHECK_FALSE(timers.find("shadow")->drawn);
+}
+
 TEST_CASE("gl: sizes past the GL limits are errors naming the limit, never a black texture or a huge frame") {
   context();
   const gl::Caps& caps = gl::caps();
