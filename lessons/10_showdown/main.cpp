@@ -166,11 +166,14 @@ class ShowdownLesson : public Lesson {
 
   void gui() override {
     if (p_.view != View::FourUp) return;
-    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();  // under the panels: a long label must not overwrite them
     const ImVec2 size = ImGui::GetIO().DisplaySize;
     const float line = ImGui::GetTextLineHeightWithSpacing();
-    for (int q = 0; q < 4; ++q) {  // at each quarter's bottom left, clear of the header and the panel
-      const ImVec2 at((q % 2) * size.x * 0.5f + 8.0f, (q / 2 + 1) * size.y * 0.5f - line - 6.0f);
+    // At each quarter's bottom left, clear of the header, and in the bottom row a line above the
+    // exercises bar; the panel, drawn over the labels, hides the end of a long one on the right.
+    for (int q = 0; q < 4; ++q) {
+      const float lift = q < 2 ? line : 2.0f * line;
+      const ImVec2 at((q % 2) * size.x * 0.5f + 8.0f, (q / 2 + 1) * size.y * 0.5f - lift - 6.0f);
       const char* text = quarters_[std::size_t(q)].label.c_str();
       const ImVec2 t = ImGui::CalcTextSize(text);
       draw->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + t.x + 4, at.y + t.y + 4), IM_COL32(0, 0, 0, 180));
