@@ -162,9 +162,12 @@ void Ui::header(const HeaderData& d) {
   // the pass that caused the work, so there the passes are timed on the CPU, synchronously.
   const int columns = d.softwareRenderer ? 2 : 3;
   if (d.passes && !d.passes->empty() && ImGui::BeginTable("passes", columns, ImGuiTableFlags_SizingFixedFit)) {
+    // The figure columns as wide as their widest content from the first frame on (an auto-fit one
+    // takes a frame to widen, and a screenshot of frame 2 showed "skippe").
+    const float figures = std::max(ImGui::CalcTextSize("skipped").x, ImGui::CalcTextSize("0000.00").x);
     ImGui::TableSetupColumn("pass");
-    if (!d.softwareRenderer) ImGui::TableSetupColumn("GPU ms");
-    ImGui::TableSetupColumn("CPU ms");  // with synchronous timers: what the pass really cost
+    if (!d.softwareRenderer) ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed, figures);
+    ImGui::TableSetupColumn("CPU ms", ImGuiTableColumnFlags_WidthFixed, figures);  // synchronous: what it cost
     ImGui::TableHeadersRow();
     for (const auto& p : *d.passes) {
       ImGui::TableNextRow();
@@ -382,8 +385,8 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
 
   std::string group;
   bool open = true;
-  for (const Param& p : params.params()) {
-    if (p.hidden) continue;
+  for (const Param* q : params.panelOrder()) {  // ungrouped first: none under another group's header
+    const Param& p = *q;
     const auto dot = p.name.find('.');
     const std::string g = dot == std::string::npos ? "" : p.name.substr(0, dot);
     if (g != group) {

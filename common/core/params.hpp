@@ -72,6 +72,10 @@ class ParamRegistry {
   void setHotkey(const std::string& name, const std::string& key);
 
   const std::vector<Param>& params() const { return params_; }
+  // The visible parameters in the order the UI's panel lists them: the ungrouped ones first, then
+  // each group (the name before its first dot) in the order of its first parameter, its members
+  // together in declaration order, so that no parameter shows under another group's header.
+  std::vector<const Param*> panelOrder() const;
   const Param* find(const std::string& name) const;
   bool has(const std::string& name) const { return find(name) != nullptr; }
 

@@ -251,3 +251,19 @@ TEST_CASE("presets: a check that fails names the preset's line that set the valu
   file.apply("ok", p.reg);
   CHECK(p.hi == 4.0f);
 }
+
+TEST_CASE("params: the panel lists the ungrouped parameters first, then each group together") {
+  ParamRegistry r;
+  float a = 0, gx = 0, b = 0, hy = 0, gz = 0, cam = 0;
+  r.add("a", &a, 0, 1, "");
+  r.add("g.x", &gx, 0, 1, "");
+  r.add("b", &b, 0, 1, "");  // declared after group g: shown before it, not under its header
+  r.add("h.y", &hy, 0, 1, "");
+  r.add("g.z", &gz, 0, 1, "");  // g again: with g.x, not as a second g header after h
+  r.add("camera.yaw", &cam, 0, 1, "").hidden = true;
+  std::vector<std::string> names;
+  for (const Param* p : r.panelOrder()) names.push_back(p->name);
+  CHECK(names == std::vector<std::string>{"a", "b", "g.x", "g.z", "h.y"});
+  CHECK(r.params().size() == 6);  // the registry's own order (presets, --list-params) is unchanged
+  CHECK(r.params()[2].name == "b");
+}
