@@ -151,6 +151,10 @@ add_test(NAME gpu.framework.ui_layout COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET
          -DLESSON02=$<TARGET_FILE:lesson_02_shadow_maps>
          -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_ui_layout.cmake)
 set_tests_properties(gpu.framework.ui_layout PROPERTIES LABELS gpu)
+# The last headless frame's UI laid out for its own content (the header not a frame behind).
+add_test(NAME gpu.framework.ui_settled COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_07_hybrid_maps>
+         -DOUT_DIR=${CMAKE_BINARY_DIR}/test-screenshots -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_ui_settled.cmake)
+set_tests_properties(gpu.framework.ui_settled PROPERTIES LABELS gpu)
 set(panel_lessons)
 foreach(lesson IN LISTS SHADOWLAB_LESSONS)
   list(APPEND panel_lessons $<TARGET_FILE:${lesson}>)

@@ -335,7 +335,13 @@ class Runner {
     fi.framebuffer = context_->framebuffer();
     watchExercises(fi, frame);
     lesson_.timers.collect();
-    if (uiVisible_ && !input_.uiHidden) drawUi(fi, dt);
+    if (uiVisible_ && !input_.uiHidden) {
+      // Headless, the last frame's UI is laid out once without drawing first: ImGui sizes an
+      // auto-fit window (the header) from the frame before, so a header whose lines changed came
+      // out a line short in the screenshot and --ui-layout.
+      if (cl_.headless && lastFrame) drawUi(fi, dt, false);
+      drawUi(fi, dt, true);
+    }
     if (Exit e = writeOutputs(fi, lastFrame)) return e;
     context_->present();
     // Frame time includes present: software rasterisers (llvmpipe) do much of their work there.
@@ -502,7 +508,7 @@ class Runner {
     }
   }
 
-  void drawUi(const FrameInfo& fi, double dt) {
+  void drawUi(const FrameInfo& fi, double dt, bool draw) {
     glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
     glViewport(0, 0, width_, height_);
     ui_.newFrame(dt, width_, height_);
@@ -525,7 +531,7 @@ class Runner {
     ui_.banner(banner_);
     ui_.help(info_, params_, &helpOpen_);
     input_.help = helpOpen_;
-    ui_.render();
+    ui_.render(draw);
   }
 
   // F12, --measure and --screenshot on the last frame, and the --record path.

@@ -121,7 +121,7 @@ void writeUiLayout(const std::string& path, int width, int height, const std::ve
   if (!out.flush()) throw std::runtime_error("--ui-layout: cannot write " + path);
 }
 
-void Ui::render() {
+void Ui::render(bool draw) {
   // The lesson's own windows (a theory plot) in the layout too, so the layout tests see them.
   for (const ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
     const ImGuiWindowFlags skip = ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup;
@@ -130,7 +130,7 @@ void Ui::render() {
       layout_.push_back({w->Name, w->Pos.x, w->Pos.y, w->Size.x, w->Size.y});
   }
   ImGui::Render();
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (draw) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
 bool Ui::wantsMouse() const { return initialised_ && ImGui::GetIO().WantCaptureMouse; }

@@ -17,7 +17,9 @@ class Ui {
   void init(Context& context, float scale);
   void shutdown();
   void newFrame(double dt, int width, int height);  // size: headless only (GLFW knows its own)
-  void render();                                    // draws into the currently bound framebuffer
+  // Draws into the currently bound framebuffer; draw=false ends the frame without drawing (a
+  // layout pass: auto-fit windows take their size from the frame before).
+  void render(bool draw = true);
   bool wantsMouse() const;
   bool wantsKeyboard() const;
 
