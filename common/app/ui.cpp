@@ -387,8 +387,7 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   bool open = true;
   for (const Param* q : params.panelOrder()) {  // ungrouped first: none under another group's header
     const Param& p = *q;
-    const auto dot = p.name.find('.');
-    const std::string g = dot == std::string::npos ? "" : p.name.substr(0, dot);
+    const std::string g = ParamRegistry::groupOf(p.name);
     if (g != group) {
       group = g;
       open = g.empty() || ImGui::CollapsingHeader(g.c_str(), ImGuiTreeNodeFlags_DefaultOpen);

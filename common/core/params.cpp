@@ -470,18 +470,20 @@ void PresetFile::save(const std::string& target) const {
   if (!out) throw ParamError("cannot write presets to " + target + ": " + std::strerror(errno));
 }
 
+std::string ParamRegistry::groupOf(const std::string& name) {
+  const auto dot = name.find('.');
+  return dot == std::string::npos ? std::string() : name.substr(0, dot);
+}
+
 std::vector<const Param*> ParamRegistry::panelOrder() const {
-  auto groupOf = [](const Param& p) {
-    const auto dot = p.name.find('.');
-    return dot == std::string::npos ? std::string() : p.name.substr(0, dot);
-  };
   std::vector<std::string> groups{""};
   for (const Param& p : params_)
-    if (!p.hidden && std::find(groups.begin(), groups.end(), groupOf(p)) == groups.end()) groups.push_back(groupOf(p));
+    if (!p.hidden && std::find(groups.begin(), groups.end(), groupOf(p.name)) == groups.end())
+      groups.push_back(groupOf(p.name));
   std::vector<const Param*> order;
   for (const std::string& g : groups)
     for (const Param& p : params_)
-      if (!p.hidden && groupOf(p) == g) order.push_back(&p);
+      if (!p.hidden && groupOf(p.name) == g) order.push_back(&p);
   return order;
 }
 

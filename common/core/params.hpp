@@ -76,6 +76,8 @@ class ParamRegistry {
   // each group (the name before its first dot) in the order of its first parameter, its members
   // together in declaration order, so that no parameter shows under another group's header.
   std::vector<const Param*> panelOrder() const;
+  // The group a parameter's name puts it in: the part before its first dot ("" for none).
+  static std::string groupOf(const std::string& name);
   const Param* find(const std::string& name) const;
   bool has(const std::string& name) const { return find(name) != nullptr; }
 
