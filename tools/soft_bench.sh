@@ -61,6 +61,7 @@ configs=(
   "pcf 32 r8:technique=pcf pcf.filter_taps=32 pcf.radius=8"
   "pcss 8+8:technique=pcss pcss.search_taps=8 pcss.filter_taps=8"
   "pcss 16+16:technique=pcss pcss.search_taps=16 pcss.filter_taps=16"
+  "pcss 16+16 pixel:technique=pcss pcss.search_taps=16 pcss.filter_taps=16 pcss.quad_search=false"
   "pcss 32+32:technique=pcss pcss.search_taps=32 pcss.filter_taps=32"
   "parker 32:technique=parker"
   "parker 32 linear:technique=parker parker.profile=linear"
@@ -98,6 +99,7 @@ techniques="many,technique=many many.samples=1
 many16,technique=many many.samples=16
 pcf16,technique=pcf
 pcss16,technique=pcss
+pcss16pixel,technique=pcss pcss.quad_search=false
 parker,technique=parker
 haines,technique=haines
 mesh,technique=mesh

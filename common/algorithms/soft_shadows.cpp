@@ -199,6 +199,43 @@ std::vector<glm::vec2> poissonDisk(int count, std::uint64_t seed) {
   return points;
 }
 
+std::vector<glm::vec2> quarterTurnDisk(int count, std::uint64_t seed) {
+  require(count >= 4 && count <= 256 && count % 4 == 0,
+          "quarterTurnDisk: count = " + std::to_string(count) + " (valid: a multiple of 4 in 4..256)");
+  SplitMix64 rng(seed);
+  auto inDisk = [&] {
+    const float r = std::sqrt(rng.uniform()), a = rng.uniform(0.0f, 2.0f * kPi);
+    return glm::vec2(r * std::cos(a), r * std::sin(a));
+  };
+  std::vector<glm::vec2> base, all;  // all: every quarter turn of base, so it is closed under turns
+  while (int(base.size()) < count / 4) {
+    // Best candidate: the set of turns is symmetric, so a candidate's turns are as far from it as
+    // the candidate itself; its own quarter turn is |q| sqrt(2) away.
+    glm::vec2 best(0.0f);
+    float bestDistance = -1.0f;
+    for (int c = 0; c < 30; ++c) {
+      const glm::vec2 q = inDisk();
+      float nearest = glm::length(q) * std::sqrt(2.0f);
+      for (const glm::vec2& p : all) nearest = std::min(nearest, glm::length(q - p));
+      if (nearest > bestDistance) {
+        bestDistance = nearest;
+        best = q;
+      }
+    }
+    base.push_back(best);
+    for (const glm::vec2& t : quarterTurns(std::span<const glm::vec2>(&best, 1))) all.push_back(t);
+  }
+  return base;
+}
+
+std::vector<glm::vec2> quarterTurns(std::span<const glm::vec2> base) {
+  std::vector<glm::vec2> all;
+  all.reserve(base.size() * 4);
+  for (int turn = 0; turn < 4; ++turn)
+    for (const glm::vec2& p : base) all.push_back(rotateTap(p, float(turn) * 0.5f * kPi));
+  return all;
+}
+
 glm::vec2 rotateTap(const glm::vec2& tap, float angle) {
   const float c = std::cos(angle), s = std::sin(angle);
   return {c * tap.x - s * tap.y, s * tap.x + c * tap.y};

@@ -116,6 +116,15 @@ BlockerSearch averageBlockerDepth(std::span<const float> tapDepths, float zRecei
 // with a shrinking radius; best candidate of 30 per point), deterministic for a seed. count 1: the
 // centre. Throws std::invalid_argument for count < 1 or > 256.
 std::vector<glm::vec2> poissonDisk(int count, std::uint64_t seed = 1);
+// A search shared by the four pixels of a 2x2 quad (PCSS's quad search, shadow_pcss.frag): count / 4
+// points whose four quarter turns together are `count` points spread like poissonDisk's (best
+// candidate against every quarter turn of the points so far and against its own). Each pixel of the
+// quad reads the base points turned by its own quarter turn. Throws std::invalid_argument unless
+// count is a multiple of 4 in 4..256.
+std::vector<glm::vec2> quarterTurnDisk(int count, std::uint64_t seed = 1);
+// The four quarter turns of every point, in the order the quad's pixels take them (turn j of all
+// points, then turn j + 1): the taps a whole quad reads.
+std::vector<glm::vec2> quarterTurns(std::span<const glm::vec2> base);
 // The tap turned by `angle` radians (counter-clockwise): what each pixel does with its own angle
 // (shadow::rotationAngle) so the taps' pattern becomes noise instead of banding.
 glm::vec2 rotateTap(const glm::vec2& tap, float angle);

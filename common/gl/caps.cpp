@@ -33,6 +33,8 @@ const Caps& caps() {
   c.computeShaders = c.atLeast(4, 3) || epoxy_has_gl_extension("GL_ARB_compute_shader");
   c.directStateAccess = c.atLeast(4, 5) || epoxy_has_gl_extension("GL_ARB_direct_state_access");
   c.timerQuery = c.atLeast(3, 3) || epoxy_has_gl_extension("GL_ARB_timer_query");
+  // The extension itself, not the version: a #version 410 shader enables it by name.
+  c.derivativeControl = epoxy_has_gl_extension("GL_ARB_derivative_control");
   c.softwareRenderer =
       c.renderer.find("llvmpipe") != std::string::npos || c.renderer.find("softpipe") != std::string::npos;
   if (const char* s = std::getenv("SHADOWLAB_SOFTWARE_RENDERER")) c.softwareRenderer = std::string(s) == "1";

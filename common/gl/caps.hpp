@@ -15,6 +15,9 @@ struct Caps {
   bool computeShaders = false;  // 4.3 or GL_ARB_compute_shader
   bool directStateAccess = false;
   bool timerQuery = false;  // 3.3 core; still checked (some drivers lie)
+  // dFdxFine / dFdyFine in a #version 410 shader (GL_ARB_derivative_control, core in 4.5): a 2x2
+  // quad's pixels can share sums (PCSS's quad search, shadow_pcss.frag).
+  bool derivativeControl = false;
   // Mesa's llvmpipe / softpipe (or SHADOWLAB_SOFTWARE_RENDERER=1): the CPU rasterises, deferred, so
   // timestamps miss the work, and an interactive window needs the frame budget.
   bool softwareRenderer = false;

@@ -6,7 +6,8 @@
 //         w = (d_receiver - d_blocker) / d_blocker * R, then the filter over w: contact hardening
 // Tap counts compile in (a software renderer pays for every loop trip), but for PCSS's filter:
 // a uniform, so that groups of pixels with no blocker skip its loop (soft_maps.glsl). The maths:
-// algorithms/soft_shadows (pcssPenumbraWidth, pcssFilterRadiusUv, pcssSearchRadiusUv, poissonDisk).
+// algorithms/soft_shadows (pcssPenumbraWidth, pcssFilterRadiusUv, pcssSearchRadiusUv, poissonDisk,
+// quarterTurnDisk for the quad search).
 // GLSL: shaders/common/shadow_pcss.frag.
 #include "technique/soft_maps.hpp"
 
@@ -18,7 +19,12 @@ struct PcssParams {
   float fixedRadius = 3.0f;  // pcf: kernel radius in texels
   float maxSearch = 0.08f;   // pcss: cap of the search region (uv): a caster near the light is slow
   float minFilter = 1.0f;    // pcss: the smallest filter radius (texels): contacts stay antialiased
-  SoftMapParams maps{2};     // 1024^2
+  // pcss: the four pixels of a 2x2 quad share one search, each reading a quarter of its taps (turned
+  // a quarter turn from its neighbours'), the sums passed round by fine derivatives: the search's
+  // reads drop to a quarter (lesson 05's README, "Measured"). Where the context has no
+  // GL_ARB_derivative_control, every pixel searches alone, as with this off.
+  bool quadSearch = true;
+  SoftMapParams maps{2};  // 1024^2
 };
 
 class PcssShadows : public ShadowTechnique {
@@ -43,6 +49,7 @@ class PcssShadows : public ShadowTechnique {
  private:
   int searchCount() const;
   int filterCount() const;
+  bool quadSearchOn() const;  // asked for, PCSS, and the context has the fine derivatives
   bool adaptive_;
   PcssParams p_;
   SoftMaps maps_;

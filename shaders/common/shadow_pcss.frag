@@ -7,6 +7,14 @@
 //         w = (d_r - d_b) / d_b * R, in uv w / (2 d_r tan(fov/2)) (soft::pcssFilterRadiusUv)
 // A uniform disk of taps over a straight shadow edge averages to the disk's visible fraction:
 // A_frac itself. Each tap compares against the receiver's plane there (no acne from wide kernels).
+//   QUAD_SEARCH  the four pixels of a 2x2 quad share one blocker search: each reads SEARCH_TAPS
+//                taps (a quarter of the search, soft::quarterTurnDisk) turned by its own quarter
+//                turn, and fine derivatives pass the blockers' sums round the quad. The search
+//                estimates one depth for a penumbra many pixels wide: a quad's is as good, at a
+//                quarter of the reads (on llvmpipe every pixel pays every tap).
+#ifdef QUAD_SEARCH
+#extension GL_ARB_derivative_control : require
+#endif
 #include "common/soft_maps.glsl"
 
 #ifndef SEARCH_TAPS
@@ -40,13 +48,48 @@ uniform float uMinFilter;      // PCSS: the smallest filter radius, texels (a co
 #include "05_soft_shadows/exercises_reference.glsl"
 #endif
 
+#ifdef QUAD_SEARCH
+// Where this pixel sits in its 2x2 quad, (0 or 1, 0 or 1): the parity of its coordinates, read
+// through the fine derivative of that parity (+1 where the quad starts on an even coordinate, -1
+// where it starts on an odd one), so it holds however the driver aligns its quads.
+vec2 quadCorner() {
+  vec2 s = mod(floor(gl_FragCoord.xy), 2.0);
+  vec2 ds = vec2(dFdxFine(s.x), dFdyFine(s.y));
+  return vec2((s.x - 0.5) * ds.x < 0.0 ? 0.0 : 1.0, (s.y - 0.5) * ds.y < 0.0 ? 0.0 : 1.0);
+}
+
+// The sum of v over the pixel's quad: its row neighbour is v + dFdxFine(v) from the left pixel,
+// v - dFdxFine(v) from the right one; the same down the columns for the pair sums.
+vec2 quadSum(vec2 v, vec2 corner) {
+  vec2 pair = 2.0 * v + (corner.x == 0.0 ? 1.0 : -1.0) * dFdxFine(v);
+  return 2.0 * pair + (corner.y == 0.0 ? 1.0 : -1.0) * dFdyFine(pair);
+}
+#endif
+
+#ifdef PCSS
+// The blocker search (mean distance, count): the pixel's own, or its quad's (QUAD_SEARCH). Called
+// in uniform control flow: the quad's derivatives need every pixel of it.
+vec2 pcssSearch(int i, SoftReceiver r, vec2 plane, float bias, float radius, mat2 turn) {
+#ifdef QUAD_SEARCH
+  vec2 corner = quadCorner();
+  // One angle for the quad (from its first pixel), a quarter turn more for each of its pixels.
+  float a = softRotation(gl_FragCoord.xy - corner) + 1.57079632679 * (corner.x + 2.0 * corner.y);
+  vec2 own = blockerSearch(i, r.uv, r.z, plane, bias, radius, softTapTurn(a));
+  if (softOutside(i, r)) own = vec2(0.0);  // beyond the map's depth range: nothing to share
+  vec2 quad = quadSum(vec2(own.x * own.y, own.y), corner);  // (sum of distances, count)
+  return quad.y < 0.5 ? vec2(0.0) : vec2(quad.x / quad.y, quad.y);
+#else
+  return blockerSearch(i, r.uv, r.z, plane, bias, radius, turn);
+#endif
+}
+#endif
+
 float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   texelCoords = vec2(0.0);
   SoftReceiver r = softReceiver(i, worldPos, N);
   vec3 dx = dFdx(vec3(r.uv, r.z)), dy = dFdy(vec3(r.uv, r.z));  // uniform control flow: before any return
   if (uSoftLayer[i] < 0) return 1.0;
   texelCoords = r.uv * uSoftMapSize;
-  if (softOutside(i, r)) return 1.0;
   vec2 plane = softReceiverPlane(dx, dy, r, i);
   float bias = softBias(r);
   float a = softRotation(gl_FragCoord.xy);
@@ -55,7 +98,10 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   // The region for a blocker at the nearest caster (no blocker is nearer), not on the near plane.
   float near = uSoftCasterNear[i], tanHalf = uSoftTanHalfFov[i], R = uSoftRadius[i];
   float search = softPcssSearchUv(R, r.z, near, tanHalf, uMaxSearch);
-  vec2 found = blockerSearch(i, r.uv, r.z, plane, bias, search, turn);  // (mean distance, count)
+  vec2 found = pcssSearch(i, r, plane, bias, search, turn);  // before the return below: see pcssSearch
+#endif
+  if (softOutside(i, r)) return 1.0;
+#ifdef PCSS
   // Nothing can hide the light: lit. Where a whole group of pixels returns here, the filter loop
   // below is skipped, by a GPU and by llvmpipe alike, as long as it stays a loop (soft_maps.glsl).
   if (found.y == 0.0) return softHorizon(i, worldPos, N);

@@ -154,6 +154,32 @@ TEST_CASE("soft_shadows: Poisson taps fill the disk without clumps, and rotate")
   CHECK(glm::length(rotateTap({0.3f, 0.4f}, 1.234f)) == doctest::Approx(0.5f));
 }
 
+TEST_CASE("soft_shadows: a quad's search: four quarter turns of a quarter of the taps fill the disk") {
+  for (int n : {8, 16, 32, 64}) {
+    const auto base = quarterTurnDisk(n, 11);
+    REQUIRE(base.size() == std::size_t(n / 4));
+    const auto all = quarterTurns(base);
+    REQUIRE(all.size() == std::size_t(n));
+    for (const auto& p : all) CHECK(glm::length(p) <= 1.0f + 1e-6f);
+    // As poissonDisk's bound: the quad's n taps no closer than a best candidate's spacing.
+    INFO("n = ", n, " smallest distance ", smallestDistance(all));
+    CHECK(smallestDistance(all) > 0.9f / std::sqrt(float(n)));
+    // Pixel j of the quad reads the base taps turned by j quarter turns: taps j n/4 .. (j+1) n/4 - 1.
+    for (std::size_t k = 0; k < base.size(); ++k) {
+      CHECK(near3(glm::vec3(all[k], 0), glm::vec3(base[k], 0)));
+      CHECK(near3(glm::vec3(all[base.size() + k], 0), glm::vec3(-base[k].y, base[k].x, 0)));
+      CHECK(near3(glm::vec3(all[2 * base.size() + k], 0), glm::vec3(-base[k], 0)));
+    }
+  }
+  // Control: one base set of four points from poissonDisk is not spread under its turns.
+  CHECK(smallestDistance(quarterTurns(poissonDisk(4, 11))) < smallestDistance(quarterTurns(quarterTurnDisk(16, 11))));
+  CHECK(quarterTurnDisk(16, 3) == quarterTurnDisk(16, 3));
+  CHECK(quarterTurnDisk(16, 3) != quarterTurnDisk(16, 4));
+  CHECK_THROWS_AS(quarterTurnDisk(0), std::invalid_argument);
+  CHECK_THROWS_AS(quarterTurnDisk(6), std::invalid_argument);
+  CHECK_THROWS_AS(quarterTurnDisk(260), std::invalid_argument);
+}
+
 TEST_CASE("soft_shadows: single-sample soft shadows: Parker's outer hull, Haines's plateaus") {
   // Outer hull of width w: 0 at the caster (the hard edge), 1 at the hull, 1/2 half-way (t = 0).
   CHECK(outerPenumbra(0.0f, 0.2f, Profile::Exact) == doctest::Approx(0.0f));
