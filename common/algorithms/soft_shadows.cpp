@@ -170,32 +170,44 @@ BlockerSearch averageBlockerDepth(std::span<const float> taps, float zReceiver, 
 
 // ---- Poisson taps -------------------------------------------------------------------------------
 
+namespace {
+glm::vec2 inUnitDisk(SplitMix64& rng) {
+  const float r = std::sqrt(rng.uniform()), a = rng.uniform(0.0f, 2.0f * kPi);
+  return glm::vec2(r * std::cos(a), r * std::sin(a));
+}
+
+// Mitchell's best candidate: of 30 uniform candidates, the one whose distance to the points so far
+// (nearest(q)) is the largest.
+template <class Nearest>
+glm::vec2 bestCandidate(SplitMix64& rng, const Nearest& nearest) {
+  glm::vec2 best(0.0f);
+  float bestDistance = -1.0f;
+  for (int c = 0; c < 30; ++c) {
+    const glm::vec2 q = inUnitDisk(rng);
+    const float d = nearest(q);
+    if (d > bestDistance) {
+      bestDistance = d;
+      best = q;
+    }
+  }
+  return best;
+}
+
+float nearestOf(const glm::vec2& q, std::span<const glm::vec2> points, float start) {
+  for (const glm::vec2& p : points) start = std::min(start, glm::length(q - p));
+  return start;
+}
+}  // namespace
+
 std::vector<glm::vec2> poissonDisk(int count, std::uint64_t seed) {
   require(count >= 1 && count <= 256, "poissonDisk: count = " + std::to_string(count) + " (valid 1..256)");
   std::vector<glm::vec2> points{glm::vec2(0.0f)};
   if (count == 1) return points;
   points.clear();
   SplitMix64 rng(seed);
-  auto inDisk = [&] {
-    const float r = std::sqrt(rng.uniform()), a = rng.uniform(0.0f, 2.0f * kPi);
-    return glm::vec2(r * std::cos(a), r * std::sin(a));
-  };
-  // Mitchell's best candidate: of 30 uniform candidates, keep the one farthest from the others.
-  points.push_back(inDisk());
-  while (int(points.size()) < count) {
-    glm::vec2 best(0.0f);
-    float bestDistance = -1.0f;
-    for (int c = 0; c < 30; ++c) {
-      const glm::vec2 q = inDisk();
-      float nearest = 1e9f;
-      for (const glm::vec2& p : points) nearest = std::min(nearest, glm::length(q - p));
-      if (nearest > bestDistance) {
-        bestDistance = nearest;
-        best = q;
-      }
-    }
-    points.push_back(best);
-  }
+  points.push_back(inUnitDisk(rng));
+  while (int(points.size()) < count)
+    points.push_back(bestCandidate(rng, [&](const glm::vec2& q) { return nearestOf(q, points, 1e9f); }));
   return points;
 }
 
@@ -203,27 +215,13 @@ std::vector<glm::vec2> quarterTurnDisk(int count, std::uint64_t seed) {
   require(count >= 4 && count <= 256 && count % 4 == 0,
           "quarterTurnDisk: count = " + std::to_string(count) + " (valid: a multiple of 4 in 4..256)");
   SplitMix64 rng(seed);
-  auto inDisk = [&] {
-    const float r = std::sqrt(rng.uniform()), a = rng.uniform(0.0f, 2.0f * kPi);
-    return glm::vec2(r * std::cos(a), r * std::sin(a));
-  };
   std::vector<glm::vec2> base, all;  // all: every quarter turn of base, so it is closed under turns
   while (int(base.size()) < count / 4) {
-    // Best candidate: the set of turns is symmetric, so a candidate's turns are as far from it as
-    // the candidate itself; its own quarter turn is |q| sqrt(2) away.
-    glm::vec2 best(0.0f);
-    float bestDistance = -1.0f;
-    for (int c = 0; c < 30; ++c) {
-      const glm::vec2 q = inDisk();
-      float nearest = glm::length(q) * std::sqrt(2.0f);
-      for (const glm::vec2& p : all) nearest = std::min(nearest, glm::length(q - p));
-      if (nearest > bestDistance) {
-        bestDistance = nearest;
-        best = q;
-      }
-    }
-    base.push_back(best);
-    for (const glm::vec2& t : quarterTurns(std::span<const glm::vec2>(&best, 1))) all.push_back(t);
+    // The set of turns is symmetric, so a candidate's own turns are as far from it as the candidate
+    // itself; its own quarter turn is |q| sqrt(2) away.
+    base.push_back(
+        bestCandidate(rng, [&](const glm::vec2& q) { return nearestOf(q, all, glm::length(q) * std::sqrt(2.0f)); }));
+    for (const glm::vec2& t : quarterTurns(std::span<const glm::vec2>(&base.back(), 1))) all.push_back(t);
   }
   return base;
 }
