@@ -2,6 +2,7 @@
 
 #include <cstddef>
 
+#include "core/view_order.hpp"
 #include "gl/texture.hpp"
 
 namespace shadowlab::gl {
@@ -12,7 +13,7 @@ struct Vertex {
 };
 }  // namespace
 
-GpuMesh uploadMesh(const Mesh& mesh, const std::string& label) {
+GpuMesh uploadMesh(const Mesh& mesh, const std::string& label, bool viewOrders) {
   std::vector<Vertex> interleaved(mesh.positions.size());
   for (std::size_t i = 0; i < interleaved.size(); ++i) {
     interleaved[i].position = mesh.positions[i];
@@ -24,11 +25,18 @@ GpuMesh uploadMesh(const Mesh& mesh, const std::string& label) {
   gpu.vertices = makeBuffer(GL_ARRAY_BUFFER, label + ".vertices");
   gpu.indices = makeBuffer(GL_ELEMENT_ARRAY_BUFFER, label + ".indices");
   gpu.indexCount = GLsizei(mesh.indices.size());
+  gpu.viewOrders = viewOrders && !mesh.indices.empty();
+  gpu.centre = mesh.positions.empty() ? glm::vec3(0.0f) : mesh.bounds().center();
+  std::vector<std::uint32_t> indices = mesh.indices;
+  if (gpu.viewOrders) {
+    const std::vector<std::uint32_t> orders = shadowlab::viewOrders(mesh);
+    indices.insert(indices.end(), orders.begin(), orders.end());
+  }
   glBindVertexArray(gpu.vao.id());
   glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices.id());
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(Vertex)), interleaved.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices.id());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(),
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(),
                GL_STATIC_DRAW);
   glEnableVertexAttribArray(kPosition);
   glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
@@ -43,16 +51,33 @@ GpuMesh uploadMesh(const Mesh& mesh, const std::string& label) {
   return gpu;
 }
 
-void GpuMesh::draw() const {
+void GpuMesh::draw(int order) const {
   glBindVertexArray(vao.id());
-  glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+  const std::size_t first = viewOrders && order >= 0 ? std::size_t(order + 1) * std::size_t(indexCount) : 0;
+  glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(first * sizeof(std::uint32_t)));
   countDraws();
+}
+
+int GpuMesh::orderFor(const glm::mat4& model, const glm::vec4& viewer) const {
+  if (!viewOrders) return -1;
+  const glm::vec4 local = glm::inverse(model) * viewer;
+  return viewOrderFor(viewer.w != 0.0f ? glm::vec3(local) / local.w - centre : glm::vec3(local));
 }
 
 GpuScene uploadScene(const Scene& scene, const std::string& label) {
   GpuScene gpu;
+  // Front-to-back orders for the meshes that hide themselves many times over: the alpha-tested ones
+  // (their depth pass and lit shader can discard, so only their early depth test saves the work) of
+  // many triangles (a crown of leaf cards, not a fence panel).
+  std::vector<char> sorted(scene.meshes.size(), 0);
+  for (const SceneObject& o : scene.objects) {
+    const Material& m = scene.materials[o.material];
+    if (m.alphaCutoff > 0.0f && !m.texture.empty() && scene.meshes[o.mesh].triangleCount() >= kViewOrderMinTriangles)
+      sorted[o.mesh] = 1;
+  }
   for (std::size_t i = 0; i < scene.meshes.size(); ++i)
-    gpu.meshes.push_back(uploadMesh(scene.meshes[i], label + ".mesh" + std::to_string(i)));
+    gpu.meshes.push_back(uploadMesh(scene.meshes[i], label + ".mesh" + std::to_string(i), sorted[i] != 0));
   for (const auto& material : scene.materials)
     gpu.materialTextures.push_back(material.texture.empty() ? Texture() : loadTexture(material.texture));
   return gpu;

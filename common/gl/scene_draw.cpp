@@ -49,7 +49,7 @@ std::size_t drawScene(const Program& program, const Scene& scene, const GpuScene
     const GpuMesh& mesh = gpu.meshes[object.mesh];
     glBindVertexArray(mesh.vao.id());
     if (o.beforeDraw) o.beforeDraw(i);
-    mesh.draw();
+    mesh.draw(o.viewer ? mesh.orderFor(object.model, *o.viewer) : -1);
     triangles += std::size_t(mesh.indexCount) / 3;
   }
   glEnable(GL_CULL_FACE);

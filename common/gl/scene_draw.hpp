@@ -25,6 +25,9 @@ struct SceneDrawOptions {
   std::function<bool(std::size_t object)> filter;
   // Called after the object's VAO is bound and its uniforms set, right before it is drawn.
   std::function<void(std::size_t object)> beforeDraw;
+  // The eye (w = 1) or the direction toward it (w = 0): meshes with view orders (gl::GpuMesh) draw
+  // their triangles nearest it first. Empty: every mesh in its own order.
+  std::optional<glm::vec4> viewer;
 };
 
 // Sets a `Light` uniform struct of shaders/common/lighting.glsl (`name` is e.g. "uLight" or

@@ -71,7 +71,7 @@ std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& viewProj,
       glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
       gl::countDraws();
     } else {
-      mesh.draw();
+      mesh.draw(o.viewer ? mesh.orderFor(object.model, *o.viewer) : -1);
     }
     triangles += scene.meshes[object.mesh].triangleCount();
   }

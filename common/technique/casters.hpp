@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 
 #include <glm/glm.hpp>
@@ -43,6 +44,9 @@ struct CasterOptions {
   // The objects in this order (empty: the scene's): a pre-pass draws near to far, so the depth
   // test rejects hidden fragments before their alpha fetch.
   std::span<const std::uint32_t> order;
+  // And within a mesh with view orders (gl::GpuMesh), its triangles nearest the viewer first: the
+  // eye or light position (w = 1), or the direction toward the viewer (w = 0). Empty: mesh order.
+  std::optional<glm::vec4> viewer;
 };
 
 class CasterPass {

@@ -6,14 +6,16 @@
 
 namespace shadowlab::tech {
 
-void DepthPrepass::begin(const SceneCache& scene, const glm::mat4& viewProj, bool draw) {
+void DepthPrepass::begin(const SceneCache& scene, const glm::mat4& viewProj, const glm::vec3& eye, bool draw) {
   // Objects wholly outside the view draw no fragment, but llvmpipe still transforms, clips and
   // bins every vertex of them, in this pass and in the shading pass.
   const std::span<const Aabb> boxes = scene.boxes();
   inView_.assign(boxes.size(), 1);
   culled_ = 0;
+  sorted_ = 0;
   for (std::size_t i = 0; i < boxes.size(); ++i)
     if (shadow::boxOutsideClip(viewProj, boxes[i])) inView_[i] = 0, ++culled_;
+    else if (scene.gpu().meshes[scene.scene().objects[i].mesh].viewOrders) ++sorted_;
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -37,7 +39,12 @@ void DepthPrepass::begin(const SceneCache& scene, const glm::mat4& viewProj, boo
   glClear(GL_STENCIL_BUFFER_BIT);
   glDisable(GL_STENCIL_TEST);
   pass_.draw(scene, viewProj, inView_,
-             {.alphaTest = true, .cullFront = false, .allObjects = true, .alphaLevel0 = false, .order = order_});
+             {.alphaTest = true,
+              .cullFront = false,
+              .allObjects = true,
+              .alphaLevel0 = false,
+              .order = order_,
+              .viewer = glm::vec4(eye, 1.0f)});
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glEnable(GL_STENCIL_TEST);
   // Shade where the depth is the nearest surface's, once: the first fragment sets the stencil to 1.

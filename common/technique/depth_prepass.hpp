@@ -33,21 +33,25 @@ class DepthPrepass {
   void build() { pass_.build(); }
   // Lays down the depth (and stencil 0) of every object, then sets the state for the shading pass.
   // With draw false it only culls (inView, culled) and leaves plain depth LESS with writes on: the
-  // shading pass then discards its own holes (compiled without DEPTH_PREPASS).
-  void begin(const SceneCache& scene, const glm::mat4& viewProj, bool draw = true);
+  // shading pass then discards its own holes (compiled without DEPTH_PREPASS). Objects go near to
+  // far from `eye`, and a mesh with view orders draws its triangles nearest the eye first.
+  void begin(const SceneCache& scene, const glm::mat4& viewProj, const glm::vec3& eye, bool draw = true);
   // Back to plain depth LESS with writes on, stencil off.
   void end();
   // Whether object i can draw a fragment in the last begin()'s view (its world box not wholly
   // outside one clip plane): the shading pass skips the same objects (a filter for gl::drawScene).
   bool inView(std::size_t i) const { return i < inView_.size() && inView_[i]; }
   std::size_t culled() const { return culled_; }  // objects left out by the view
+  // Objects in view whose mesh has view orders: drawn nearest triangle first (here, and by a shading
+  // pass that passes the eye as gl::SceneDrawOptions::viewer).
+  std::size_t sorted() const { return sorted_; }
 
  private:
   CasterPass pass_;
   std::vector<char> inView_;
   std::vector<std::uint32_t> order_;  // near to far
   std::vector<float> distance_;
-  std::size_t culled_ = 0;
+  std::size_t culled_ = 0, sorted_ = 0;
 };
 
 }  // namespace shadowlab::tech

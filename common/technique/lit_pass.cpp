@@ -39,7 +39,7 @@ std::size_t LitPass::draw(const ShadowContext& c, const ShadowTechnique& t, cons
   glDepthMask(GL_TRUE);
   if (s.depthPrepass) {
     if (!prepassBuilt_) prepassBuilt_ = (prepass_.build(), true);
-    prepass_.begin(c.scene, c.frame.projection * c.frame.view);
+    prepass_.begin(c.scene, c.frame.projection * c.frame.view, c.frame.eye);
   }
   p.use();
   p.set("uViewProj", c.frame.projection * c.frame.view);
@@ -54,6 +54,7 @@ std::size_t LitPass::draw(const ShadowContext& c, const ShadowTechnique& t, cons
   options.specular = s.specular;
   options.shininess = s.shininess;
   if (s.depthPrepass) options.filter = [this](std::size_t i) { return prepass_.inView(i); };
+  else options.viewer = glm::vec4(c.frame.eye, 1.0f);  // without a pre-pass: nearest triangles first
   const std::size_t triangles = gl::drawScene(p, c.scene.scene(), c.scene.gpu(), options);
   t.unbindVisibility(1);
   glActiveTexture(GL_TEXTURE0);
