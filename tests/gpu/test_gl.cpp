@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <thread>
 
 #include "app/context.hpp"
@@ -42,6 +43,20 @@ void write(const fs::path& p, const std::string& text) {
 const char* kVert =
     "#version 410 core\nlayout(location = 0) in vec3 aPosition;\nvoid main() { gl_Position = vec4(aPosition, 1.0); }\n";
 const char* kFrag = "#version 410 core\nout vec4 c;\nuniform vec4 uColor;\nvoid main() { c = uColor; }\n";
+
+// kVert and kFrag built from a throwaway shader tree (removed once built).
+std::unique_ptr<gl::Program> flatProgram(const std::string& label) {
+  const fs::path root = fs::temp_directory_path() / "shadowlab_flat_program";
+  write(root / "shaders/t/a.vert", kVert);
+  write(root / "shaders/t/a.frag", kFrag);
+  setenv("SHADOWLAB_ROOT", root.c_str(), 1);
+  auto program = std::make_unique<gl::Program>(label, std::vector<std::string>{"t/a.vert", "t/a.frag"});
+  const bool built = program->build();
+  unsetenv("SHADOWLAB_ROOT");
+  fs::remove_all(root);
+  REQUIRE(built);
+  return program;
+}
 }  // namespace
 
 TEST_CASE("gl: the headless context is OpenGL 4.1 core or newer, with a framebuffer") {
@@ -101,13 +116,8 @@ TEST_CASE("gl: hot reload keeps the last good program and names file and line of
 TEST_CASE("gl: render target, a draw, and a top-row-first read-back") {
   context();
   const int errorsBefore = gl::errorCount();
-  const fs::path root = fs::temp_directory_path() / "shadowlab_draw_test";
-  write(root / "shaders/t/a.vert", kVert);
-  write(root / "shaders/t/a.frag", kFrag);
-  setenv("SHADOWLAB_ROOT", root.c_str(), 1);
-  gl::Program program("draw test", {"t/a.vert", "t/a.frag"});
-  REQUIRE(program.build());
-  unsetenv("SHADOWLAB_ROOT");
+  const auto flat = flatProgram("draw test");
+  const gl::Program& program = *flat;
 
   gl::RenderTarget rt = gl::makeRenderTarget(8, 8, "test target");
   glBindFramebuffer(GL_FRAMEBUFFER, rt.fbo.id());
@@ -131,20 +141,14 @@ TEST_CASE("gl: render target, a draw, and a top-row-first read-back") {
   CHECK(img.at(4, 7)[0] == 0);  // bottom row: blue clear colour
   CHECK(img.at(4, 7)[2] == 255);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  fs::remove_all(root);
   CHECK(gl::errorCount() == errorsBefore);
 }
 
 TEST_CASE("gl: a mesh drawn in its view order meets the depth test nearest first") {
   context();
   const int errorsBefore = gl::errorCount();
-  const fs::path root = fs::temp_directory_path() / "shadowlab_view_order_test";
-  write(root / "shaders/t/a.vert", kVert);
-  write(root / "shaders/t/a.frag", kFrag);
-  setenv("SHADOWLAB_ROOT", root.c_str(), 1);
-  gl::Program program("view order test", {"t/a.vert", "t/a.frag"});
-  REQUIRE(program.build());
-  unsetenv("SHADOWLAB_ROOT");
+  const auto flat = flatProgram("view order test");
+  const gl::Program& program = *flat;
   // Eight quads over the whole viewport at NDC depths -0.7 .. 0.7, in a shuffled order: the vertex
   // shader passes positions through, so the mesh's space is NDC and depth LESS keeps small z.
   Mesh stack;
@@ -195,7 +199,6 @@ TEST_CASE("gl: a mesh drawn in its view order meets the depth test nearest first
   CHECK(sorted.orderFor(turned, {0, 0, -5, 1}) == farFirst);
   glDeleteQueries(1, &query);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  fs::remove_all(root);
   CHECK(gl::errorCount() == errorsBefore);
 }
 
