@@ -27,11 +27,13 @@ GpuMesh uploadMesh(const Mesh& mesh, const std::string& label, bool viewOrders) 
   gpu.indexCount = GLsizei(mesh.indices.size());
   gpu.viewOrders = viewOrders && !mesh.indices.empty();
   gpu.centre = mesh.positions.empty() ? glm::vec3(0.0f) : mesh.bounds().center();
-  std::vector<std::uint32_t> indices = mesh.indices;
+  std::vector<std::uint32_t> withOrders;  // the mesh's own indices, then every view order
   if (gpu.viewOrders) {
+    withOrders = mesh.indices;
     const std::vector<std::uint32_t> orders = shadowlab::viewOrders(mesh);
-    indices.insert(indices.end(), orders.begin(), orders.end());
+    withOrders.insert(withOrders.end(), orders.begin(), orders.end());
   }
+  const std::vector<std::uint32_t>& indices = gpu.viewOrders ? withOrders : mesh.indices;
   glBindVertexArray(gpu.vao.id());
   glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices.id());
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(Vertex)), interleaved.data(), GL_STATIC_DRAW);
