@@ -54,4 +54,20 @@ int viewOrderFor(const glm::vec3& towardViewer) {
   return best;
 }
 
+glm::vec4 viewerOf(const glm::mat4& m) {
+  // Rows x, y, w of the matrix (glm is column-major: m[c][r]); their null vector by cofactors.
+  const glm::vec4 a(m[0][0], m[1][0], m[2][0], m[3][0]), b(m[0][1], m[1][1], m[2][1], m[3][1]),
+      c(m[0][3], m[1][3], m[2][3], m[3][3]);
+  const glm::vec4 n(
+      glm::determinant(glm::mat3(glm::vec3(a.y, a.z, a.w), glm::vec3(b.y, b.z, b.w), glm::vec3(c.y, c.z, c.w))),
+      -glm::determinant(glm::mat3(glm::vec3(a.x, a.z, a.w), glm::vec3(b.x, b.z, b.w), glm::vec3(c.x, c.z, c.w))),
+      glm::determinant(glm::mat3(glm::vec3(a.x, a.y, a.w), glm::vec3(b.x, b.y, b.w), glm::vec3(c.x, c.y, c.w))),
+      -glm::determinant(glm::mat3(glm::vec3(a.x, a.y, a.z), glm::vec3(b.x, b.y, b.z), glm::vec3(c.x, c.y, c.z))));
+  const float length = glm::length(glm::vec3(n));
+  if (std::abs(n.w) > 1e-6f * length) return glm::vec4(glm::vec3(n) / n.w, 1.0f);
+  const glm::vec3 depthRow(m[0][2], m[1][2], m[2][2]);  // clip z grows away from the viewer
+  const glm::vec3 d = glm::vec3(n) / length;
+  return glm::vec4(glm::dot(d, depthRow) > 0.0f ? -d : d, 0.0f);
+}
+
 }  // namespace shadowlab

@@ -25,5 +25,10 @@ std::vector<std::uint32_t> viewOrders(const Mesh& mesh);
 // The order for a viewer in direction `towardViewer` from the mesh (its own space, any length): the
 // direction with the largest dot product; -1 for a zero or non-finite vector.
 int viewOrderFor(const glm::vec3& towardViewer);
+// Where a projection looks from, in world space, for a world-to-clip matrix: its centre of
+// projection (x, y, z, 1) for a perspective one, or for a parallel one the unit direction toward
+// the viewer (x, y, z, 0), the way clip depth falls. The point every ray of the projection meets:
+// the null vector of its x, y and w rows.
+glm::vec4 viewerOf(const glm::mat4& viewProj);
 
 }  // namespace shadowlab

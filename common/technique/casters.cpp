@@ -1,5 +1,7 @@
 #include "technique/casters.hpp"
 
+#include "core/view_order.hpp"
+
 namespace shadowlab::tech {
 
 CasterPass::CasterPass(std::string label, std::string vertexShader, std::string viewProjUniform,
@@ -39,6 +41,9 @@ std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& viewProj,
   int current = -1;
   unsigned prepared = 0;  // the builds whose per-pass uniforms are set
   const std::size_t count = o.order.empty() ? scene.objects.size() : o.order.size();
+  const std::optional<glm::vec4> viewer = o.viewer ? o.viewer
+                                          : o.cull ? std::optional(viewerOf(viewProj))
+                                                   : std::nullopt;
   for (std::size_t n = 0; n < count; ++n) {
     const std::size_t i = o.order.empty() ? n : o.order[n];
     const SceneObject& object = scene.objects[i];
@@ -71,7 +76,7 @@ std::size_t CasterPass::draw(const SceneCache& cache, const glm::mat4& viewProj,
       glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
       gl::countDraws();
     } else {
-      mesh.draw(o.viewer ? mesh.orderFor(object.model, *o.viewer) : -1);
+      mesh.draw(viewer ? mesh.orderFor(object.model, *viewer) : -1);
     }
     triangles += scene.meshes[object.mesh].triangleCount();
   }

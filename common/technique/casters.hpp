@@ -45,7 +45,9 @@ struct CasterOptions {
   // test rejects hidden fragments before their alpha fetch.
   std::span<const std::uint32_t> order;
   // And within a mesh with view orders (gl::GpuMesh), its triangles nearest the viewer first: the
-  // eye or light position (w = 1), or the direction toward the viewer (w = 0). Empty: mesh order.
+  // eye or light position (w = 1), or the direction toward the viewer (w = 0). Empty: where the
+  // pass's own projection looks from (viewerOf), but for a map after the camera's projection
+  // (cull off: the perspective shadow maps), which keeps each mesh's own order.
   std::optional<glm::vec4> viewer;
 };
 

@@ -167,10 +167,7 @@ class ShadowMapLesson : public Lesson {
       gl::beginShadowPass(map_);
       glEnable(GL_POLYGON_OFFSET_FILL);  // [Boreskov2005]: glPolygonOffset(4, 4) against self-shadowing
       glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
-      // The crowns' cards nearest the light first: the depth test rejects the hidden ones before
-      // their alpha test (the same map in any order).
-      shadowTriangles_ = casters_.draw(scene_, light.viewProj(), {},
-                                       {.alphaTest = p_.alphaTest, .viewer = glm::vec4(p_.light.position, 1.0f)});
+      shadowTriangles_ = casters_.draw(scene_, light.viewProj(), {}, {p_.alphaTest, false});
       glDisable(GL_POLYGON_OFFSET_FILL);
       glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer);
       glViewport(0, 0, f.width, f.height);

@@ -72,3 +72,18 @@ TEST_CASE("view orders: each a permutation of whole triangles, nearest the viewe
   CHECK_FALSE(sorted);
   CHECK(viewOrders(Mesh{}).empty());
 }
+
+TEST_CASE("view orders: where a projection looks from") {
+  const glm::vec3 eye(3.0f, 4.0f, -5.0f), target(0.5f, 1.0f, 2.0f);
+  const glm::mat4 view = glm::lookAt(eye, target, glm::vec3(0, 1, 0));
+  const glm::vec4 p = viewerOf(glm::perspective(0.9f, 1.5f, 0.5f, 80.0f) * view);
+  CHECK(p.w == 1.0f);
+  CHECK(glm::length(glm::vec3(p) - eye) < 1e-3f);
+  // A parallel projection: the direction toward the viewer, against the view.
+  const glm::vec4 d = viewerOf(glm::ortho(-10.0f, 10.0f, -10.0f, 10.0f, 1.0f, 50.0f) * view);
+  CHECK(d.w == 0.0f);
+  CHECK(glm::dot(glm::vec3(d), glm::normalize(eye - target)) == doctest::Approx(1.0f).epsilon(1e-5));
+  // An off-centre (oblique) frustum still has its centre at the eye.
+  const glm::vec4 q = viewerOf(glm::frustum(-0.2f, 0.6f, -0.1f, 0.3f, 0.5f, 40.0f) * view);
+  CHECK(glm::length(glm::vec3(q) - eye) < 1e-3f);
+}
