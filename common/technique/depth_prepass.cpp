@@ -6,7 +6,7 @@
 
 namespace shadowlab::tech {
 
-void DepthPrepass::begin(const SceneCache& scene, const glm::mat4& viewProj, const glm::vec3& eye, bool draw) {
+void DepthPrepass::begin(const SceneCache& scene, const glm::mat4& viewProj, bool draw) {
   // Objects wholly outside the view draw no fragment, but llvmpipe still transforms, clips and
   // bins every vertex of them, in this pass and in the shading pass.
   const std::span<const Aabb> boxes = scene.boxes();
@@ -39,12 +39,7 @@ void DepthPrepass::begin(const SceneCache& scene, const glm::mat4& viewProj, con
   glClear(GL_STENCIL_BUFFER_BIT);
   glDisable(GL_STENCIL_TEST);
   pass_.draw(scene, viewProj, inView_,
-             {.alphaTest = true,
-              .cullFront = false,
-              .allObjects = true,
-              .alphaLevel0 = false,
-              .order = order_,
-              .viewer = glm::vec4(eye, 1.0f)});
+             {.alphaTest = true, .cullFront = false, .allObjects = true, .alphaLevel0 = false, .order = order_});
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glEnable(GL_STENCIL_TEST);
   // Shade where the depth is the nearest surface's, once: the first fragment sets the stencil to 1.

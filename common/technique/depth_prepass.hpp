@@ -34,8 +34,8 @@ class DepthPrepass {
   // Lays down the depth (and stencil 0) of every object, then sets the state for the shading pass.
   // With draw false it only culls (inView, culled) and leaves plain depth LESS with writes on: the
   // shading pass then discards its own holes (compiled without DEPTH_PREPASS). Objects go near to
-  // far from `eye`, and a mesh with view orders draws its triangles nearest the eye first.
-  void begin(const SceneCache& scene, const glm::mat4& viewProj, const glm::vec3& eye, bool draw = true);
+  // far, and a mesh with view orders draws its triangles nearest the eye first (CasterPass).
+  void begin(const SceneCache& scene, const glm::mat4& viewProj, bool draw = true);
   // Back to plain depth LESS with writes on, stencil off.
   void end();
   // Whether object i can draw a fragment in the last begin()'s view (its world box not wholly

@@ -39,7 +39,7 @@ std::size_t LitPass::draw(const ShadowContext& c, const ShadowTechnique& t, cons
   glDepthMask(GL_TRUE);
   if (s.depthPrepass) {
     if (!prepassBuilt_) prepassBuilt_ = (prepass_.build(), true);
-    prepass_.begin(c.scene, c.frame.projection * c.frame.view, c.frame.eye);
+    prepass_.begin(c.scene, c.frame.projection * c.frame.view);
   }
   p.use();
   p.set("uViewProj", c.frame.projection * c.frame.view);

@@ -200,7 +200,7 @@ class ShadowMapLesson : public Lesson {
       const bool prepass = tech::prepassOn(p_.prepass, f.renderScale);
       {
         auto t = scope(prepass ? "depth pre-pass" : "view culling");
-        prepass_.begin(scene_, f.projection * f.view, f.eye, prepass);
+        prepass_.begin(scene_, f.projection * f.view, prepass);
       }
       auto t = scope("scene");
       drawScene(f, textureMatrix, prepass);
