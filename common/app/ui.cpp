@@ -282,7 +282,7 @@ std::string editWidget(const Param& p, const char* label) {
       return ImGui::Checkbox(label, &v) ? (v ? "true" : "false") : "";
     }
     case ParamKind::Choice: {
-      const int v = std::clamp(*static_cast<const int*>(p.target), 0, int(p.choices.size()) - 1);
+      const int v = std::max(choiceIndex(p), 0);
       std::string picked;
       if (ImGui::BeginCombo(label, p.choices[std::size_t(v)].c_str())) {
         for (int i = 0; i < int(p.choices.size()); ++i)

@@ -79,8 +79,8 @@ bool applyHotkey(ParamRegistry& params, const std::string& key) {
     if (p.kind == ParamKind::Bool) {
       params.set(p.name, params.get(p.name) == "true" ? "false" : "true");
     } else if (p.kind == ParamKind::Choice) {
-      const int i = *static_cast<const int*>(p.target);
-      params.set(p.name, p.choices[(i + 1) % p.choices.size()]);
+      const int i = choiceIndex(p);
+      params.set(p.name, p.choices[std::size_t(i + 1) % p.choices.size()]);
     } else if (!hotkeyAction(p).empty()) {  // a number: 0 <-> its default
       params.set(p.name, std::strtod(params.get(p.name).c_str(), nullptr) == 0.0 ? p.defaultValue : "0");
     }

@@ -5,6 +5,10 @@
 
 namespace shadowlab {
 
+// The most lights a lit shader takes (MAX_LIGHTS in shaders/common/light.glsl): every lesson,
+// technique and draw call counts to this one number.
+inline constexpr int kMaxLights = 4;
+
 enum class LightKind { Point, Spot, Directional };
 enum class AreaShape { None, Sphere, Rectangle };  // soft shadows: the emitter's extent
 

@@ -144,6 +144,22 @@ Param& ParamRegistry::addChoiceRaw(const std::string& name, int* v, std::vector<
   return insert(std::move(p));
 }
 
+Param& ParamRegistry::addNumberChoice(const std::string& name, int* v, const std::vector<int>& values,
+                                      const std::string& why) {
+  if (values.empty()) throw ParamError("parameter '" + name + "' has no choices");
+  Param p{name, why, ParamKind::Choice, v, 0, float(values.size() - 1)};
+  for (int value : values) p.choices.push_back(std::to_string(value));
+  p.values = values;
+  return insert(std::move(p));
+}
+
+int choiceIndex(const Param& p) {
+  const int v = *static_cast<const int*>(p.target);
+  if (p.values.empty()) return v >= 0 && v < int(p.choices.size()) ? v : -1;
+  const auto it = std::find(p.values.begin(), p.values.end(), v);
+  return it == p.values.end() ? -1 : int(it - p.values.begin());
+}
+
 const Param* ParamRegistry::find(const std::string& name) const {
   const auto it = index_.find(name);
   return it == index_.end() ? nullptr : &params_[it->second];
@@ -168,8 +184,8 @@ std::string ParamRegistry::get(const std::string& name) const {
     case ParamKind::Int: return std::to_string(*static_cast<int*>(p->target));
     case ParamKind::Bool: return *static_cast<bool*>(p->target) ? "true" : "false";
     case ParamKind::Choice: {
-      const int i = *static_cast<int*>(p->target);
-      return (i >= 0 && i < int(p->choices.size())) ? p->choices[i] : std::to_string(i);
+      const int i = choiceIndex(*p);
+      return i >= 0 ? p->choices[std::size_t(i)] : std::to_string(*static_cast<int*>(p->target));
     }
     case ParamKind::Vec3:
     case ParamKind::Color: {
@@ -211,7 +227,8 @@ void ParamRegistry::write(const Param& param, const std::string& rawValue) {
     case ParamKind::Choice: {
       const auto it = std::find(p->choices.begin(), p->choices.end(), value);
       if (it == p->choices.end()) throw bad(join(p->choices));
-      *static_cast<int*>(p->target) = int(it - p->choices.begin());
+      const int i = int(it - p->choices.begin());
+      *static_cast<int*>(p->target) = p->values.empty() ? i : p->values[std::size_t(i)];
       break;
     }
     case ParamKind::Vec3:

@@ -48,10 +48,14 @@ struct Param {
   void* target = nullptr;
   float min = 0, max = 1;            // Float, Int, Vec3 range (inclusive)
   std::vector<std::string> choices;  // Choice
+  std::vector<int> values;           // Choice: the number each choice stores (empty: its index)
   std::string defaultValue;          // captured at registration, in text form
   bool hidden = false;               // camera and light poses: in presets, not in the panel
   std::string hotkey;                // "" or a key name shown in help ("1".."9", "B", ...)
 };
+
+// A Choice's position in its list for the value it stores (-1: none of them).
+int choiceIndex(const Param& p);
 
 class ParamRegistry {
  public:
@@ -66,6 +70,10 @@ class ParamRegistry {
     static_assert(sizeof(E) == sizeof(int), "choices are stored as int-sized enums");
     return addChoiceRaw(name, reinterpret_cast<int*>(v), std::move(choices), why);
   }
+
+  // A number picked from a list (texels per side: 256, 512, ...): the stored value is the number
+  // itself, never an index; any other number is refused by name with the valid ones.
+  Param& addNumberChoice(const std::string& name, int* v, const std::vector<int>& values, const std::string& why);
 
   // Binds a hotkey to a registered parameter (a holder's choice, e.g. for a technique's parameters).
   // Throws ParamError for an unknown name.

@@ -20,8 +20,7 @@ void setLight(const Program& program, const std::string& name, const Light& l) {
 }
 
 void setLights(const Program& program, std::span<const Light> lights) {
-  constexpr std::size_t kMaxLights = 4;  // MAX_LIGHTS in shaders/common/light.glsl
-  if (lights.size() > kMaxLights)
+  if (lights.size() > std::size_t(kMaxLights))
     throw std::invalid_argument(std::to_string(lights.size()) + " lights; the shaders take at most 4");
   for (std::size_t i = 0; i < lights.size(); ++i) setLight(program, "uLights[" + std::to_string(i) + "]", lights[i]);
   program.set("uLightCount", int(lights.size()));

@@ -4,8 +4,6 @@
 
 namespace shadowlab::tech {
 namespace {
-constexpr int kMaxLights = 4;
-
 gl::Texture floatTexture(GLenum internal, int size, const std::string& label) {
   gl::Texture t = gl::makeTexture(GL_TEXTURE_2D, label);
   glBindTexture(GL_TEXTURE_2D, t.id());

@@ -24,7 +24,7 @@ struct FilterableParams {
   bool reuseMaps = true;      // keep a light's moments while nothing they depend on changed (PassKey)
   // 1024^2 and a 2-texel blur: on the showcase both blurred less and sampled finer measured closer
   // to the reference than 512^2 and 4 texels (tools/soft_bench.sh), and the contact stays dark.
-  SoftMapParams maps{2};
+  SoftMapParams maps{.mapSize = 1024};
 };
 
 class FilterableMaps : public ShadowTechnique {
@@ -59,8 +59,8 @@ class FilterableMaps : public ShadowTechnique {
   CasterPass casters_;
   gl::Program blur_{"filterable maps: blur", {"common/fullscreen.vert", "common/blur.frag"}};
   gl::VertexArray vao_;
-  std::array<Target, 4> targets_;  // per light (MAX_LIGHTS)
-  gl::Texture dummy_;              // 1^2 "nothing in front": bound where a light has no map
+  std::array<Target, kMaxLights> targets_;  // per light
+  gl::Texture dummy_;                       // 1^2 "nothing in front": bound where a light has no map
   ShadowStats stats_;
 };
 

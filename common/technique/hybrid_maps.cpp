@@ -247,12 +247,12 @@ void HybridShadowMaps::bindLight(const gl::Program& p, int i, int unitRoot, int 
 void HybridShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) const {
   setBiasUniforms(lit, p_);
   lit.set("uPcfSize", p_.pcfSize | 1);  // an even N has no centre tap: the next odd one
-  for (int i = 0; i < kMaxShadowLights; ++i) bindLight(lit, i, firstUnit + i, firstUnit + kMaxShadowLights + i);
+  for (int i = 0; i < kMaxLights; ++i) bindLight(lit, i, firstUnit + i, firstUnit + kMaxLights + i);
   glActiveTexture(GL_TEXTURE0);
 }
 
 void HybridShadowMaps::unbindVisibility(int firstUnit) const {
-  for (int u = firstUnit; u < firstUnit + 2 * kMaxShadowLights; ++u) {
+  for (int u = firstUnit; u < firstUnit + 2 * kMaxLights; ++u) {
     glActiveTexture(GLenum(GL_TEXTURE0 + u));
     glBindTexture(GL_TEXTURE_2D, 0);
   }

@@ -6,9 +6,6 @@
 #include "technique/scene_cache.hpp"
 
 namespace shadowlab::tech {
-namespace {
-constexpr int kMaxLights = 4;
-}
 
 void LightMesh::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "nodes", &p_.nodes, 4, 256, "grid nodes along the scene's longest side: memory grows with the cube");

@@ -15,10 +15,10 @@
 namespace shadowlab::tech {
 
 struct LightMeshParams {
-  int nodes = 48;         // grid nodes along the scene's longest side (the others at the same spacing)
-  int samples = 16;       // point lights on the sphere for the bake
-  float offset = 0.5f;    // the lookup moves this many cells along the normal (out of the receiver)
-  SoftMapParams maps{1};  // 512^2 per sample map
+  int nodes = 48;                      // grid nodes along the scene's longest side (the others at the same spacing)
+  int samples = 16;                    // point lights on the sphere for the bake
+  float offset = 0.5f;                 // the lookup moves this many cells along the normal (out of the receiver)
+  SoftMapParams maps{.mapSize = 512};  // per sample map
 };
 
 class LightMesh : public ShadowTechnique {

@@ -23,7 +23,7 @@ struct ManyLightsParams {
   // "Measured"). The receiver's slope bias stays on solid receivers: the showcase's steep faces need
   // it. On the leaf cards none, and 0.7 texels along the normal instead (the forest's 16 lights:
   // 2.47x -> 1.99x the noise floor at R 0.6 m, 2.10x -> 1.79x at 1.2 m; the showcase unchanged).
-  SoftMapParams maps{.mapSize = 2, .offsetFactor = 0.0f, .cardSlopeBias = 0.0f, .cardNormalOffset = 0.7f};
+  SoftMapParams maps{.mapSize = 1024, .offsetFactor = 0.0f, .cardSlopeBias = 0.0f, .cardNormalOffset = 0.7f};
 };
 
 class ManyLights : public ShadowTechnique {

@@ -8,6 +8,10 @@ glm::vec4 lightColour(std::size_t i) {
   return colours[i % 4];
 }
 
+Param& declareMapSize(ParamRegistry& r, const std::string& name, int* texels, const std::string& why) {
+  return r.addNumberChoice(name, texels, kMapSizes, why);
+}
+
 std::uint64_t depthBytes(gl::DepthFormat f) { return f == gl::DepthFormat::Depth16 ? 2 : 4; }
 
 void declareBias(ParamRegistry& r, const std::string& n, MapSettings& s) {

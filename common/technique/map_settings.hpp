@@ -6,6 +6,7 @@
 // reads `bias.constant = 0` whichever technique it sets.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "algorithms/light_cameras.hpp"
 #include "core/params.hpp"
@@ -30,7 +31,11 @@ struct MapSettings {
   float spotNear = 0.5f, spotFar = 150.0f;  // the spot frustum's depth range
 };
 
-inline constexpr int kMaxShadowLights = 4;  // MAX_LIGHTS in shaders/common/light.glsl
+// The shadow-map sizes a lesson offers, in texels per side: one table for every technique and lesson.
+inline const std::vector<int> kMapSizes{256, 512, 1024, 2048, 4096, 8192};
+// Registers a map size (texels per side, one of kMapSizes) under `name`.
+Param& declareMapSize(ParamRegistry& r, const std::string& name, int* texels, const std::string& why);
+// MAX_LIGHTS in shaders/common/light.glsl
 // Light i's colour in the god view (its frustum, its cross).
 glm::vec4 lightColour(std::size_t i);
 // Bytes a texel of a depth map takes: 2 for 16 bits, 4 for 24 (padded) and 32F.

@@ -8,19 +8,14 @@ namespace shadowlab::tech {
 PcssShadows::PcssShadows(bool adaptive, PcssParams defaults)
     : adaptive_(adaptive), p_(defaults), maps_(adaptive ? "pcss" : "pcf", defaults.maps) {}
 
-const std::vector<std::string>& PcssShadows::tapCounts() {
-  static const std::vector<std::string> counts{"8", "16", "32", "64"};
-  return counts;
-}
-
-int PcssShadows::searchCount() const { return std::stoi(tapCounts()[std::size_t(p_.searchTaps)]); }
-int PcssShadows::filterCount() const { return std::stoi(tapCounts()[std::size_t(p_.filterTaps)]); }
+int PcssShadows::searchCount() const { return p_.searchTaps; }
+int PcssShadows::filterCount() const { return p_.filterTaps; }
 bool PcssShadows::quadSearchOn() const { return adaptive_ && p_.quadSearch && gl::caps().derivativeControl; }
 
 void PcssShadows::declare(ParamRegistry& r, const std::string& n) {
-  r.addChoice(n + "filter_taps", &p_.filterTaps, tapCounts(), "Poisson taps of the filter, rotated per pixel");
+  r.addNumberChoice(n + "filter_taps", &p_.filterTaps, kTapCounts, "Poisson taps of the filter, rotated per pixel");
   if (adaptive_) {
-    r.addChoice(n + "search_taps", &p_.searchTaps, tapCounts(), "Poisson taps of the blocker search");
+    r.addNumberChoice(n + "search_taps", &p_.searchTaps, kTapCounts, "Poisson taps of the blocker search");
     r.add(n + "max_search", &p_.maxSearch, 0.005f, 0.5f, "cap of the blocker search region (uv)");
     r.add(n + "min_filter", &p_.minFilter, 0, 8, "smallest filter radius (texels)");
     r.add(n + "quad_search", &p_.quadSearch,

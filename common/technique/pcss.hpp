@@ -14,8 +14,8 @@
 namespace shadowlab::tech {
 
 struct PcssParams {
-  int searchTaps = 1;        // index into tapCounts(): 16 blocker-search taps
-  int filterTaps = 1;        // 16 filter taps
+  int searchTaps = 16;       // blocker-search taps (one of kTapCounts)
+  int filterTaps = 16;       // filter taps
   float fixedRadius = 3.0f;  // pcf: kernel radius in texels
   float maxSearch = 0.08f;   // pcss: cap of the search region (uv): a caster near the light is slow
   float minFilter = 1.0f;    // pcss: the smallest filter radius (texels): contacts stay antialiased
@@ -24,13 +24,13 @@ struct PcssParams {
   // reads drop to a quarter (lesson 05's README, "Measured"). Where the context has no
   // GL_ARB_derivative_control, every pixel searches alone, as with this off.
   bool quadSearch = true;
-  SoftMapParams maps{2};  // 1024^2
+  SoftMapParams maps{.mapSize = 1024};
 };
 
 class PcssShadows : public ShadowTechnique {
  public:
   explicit PcssShadows(bool adaptive, PcssParams defaults = {});
-  static const std::vector<std::string>& tapCounts();  // "8" .. "64"
+  static inline const std::vector<int> kTapCounts{8, 16, 32, 64};  // the Poisson disks offered
 
   std::string name() const override { return adaptive_ ? "pcss" : "pcf"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;

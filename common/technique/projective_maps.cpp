@@ -6,7 +6,6 @@
 #include "algorithms/psm/receivers.hpp"
 #include "technique/map_settings.hpp"
 #include "technique/scene_cache.hpp"
-#include "technique/uniform_maps.hpp"
 
 namespace shadowlab::tech {
 namespace {
@@ -40,8 +39,8 @@ int selectCasters(const SceneCache& scene, const psm::Frustum& view, const glm::
 }
 
 void ProjectiveMapSet::declare(ParamRegistry& r, const std::string& n) {
-  r.addChoice(n + "map_size", &p_.mapSize, UniformShadowMaps::mapSizes(),
-              "each light's texel budget is this squared: one map, or a face set sharing it");
+  declareMapSize(r, n + "map_size", &p_.mapSize,
+                 "each light's texel budget is this squared: one map, or a face set sharing it");
   r.addChoice(n + "format", &p_.format, {"16", "24", "32f"}, "depth format (the paper: 24 bits suffice)");
   r.addChoice(n + "filter", &p_.filter, {"nearest", "hardware_2x2"}, "one comparison, or GL_LINEAR compare (2x2 PCF)");
   r.addChoice(n + "bias", &p_.bias, {"constant", "world"},
@@ -77,7 +76,7 @@ void ProjectiveMapSet::init() {
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
 }
 
-int ProjectiveMapSet::totalSide() const { return std::stoi(UniformShadowMaps::mapSizes()[std::size_t(p_.mapSize)]); }
+int ProjectiveMapSet::totalSide() const { return p_.mapSize; }
 
 // One array texture per light, reallocated only when its side or format changes or it needs more
 // layers (a face set going from 3 to 5 faces), with a framebuffer whose depth is one layer.

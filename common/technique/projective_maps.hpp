@@ -32,8 +32,8 @@ enum class ProjectiveBias { Constant, WorldTexel };
 enum class ProjectiveFilter { Nearest, Hardware2x2 };
 
 struct ProjectiveMapParams {
-  int mapSize = 3;                                    // index into UniformShadowMaps::mapSizes(): side of the TOTAL
-  gl::DepthFormat format = gl::DepthFormat::Depth24;  // the paper: 24 bits suffice for the inverse projection
+  int mapSize = 2048;                                       // texels per side of a light's TOTAL (kMapSizes)
+  gl::DepthFormat format = gl::DepthFormat::Depth24;        // the paper: 24 bits suffice for the inverse projection
   ProjectiveFilter filter = ProjectiveFilter::Hardware2x2;  // GL_LINEAR compare: hardware 2x2 PCF
   ProjectiveBias bias = ProjectiveBias::WorldTexel;         // fix 4; Constant is what it replaces
   float constantBias = 0.0005f;                             // window-depth units subtracted before the comparison

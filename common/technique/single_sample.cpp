@@ -7,10 +7,10 @@ namespace shadowlab::tech {
 SingleSampleSoft::SingleSampleSoft(Kind kind, SingleSampleParams defaults)
     : kind_(kind), p_(defaults), maps_(kind == Kind::Parker ? "parker" : "haines", defaults.maps) {}
 
-int SingleSampleSoft::searchCount() const { return std::stoi(PcssShadows::tapCounts()[std::size_t(p_.searchTaps)]); }
+int SingleSampleSoft::searchCount() const { return p_.searchTaps; }
 
 void SingleSampleSoft::declare(ParamRegistry& r, const std::string& n) {
-  r.addChoice(n + "search_taps", &p_.searchTaps, PcssShadows::tapCounts(), "taps looking for the nearest blocker");
+  r.addNumberChoice(n + "search_taps", &p_.searchTaps, PcssShadows::kTapCounts, "taps looking for the nearest blocker");
   r.add(n + "max_search", &p_.maxSearch, 0.005f, 0.5f, "cap of the search region (uv)");
   r.addChoice(n + "profile", &p_.profile, {"exact", "linear"},
               "shade the penumbra with A_frac or its linear approximation (1 + a/R) / 2");

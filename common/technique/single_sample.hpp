@@ -14,12 +14,12 @@
 namespace shadowlab::tech {
 
 struct SingleSampleParams {
-  int searchTaps = 2;       // index into PcssShadows::tapCounts(): 32 taps
+  int searchTaps = 32;      // taps of the search (one of PcssShadows::kTapCounts)
   float maxSearch = 0.08f;  // cap of the search region (uv)
   soft::Profile profile = soft::Profile::Exact;
   float planeHeight = 0.0f;      // haines: the receiving plane y = h
   float planeTolerance = 0.02f;  // haines: how far from it a receiver still counts
-  SoftMapParams maps{2};
+  SoftMapParams maps{.mapSize = 1024};
 };
 
 class SingleSampleSoft : public ShadowTechnique {

@@ -3,12 +3,11 @@
 #include <cmath>
 
 #include "algorithms/soft_shadows.hpp"
+#include "technique/map_settings.hpp"
 #include "technique/scene_cache.hpp"
-#include "technique/uniform_maps.hpp"
 
 namespace shadowlab::tech {
 namespace {
-constexpr int kMaxLights = 4;  // MAX_LIGHTS in shaders/common/light.glsl
 const glm::vec4 kFrustumColour{1.0f, 0.9f, 0.3f, 1.0f};
 }  // namespace
 
@@ -17,7 +16,7 @@ void setTaps(const gl::Program& p, const std::string& name, const std::vector<gl
 }
 
 void SoftMaps::declare(ParamRegistry& r, const std::string& n, bool reuseSwitch) {
-  r.addChoice(n + "map_size", &p_.mapSize, UniformShadowMaps::mapSizes(), "texels per side of each light sample's map");
+  declareMapSize(r, n + "map_size", &p_.mapSize, "texels per side of each light sample's map");
   r.add(n + "bias.constant", &p_.bias, 0, 8, "depth bias in texels of world size at the receiver");
   r.add(n + "bias.slope", &p_.slopeBias, 0, 8, "depth bias in texels per unit of tan(theta)");
   r.add(n + "bias.normal_offset", &p_.normalOffset, 0, 4, "look up from this many texels along the normal");
@@ -30,7 +29,7 @@ void SoftMaps::declare(ParamRegistry& r, const std::string& n, bool reuseSwitch)
     r.add(n + "reuse_maps", &p_.reuseMaps, "keep the maps while nothing they depend on changes (a still light)");
 }
 
-int SoftMaps::mapSize() const { return std::stoi(UniformShadowMaps::mapSizes()[std::size_t(p_.mapSize)]); }
+int SoftMaps::mapSize() const { return p_.mapSize; }
 
 void SoftMaps::init() {
   casters_.build();

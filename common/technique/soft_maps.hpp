@@ -23,7 +23,7 @@
 namespace shadowlab::tech {
 
 struct SoftMapParams {
-  int mapSize = 2;  // index into UniformShadowMaps::mapSizes(): 1024^2 per map
+  int mapSize = 1024;  // texels per side of each map (kMapSizes)
   // Measured on the showcase (tools/soft_bench.sh): at 1 texel each, the normal offset alone kept
   // many point lights at 2.4 times the reference's noise; at these, 1.6 times, without acne.
   float bias = 0.5f;           // constant depth bias, in texels of world size at the receiver

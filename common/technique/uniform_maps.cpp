@@ -7,17 +7,9 @@
 
 namespace shadowlab::tech {
 
-const std::vector<std::string>& UniformShadowMaps::mapSizes() {
-  static const std::vector<std::string> sizes{"256", "512", "1024", "2048", "4096", "8192"};
-  return sizes;
-}
-
-int UniformShadowMaps::size2D() const { return std::stoi(mapSizes()[std::size_t(p_.mapSize)]); }
-int UniformShadowMaps::sizeCube() const { return std::stoi(mapSizes()[std::size_t(p_.cubeSize)]); }
-
 void UniformShadowMaps::declare(ParamRegistry& r, const std::string& n) {
-  r.addChoice(n + "map_size", &p_.mapSize, mapSizes(), "directional and spot map resolution (texels per side)");
-  r.addChoice(n + "cube_size", &p_.cubeSize, mapSizes(), "point light cube-map face resolution");
+  declareMapSize(r, n + "map_size", &p_.mapSize, "directional and spot map resolution (texels per side)");
+  declareMapSize(r, n + "cube_size", &p_.cubeSize, "point light cube-map face resolution (texels per side)");
   r.addChoice(n + "format", &p_.format, {"16", "24", "32f"}, "depth format of every map");
   r.addChoice(n + "filter", &p_.filter, {"nearest", "hardware_2x2", "pcf_nxn", "poisson"},
               "one comparison, GL_LINEAR compare (2x2), N x N taps, or 16 rotated Poisson taps");
@@ -64,7 +56,7 @@ void UniformShadowMaps::fitLight(const ShadowContext& c, int i, const shadow::Co
            : light.kind == LightKind::Directional ? Type::Ortho
            : light.kind == LightKind::Spot        ? Type::Perspective
                                                   : Type::Cube;
-  const int size = l.type == Type::Cube ? sizeCube() : size2D();
+  const int size = l.type == Type::Cube ? p_.cubeSize : p_.mapSize;
   if (l.type == Type::None) {
     l.map = {};
     l.rendered.clear();
@@ -172,7 +164,7 @@ void UniformShadowMaps::pushShapes(const ShadowContext& c) const {
 // The lit program specialised for this frame: each light's kind of map, the filter, its size.
 std::vector<std::string> UniformShadowMaps::shaderDefines() const {
   std::string types;
-  for (int i = 0; i < kMaxShadowLights; ++i)
+  for (int i = 0; i < kMaxLights; ++i)
     types +=
         std::string(i ? ", " : "") + std::to_string(i < int(lights_.size()) ? int(lights_[std::size_t(i)].type) : 0);
   std::vector<std::string> defines{"SHADOW_TYPES " + types, "SHADOW_FILTER " + std::to_string(int(p_.filter)),
@@ -193,7 +185,7 @@ void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) co
   lit.set("uReceiverPlane", p_.receiverPlane);
   const bool nearest = p_.filter == Filter::Nearest || p_.filter == Filter::BoxNxN;
   const GLuint sampler = nearest ? compareNearest_.id() : compareLinear_.id();
-  for (int i = 0; i < kMaxShadowLights; ++i) {
+  for (int i = 0; i < kMaxLights; ++i) {
     const PerLight* l = i < int(lights_.size()) ? &lights_[std::size_t(i)] : nullptr;
     const Type type = l ? l->type : Type::None;
     const std::string n = "[" + std::to_string(i) + "]";
@@ -203,7 +195,7 @@ void UniformShadowMaps::bindVisibility(const gl::Program& lit, int firstUnit) co
       lit.set(("uShadowTexel" + n).c_str(), l->texel);
       lit.set(("uShadowSize" + n).c_str(), float(l->map.size));
     }
-    const int unit2D = firstUnit + i, unitCube = firstUnit + kMaxShadowLights + i;
+    const int unit2D = firstUnit + i, unitCube = firstUnit + kMaxLights + i;
     lit.set(("uShadowMap" + std::to_string(i)).c_str(), unit2D);
     lit.set(("uShadowCube" + std::to_string(i)).c_str(), unitCube);
     const bool cube = type == Type::Cube, flat = type == Type::Ortho || type == Type::Perspective;
@@ -224,7 +216,7 @@ void UniformShadowMaps::describePostProjective(const ShadowContext& c, int light
 }
 
 void UniformShadowMaps::unbindVisibility(int firstUnit) const {
-  for (int u = firstUnit; u < firstUnit + 2 * kMaxShadowLights; ++u) glBindSampler(GLuint(u), 0);
+  for (int u = firstUnit; u < firstUnit + 2 * kMaxLights; ++u) glBindSampler(GLuint(u), 0);
 }
 
 }  // namespace shadowlab::tech

@@ -25,8 +25,8 @@ enum class Filter { Nearest, Hardware2x2, BoxNxN, Poisson };
 
 // Bias, fit, culling and the spot's range come from MapSettings (shared with the hybrid maps).
 struct UniformMapParams : MapSettings {
-  int mapSize = 3;                                    // index into mapSizes(): 2048^2 (directional, spot)
-  int cubeSize = 2;                                   // 1024^2 per cube face
+  int mapSize = 2048;                                 // texels per side (directional, spot), one of kMapSizes
+  int cubeSize = 1024;                                // texels per side of a cube face
   gl::DepthFormat format = gl::DepthFormat::Depth24;  // every map's depth format
   Filter filter = Filter::Hardware2x2;                // GL_LINEAR on a comparison sampler: free 2x2 PCF
   int pcfSize = 3;                                    // N of N x N PCF (odd)
@@ -40,7 +40,6 @@ struct UniformMapParams : MapSettings {
 class UniformShadowMaps : public ShadowTechnique {
  public:
   explicit UniformShadowMaps(UniformMapParams defaults = {}) : p_(defaults) {}
-  static const std::vector<std::string>& mapSizes();  // "256" .. "8192"
 
   std::string name() const override { return "uniform"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
@@ -82,8 +81,6 @@ class UniformShadowMaps : public ShadowTechnique {
   void fitLight(const ShadowContext& c, int i, const shadow::ConvexVolume& view);
   void renderLight(const ShadowContext& c, int i);
   void pushShapes(const ShadowContext& c) const;
-  int size2D() const;
-  int sizeCube() const;
 
   UniformMapParams p_;
   std::vector<PerLight> lights_;

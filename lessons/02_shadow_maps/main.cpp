@@ -28,6 +28,7 @@
 #include "gl/shadow_map.hpp"
 #include "technique/casters.hpp"
 #include "technique/depth_prepass.hpp"
+#include "technique/map_settings.hpp"
 #include "technique/map_view.hpp"
 #include "technique/pass_key.hpp"
 #include "technique/scene_cache.hpp"
@@ -38,11 +39,10 @@ namespace {
 
 enum class View { Lit, Visibility, LightDepth, ShadowMap };
 enum class Compare { Hardware, Manual, CpuVertex, Off };
-const std::vector<std::string> kMapSizes{"256", "512", "1024", "2048", "4096"};
 
 struct Params {
   tech::SceneChoice scene{2, 100000};  // forest: alpha-tested casters; the depth pass draws all of it again
-  int mapSize = 3;                     // index into kMapSizes: 2048^2 texels
+  int mapSize = 2048;                  // texels per side (one of tech::kMapSizes)
   gl::DepthFormat format = gl::DepthFormat::Depth24;  // 16 bits shows banding and acne first
   Compare compare = Compare::Hardware;                // ARB_shadow in the sampler, or the same test by hand
   float offsetFactor = 4.0f;                          // glPolygonOffset factor: bias grows with the depth slope
@@ -78,7 +78,7 @@ class ShadowMapLesson : public Lesson {
     camera.aim({0, 1.5f, 0}, 30.0f, 0.55f);  // the forest from above the fence
     tech::SceneCache::declare(r, &p_.scene, "procedural scene (forest: alpha-tested leaves and fence)",
                               "scene size: both passes draw every triangle");
-    r.addChoice("map_size", &p_.mapSize, kMapSizes, "shadow-map resolution: texels per side");
+    tech::declareMapSize(r, "map_size", &p_.mapSize, "shadow-map resolution: texels per side");
     r.addChoice("format", &p_.format, {"16", "24", "32f"}, "depth texture format (ARB_depth_texture: 16, 24, 32F bits)")
         .hotkey = "F";
     r.addChoice("compare", &p_.compare, {"hardware", "manual", "cpu_vertex", "off"},
@@ -134,7 +134,7 @@ class ShadowMapLesson : public Lesson {
 
   void update(const FrameInfo& f) override {
     if (scene_.update(p_.scene)) cpuVisibility_.clear();
-    const int size = std::stoi(kMapSizes[std::size_t(p_.mapSize)]);
+    const int size = p_.mapSize;
     if (map_.size != size || map_.format != p_.format) map_ = gl::makeShadowMap(size, p_.format, "02 shadow map");
     if (p_.animate) {
       const float a = float(f.time) * 0.4f;

@@ -164,9 +164,7 @@ class HybridMapsLesson : public Lesson {
     if (p_.technique == Technique::Standard) cam = standard_.camera(measured_);
     if (!cam) return 0.0f;
     const float width = perspective ? 2.0f / cam->projection[1][1] : 2.0f / cam->projection[0][0];
-    const int own = p_.technique == Technique::Standard
-                        ? std::stoi(tech::UniformShadowMaps::mapSizes()[std::size_t(standard_.params().mapSize)])
-                        : hybrid_.params().mapSize;
+    const int own = p_.technique == Technique::Standard ? standard_.params().mapSize : hybrid_.params().mapSize;
     const int texels = p_.bandMapSize > 0 ? p_.bandMapSize : own;
     return p_.bandTexels * width / float(texels);
   }

@@ -60,7 +60,7 @@ struct Params {
   int technique = 3;                  // csm: what engines ship, the baseline of the comparison
   View view = View::Lit;
   bool equalTexels = true;        // every map technique gets `texels` squared per light
-  int texels = 3;                 // 2048^2 per light (index into UniformShadowMaps::mapSizes())
+  int texels = 2048;              // 2048^2 per light (texels per side, one of tech::kMapSizes)
   int quarter[4] = {0, 1, 2, 3};  // the four-up view: uniform, psm, lispsm, csm
   float ambient = 0.1f;
   Impl impl = Impl::Reference;  // student: your split scheme and texel snapping drive technique=csm
@@ -99,8 +99,9 @@ class ShowdownLesson : public Lesson {
                 "lit, V of the measured light, light 0's maps, or four techniques side by side")
         .hotkey = "V";
     r.add("equal_texels", &p_.equalTexels, "every map technique gets `texels` squared per light").hotkey = "U";
-    r.addChoice("texels", &p_.texels, tech::UniformShadowMaps::mapSizes(),
-                "a light's total texel budget (side of the square): one map, a face set or the cascades share it");
+    tech::declareMapSize(
+        r, "texels", &p_.texels,
+        "a light's total texel budget (side of the square): one map, a face set or the cascades share it");
     for (int q = 0; q < 4; ++q)
       r.addChoice("quarter." + std::to_string(q), &p_.quarter[q], names,
                   "the four-up view's technique in quarter " + std::to_string(q) + " (top left, top right, ...)");
@@ -205,7 +206,7 @@ class ShowdownLesson : public Lesson {
     psm_.maps().params().mapSize = p_.texels;
     lispsm_.maps().params().mapSize = p_.texels;
     csm_.maps().params().mapSize = p_.texels;
-    hybrid_.params().mapSize = std::stoi(tech::UniformShadowMaps::mapSizes()[std::size_t(p_.texels)]);
+    hybrid_.params().mapSize = p_.texels;
   }
 
   // view=maps: light 0's map layers along the bottom row (PSM's faces, LiSPSM's map, the cascades),

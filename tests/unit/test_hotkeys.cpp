@@ -87,6 +87,12 @@ TEST_CASE("hotkeys: a bool toggles, a choice steps and wraps, a number toggles b
   CHECK(applyHotkey(r, "1"));
   CHECK(v.count == 3);
   CHECK_FALSE(applyHotkey(r, "Y"));
+  int texels = 1024;  // a number choice steps through its numbers, not through indices
+  r.addNumberChoice("size", &texels, {256, 1024, 4096}, "a size").hotkey = "S";
+  for (int expected : {4096, 256, 1024}) {
+    CHECK(applyHotkey(r, "S"));
+    CHECK(texels == expected);
+  }
 }
 
 TEST_CASE("slider style: small values keep their digits, decades and tiny ranges slide logarithmically") {

@@ -267,3 +267,32 @@ TEST_CASE("params: the panel lists the ungrouped parameters first, then each gro
   CHECK(r.params().size() == 6);  // the registry's own order (presets, --list-params) is unchanged
   CHECK(r.params()[2].name == "b");
 }
+
+TEST_CASE("params: a number choice stores the number itself, refuses any other, and cycles by hotkey") {
+  ParamRegistry reg;
+  int texels = 2048;
+  reg.addNumberChoice("map_size", &texels, {256, 1024, 2048, 4096}, "texels per side");
+  CHECK(reg.get("map_size") == "2048");
+  CHECK(reg.find("map_size")->defaultValue == "2048");
+  CHECK(choiceIndex(*reg.find("map_size")) == 2);
+  reg.set("map_size", "256");
+  CHECK(texels == 256);
+  CHECK(choiceIndex(*reg.find("map_size")) == 0);
+  try {
+    reg.set("map_size", "512");
+    FAIL("512 is not a choice");
+  } catch (const ParamError& e) {
+    CHECK(std::string(e.what()) == "bad value '512' for map_size (choice); valid: 256, 1024, 2048, 4096");
+  }
+  CHECK(texels == 256);
+  CHECK_THROWS_AS(reg.set("map_size", "0"), ParamError);  // never an index
+  reg.find("map_size");
+  texels = 4096;
+  CHECK(reg.get("map_size") == "4096");
+  texels = 300;  // set behind the registry's back: named as the number, and no choice's index
+  CHECK(reg.get("map_size") == "300");
+  CHECK(choiceIndex(*reg.find("map_size")) == -1);
+  reg.resetDefaults();
+  CHECK(texels == 2048);
+  CHECK_THROWS_AS(reg.addNumberChoice("none", &texels, {}, "no values"), ParamError);
+}
