@@ -1,10 +1,58 @@
-# Every lessons/NN_name/main.cpp becomes the program lesson_NN_name, built with the lesson's
-# exercises.cpp (the student file) when there is one.
+# Every lessons/NN_name folder is a lesson:
+#   main.cpp                the program lesson_NN_name: its Params and its numbered passes
+#   exercises.cpp           the student's file, built into the program (and graded: tests/grading)
+#   every other *.cpp       the technique the lesson teaches, GL and all, as the library
+#                           shadowlab_NN_name: its program links it, and so does every later lesson
+#                           that shows it beside its own (SHADOWLAB_USES_NN below)
+# Headers of a lesson's library are included by their folder ("03_shadow_quality/uniform_maps.hpp")
+# from anywhere, by their bare name from inside the folder.
+
+# The lessons whose techniques a lesson holds beside its own, in course order: the showdown holds
+# every one; 03 compares its maps with 04's volumes on the same scene. No cycles (checked below).
+set(SHADOWLAB_USES_03 04)
+set(SHADOWLAB_USES_07 03)
+set(SHADOWLAB_USES_08 03)
+set(SHADOWLAB_USES_09 03 08)
+set(SHADOWLAB_USES_10 03 04 05 07 08 09)
+
 file(GLOB LESSON_MAINS CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/lessons/*/main.cpp)
 set(SHADOWLAB_LESSONS "")
 foreach(main IN LISTS LESSON_MAINS)
   get_filename_component(dir ${main} DIRECTORY)
   get_filename_component(lesson ${dir} NAME)
+  string(SUBSTRING ${lesson} 0 2 nn)
+  set(SHADOWLAB_LESSON_${nn} ${lesson})
+  file(GLOB technique_sources CONFIGURE_DEPENDS ${dir}/*.cpp)
+  list(REMOVE_ITEM technique_sources ${main} ${dir}/exercises.cpp)
+  if(technique_sources)
+    add_library(shadowlab_${lesson} STATIC ${technique_sources})
+    target_include_directories(shadowlab_${lesson} PUBLIC ${CMAKE_SOURCE_DIR}/lessons PRIVATE ${dir})
+    target_link_libraries(shadowlab_${lesson} PUBLIC shadowlab_technique)
+  endif()
+endforeach()
+
+# A lesson's library links those it uses; its program links its own library or, without one,
+# the shared technique layer.
+function(shadowlab_check_uses nn path)
+  foreach(used IN LISTS SHADOWLAB_USES_${nn})
+    if(" ${path} " MATCHES " ${used} ")
+      message(FATAL_ERROR "cmake/lessons.cmake: lessons use each other in a cycle: ${path} ${used}")
+    endif()
+    shadowlab_check_uses(${used} "${path} ${used}")
+  endforeach()
+endfunction()
+foreach(main IN LISTS LESSON_MAINS)
+  get_filename_component(dir ${main} DIRECTORY)
+  get_filename_component(lesson ${dir} NAME)
+  string(SUBSTRING ${lesson} 0 2 nn)
+  shadowlab_check_uses(${nn} ${nn})
+  foreach(used IN LISTS SHADOWLAB_USES_${nn})
+    if(NOT TARGET shadowlab_${SHADOWLAB_LESSON_${used}})
+      message(FATAL_ERROR "cmake/lessons.cmake: lesson ${lesson} uses lesson ${used}, which has no technique library")
+    endif()
+    target_link_libraries(shadowlab_${lesson} PUBLIC shadowlab_${SHADOWLAB_LESSON_${used}})
+  endforeach()
+
   set(target lesson_${lesson})
   set(sources ${main})
   if(EXISTS ${dir}/exercises.cpp)
@@ -12,7 +60,11 @@ foreach(main IN LISTS LESSON_MAINS)
   endif()
   add_executable(${target} ${sources})
   target_include_directories(${target} PRIVATE ${dir})
-  target_link_libraries(${target} PRIVATE shadowlab_technique)
+  if(TARGET shadowlab_${lesson})
+    target_link_libraries(${target} PRIVATE shadowlab_${lesson})
+  else()
+    target_link_libraries(${target} PRIVATE shadowlab_technique)
+  endif()
   list(APPEND SHADOWLAB_LESSONS ${target})
 endforeach()
 set(SHADOWLAB_LESSONS ${SHADOWLAB_LESSONS} CACHE INTERNAL "lesson program targets")

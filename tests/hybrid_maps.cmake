@@ -15,7 +15,7 @@ if(SHADOWLAB_UNIT_ONLY OR NOT TARGET lesson_07_hybrid_maps)
 endif()
 
 add_executable(hybrid_gpu_tests ${CMAKE_CURRENT_SOURCE_DIR}/gpu/hybrid_gl.cpp)
-target_link_libraries(hybrid_gpu_tests PRIVATE shadowlab_test_main shadowlab_technique)
+target_link_libraries(hybrid_gpu_tests PRIVATE shadowlab_test_main shadowlab_07_hybrid_maps)
 doctest_discover_tests(hybrid_gpu_tests PROPERTIES LABELS gpu)
 
 set(hybrid_out ${CMAKE_BINARY_DIR}/test-screenshots/hybrid)

@@ -1,5 +1,5 @@
 #pragma once
-// Cascaded shadow maps' light cameras, GL-free (common/technique/cascades renders them): the view's
+// Cascaded shadow maps' light cameras, GL-free (lessons/10_showdown/cascades renders them): the view's
 // depth range [near, far] cut by the practical split scheme (psm::cascadeSplits, Zhang et al. 2006),
 // and for each slice of the view frustum a directional light camera fitted to it as lesson 03 fits
 // one to the whole view (fitDirectional: the receivers where the slice meets the scene's bounds, the

@@ -1,7 +1,7 @@
 #pragma once
 // Hybrid-resolution shadow maps (lesson 07; Li, Yang, Zhao, Chen, "Hybrid-resolution shadow mapping
 // design and hard shadows anti-aliasing in special effects movies", Chinese Optics 9(1), 2016),
-// GL-free: the reference the GPU passes of common/technique/hybrid_maps are tested against, word
+// GL-free: the reference the GPU passes of lessons/07_hybrid_maps/hybrid_maps are tested against, word
 // for word, and what the lesson's exercises are graded on.
 //
 //   1. the merge sweep   a full-resolution depth map D (N x N), then bottom-up for `levels` levels:

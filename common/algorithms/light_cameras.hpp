@@ -6,7 +6,7 @@
 //   spot         a perspective frustum around the cone, casters culled against it
 //   point        six 90-degree faces (a cube map), casters culled per face, faces whose frustum
 //                misses the view frustum skipped
-// The GL half (common/technique/uniform_maps) renders what these say; the tests check them here.
+// The GL half (lessons/03_shadow_quality/uniform_maps) renders what these say; the tests check them here.
 #include <array>
 #include <functional>
 #include <span>

@@ -8,7 +8,7 @@
 // The shared controls: the TOTAL texels of a light (a face set splits them), the depth format,
 // the filter, and the bias: a constant in depth, or the paper's world-space texel-size bias (§5,
 // fix 4) applied to every caster vertex in the depth pass (shaders/common/depth_psm.vert).
-// shaders/common/shadow_psm.frag reads them.
+// shaders/08_psm/shadow_psm.frag reads them.
 #include <array>
 #include <functional>
 #include <span>
@@ -25,7 +25,7 @@
 
 namespace shadowlab::tech {
 
-inline constexpr int kPsmLights = 2;  // PSM_LIGHTS in shaders/common/shadow_psm.frag
+inline constexpr int kPsmLights = 2;  // PSM_LIGHTS in shaders/08_psm/shadow_psm.frag
 inline constexpr int kPsmMaps = 6;    // PSM_MAPS: a face set has at most six
 
 enum class ProjectiveBias { Constant, WorldTexel };

@@ -1,6 +1,6 @@
 // Lesson 03: shadow-map quality ([Kozlov2004] §2, [Boreskov2005], [Tarantsev-L12]). Everything
 // that makes lesson 02's maps good, each a switch, in the uniform shadow-map technique
-// (common/technique/uniform_maps.cpp and shaders/common/shadow_uniform.frag, which this lesson is
+// (lessons/03_shadow_quality/uniform_maps.cpp and shaders/03_shadow_quality/shadow_uniform.frag, which this lesson is
 // about):
 //   bias      constant, slope-scaled (polygon offset and in the shader), normal offset, receiver
 //             plane, front-face culling in the depth pass
@@ -26,8 +26,8 @@
 #include "technique/map_view.hpp"
 #include "technique/no_shadows.hpp"
 #include "technique/scene_cache.hpp"
-#include "technique/stencil_volumes.hpp"
-#include "technique/uniform_maps.hpp"
+#include "04_shadow_volumes/stencil_volumes.hpp"
+#include "uniform_maps.hpp"
 
 using namespace shadowlab;
 

@@ -1,7 +1,7 @@
 // Lesson 04: stencil shadow volumes, done right. The lecture's passes ([Tarantsev-L12], shadow
 // volumes) made robust after Everitt and Kilgard, "Practical and Robust Stenciled Shadow Volumes"
-// ([Everitt2002]), in the stencil-volume technique (common/technique/stencil_volumes.cpp, whose
-// numbered passes are this lesson's; shaders in shaders/common/volumes/):
+// ([Everitt2002]), in the stencil-volume technique (lessons/04_shadow_volumes/stencil_volumes.cpp, whose
+// numbered passes are this lesson's; shaders in shaders/04_shadow_volumes/):
 //   0. edge adjacency           once per mesh: silhouettes later, open meshes found now
 //   1. depth and ambient        the scene once: depth, ka Ia, and V = 0 for the measurement
 //   per light (scissored to its reach):
@@ -28,7 +28,7 @@
 #include "core/scene_gen.hpp"
 #include "exercises.hpp"
 #include "technique/scene_cache.hpp"
-#include "technique/stencil_volumes.hpp"
+#include "stencil_volumes.hpp"
 
 using namespace shadowlab;
 

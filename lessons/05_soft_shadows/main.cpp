@@ -1,7 +1,7 @@
 // Lesson 05: soft shadows (Tarantsev's lecture 12, after Rogers: many point lights, the spherical
 // light's penumbra, A_frac, single-sample soft shadows, the light mesh; and what engines ship:
 // PCF, PCSS, filterable maps). A spherical light of radius R (light0.area = sphere,
-// light0.radius); every approximation is a technique of common/technique, each measured against
+// light0.radius); every approximation is a technique in this folder, each measured against
 // the Embree sphere-light reference (M, --measure):
 //   many    N point lights on the sphere, one map each, averaged         (many_lights.cpp)
 //   pcf     one map from the centre, a fixed Poisson kernel: the baseline (pcss.cpp)
@@ -23,14 +23,14 @@
 #include "app/lesson.hpp"
 #include "core/light_rig.hpp"
 #include "exercises.hpp"
-#include "technique/filterable_maps.hpp"
-#include "technique/light_mesh.hpp"
+#include "filterable_maps.hpp"
+#include "light_mesh.hpp"
 #include "technique/lit_pass.hpp"
-#include "technique/many_lights.hpp"
-#include "technique/pcss.hpp"
+#include "many_lights.hpp"
+#include "pcss.hpp"
 #include "technique/scene_cache.hpp"
-#include "technique/single_sample.hpp"
-#include "technique/soft_theory.hpp"
+#include "single_sample.hpp"
+#include "soft_theory.hpp"
 
 using namespace shadowlab;
 

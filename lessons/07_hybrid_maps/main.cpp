@@ -4,8 +4,8 @@
 // paper renders the full map, then sweeps it bottom-up: every 2x2 block whose depths agree
 // becomes one texel of their mean, for one to three levels, and an index records where the
 // kept texels are; the lookup follows the index down to the finest texel stored. The technique
-// (common/technique/hybrid_maps, its GPU passes in hybrid_build, its GLSL in
-// shaders/common/shadow_hybrid.frag) is this lesson's subject; its GL-free reference is
+// (lessons/07_hybrid_maps/hybrid_maps, its GPU passes in hybrid_build, its GLSL in
+// shaders/07_hybrid_maps/shadow_hybrid.frag) is this lesson's subject; its GL-free reference is
 // common/algorithms/hybrid_map. Against it: lesson 03's uniform map (technique=standard).
 //   criterion  what the merge test reads: window depth (the paper's |m - Dn| / Dn <= eps0),
 //              linear depth, or the depth's derivative (a slope bound)
@@ -21,10 +21,10 @@
 
 #include "app/lesson.hpp"
 #include "exercises.hpp"
-#include "technique/hybrid_maps.hpp"
+#include "hybrid_maps.hpp"
 #include "technique/lit_pass.hpp"
 #include "technique/scene_cache.hpp"
-#include "technique/uniform_maps.hpp"
+#include "03_shadow_quality/uniform_maps.hpp"
 
 using namespace shadowlab;
 

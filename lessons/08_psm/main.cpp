@@ -2,7 +2,7 @@
 // describes it). The depth map is
 // rendered and applied AFTER the camera's projection, in its post-projective space, where the view
 // frustum is the unit cube and near things are big: near shadows get more texels. The PSM
-// technique (common/technique/psm.cpp, shaders/common/shadow_psm.frag) with every fix off:
+// technique (lessons/08_psm/psm.cpp, shaders/08_psm/shadow_psm.frag) with every fix off:
 //   the light there    h = P V L: a finite point (a point light, or a directional one on the plane
 //                      at infinity behind the far face), or a direction (parallel to the near plane)
 //   behind the camera  the light's rays reach the scene through infinity; the original slides a
@@ -24,9 +24,9 @@
 #include "exercises.hpp"
 #include "technique/lit_pass.hpp"
 #include "technique/post_projective_view.hpp"
-#include "technique/psm.hpp"
+#include "psm.hpp"
 #include "technique/scene_cache.hpp"
-#include "technique/uniform_maps.hpp"
+#include "03_shadow_quality/uniform_maps.hpp"
 
 using namespace shadowlab;
 

@@ -1,6 +1,6 @@
 // Lesson 09: Perspective Shadow Maps with every fix of Kozlov et al., "Perspective Shadow Maps: Care
 // and Feeding" (GPU Gems 1 ch. 14; the same paper in Russian from IAE SB RAS), each a switch of the
-// PSM technique (common/technique/psm.cpp, shaders/common/shadow_psm.frag), and LiSPSM and the
+// PSM technique (lessons/08_psm/psm.cpp, shaders/08_psm/shadow_psm.frag), and LiSPSM and the
 // uniform map beside it at equal texels:
 //   fix.inverse  §3    a light behind the camera gets the inverse projection (Zn = -a, Zf = +a):
 //                      a light ray is ordered through infinity, no virtual camera slides back
@@ -26,12 +26,12 @@
 #include "app/lesson.hpp"
 #include "core/light_rig.hpp"
 #include "exercises.hpp"
-#include "technique/lispsm.hpp"
+#include "lispsm.hpp"
 #include "technique/lit_pass.hpp"
 #include "technique/post_projective_view.hpp"
-#include "technique/psm.hpp"
+#include "08_psm/psm.hpp"
 #include "technique/scene_cache.hpp"
-#include "technique/uniform_maps.hpp"
+#include "03_shadow_quality/uniform_maps.hpp"
 
 using namespace shadowlab;
 

@@ -3,7 +3,7 @@
 // exercises.cpp; grade with
 //   ctest --test-dir build/default -L ex10 --output-on-failure
 // and see yours live with  lesson_10_showdown --set impl=student  (technique=csm runs your split
-// scheme, 10.1, and your texel snapping, 10.2; 10.3 is what shaders/common/shadow_cascades.frag does
+// scheme, 10.1, and your texel snapping, 10.2; 10.3 is what shaders/10_showdown/shadow_cascades.frag does
 // for every pixel, written here in C++).
 #include <span>
 #include <vector>

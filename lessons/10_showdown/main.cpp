@@ -1,5 +1,5 @@
 // Lesson 10: the showdown. Every shadow technique of the course in one program, on the same scene,
-// camera and lights, each a module of the technique layer (common/technique), so that the question
+// camera and lights, each the technique of the lesson that teaches it (lessons/NN_name), so that the question
 // of the course can be asked with figures: which technique when?
 //   hard      uniform (lesson 03's fitted maps), psm (lesson 09: PSM with the fixes), lispsm,
 //             csm (cascaded shadow maps: practical splits, blend band, texel snapping per cascade),
@@ -29,21 +29,21 @@
 #include "exercises.hpp"
 #include "core/light_rig.hpp"
 #include "gl/gl.hpp"
-#include "technique/cascades.hpp"
-#include "technique/filterable_maps.hpp"
-#include "technique/hybrid_maps.hpp"
-#include "technique/light_mesh.hpp"
-#include "technique/lispsm.hpp"
+#include "cascades.hpp"
+#include "05_soft_shadows/filterable_maps.hpp"
+#include "07_hybrid_maps/hybrid_maps.hpp"
+#include "05_soft_shadows/light_mesh.hpp"
+#include "09_psm_fixes/lispsm.hpp"
 #include "technique/lit_pass.hpp"
-#include "technique/many_lights.hpp"
+#include "05_soft_shadows/many_lights.hpp"
 #include "technique/no_shadows.hpp"
-#include "technique/pcss.hpp"
+#include "05_soft_shadows/pcss.hpp"
 #include "technique/post_projective_view.hpp"
-#include "technique/psm.hpp"
+#include "08_psm/psm.hpp"
 #include "technique/scene_cache.hpp"
-#include "technique/single_sample.hpp"
-#include "technique/stencil_volumes.hpp"
-#include "technique/uniform_maps.hpp"
+#include "05_soft_shadows/single_sample.hpp"
+#include "04_shadow_volumes/stencil_volumes.hpp"
+#include "03_shadow_quality/uniform_maps.hpp"
 
 using namespace shadowlab;
 

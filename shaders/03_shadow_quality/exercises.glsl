@@ -1,5 +1,5 @@
 // Lesson 03, GLSL exercise: YOUR percentage-closer filter, written in the shader. With impl=student
-// and filter=pcf_nxn, the uniform shadow-map technique (shaders/common/shadow_uniform.frag) filters
+// and filter=pcf_nxn, the uniform shadow-map technique (shaders/03_shadow_quality/shadow_uniform.frag) filters
 // every 2D map lookup with this function:
 //   lesson_03_shadow_quality --set impl=student --set filter=pcf_nxn --set pcf.size=5
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).

@@ -1,5 +1,5 @@
 // Lesson 04, GLSL exercise: YOUR extrusion to infinity, written in the shader. With impl=student and
-// silhouettes=gpu, the volumes' geometry shader (shaders/common/volumes/volume.geom) sends every
+// silhouettes=gpu, the volumes' geometry shader (shaders/04_shadow_volumes/volume.geom) sends every
 // vertex of a volume that lies at infinity through this function: the far ends of the silhouette
 // quads and the far caps of z-fail:
 //   lesson_04_shadow_volumes --set impl=student --preset silhouettes_gpu

@@ -1,5 +1,5 @@
 // Lesson 05, GLSL exercise: YOUR PCSS blocker search, written in the shader. With impl=student and
-// technique=pcss (the default), the PCSS technique (shaders/common/shadow_pcss.frag) searches for
+// technique=pcss (the default), the PCSS technique (shaders/05_soft_shadows/shadow_pcss.frag) searches for
 // the blockers of every pixel with this function:
 //   lesson_05_soft_shadows --set impl=student --preset contact_hardening
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).

@@ -1,5 +1,5 @@
 // Lesson 07, GLSL exercise: YOUR descent through the hybrid map's index, written in the shader.
-// With impl=student, the hybrid technique's visibility (shaders/common/shadow_hybrid.frag) looks up
+// With impl=student, the hybrid technique's visibility (shaders/07_hybrid_maps/shadow_hybrid.frag) looks up
 // every shadow-map tap of every pixel with this function:
 //   lesson_07_hybrid_maps --set impl=student
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
@@ -8,7 +8,7 @@
 // (the far plane) at the root: every pixel is lit, no shadows. Delete its SHADOWLAB_STUB line when
 // you write it.
 //
-// Provided (shaders/common/hybrid_texel.glsl), for you to use:
+// Provided (shaders/07_hybrid_maps/hybrid_texel.glsl), for you to use:
 //   root     R32UI, one texel per 2^levels x 2^levels source texels: a leaf (a stored depth's float
 //            bits) or a pointer, HYBRID_POINTER | r, to record r
 //   records  RGBA32UI, record r at texel (r & 1023, r >> HYBRID_RECORD_ROW_BITS) (1024 a row): the

@@ -1,5 +1,5 @@
 // Lesson 07, GLSL exercise: the reference (sealed in the student handout; exercises.glsl says what
-// the function does). common/hybrid_descent.glsl includes this file unless SHADOWLAB_STUDENT_DESCENT
+// the function does). 07_hybrid_maps/hybrid_descent.glsl includes this file unless SHADOWLAB_STUDENT_DESCENT
 // is set.
 
 // Source texel s (inside the map: 0 <= s < size) of a map of `levels` levels.

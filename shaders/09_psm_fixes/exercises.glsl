@@ -1,6 +1,6 @@
 // Lesson 09, GLSL exercise: YOUR choice of the face map (fix 3), written in the shader. With
 // impl=student and face maps in use (fix.faces=always, or auto when the cone is too wide), the PSM
-// technique (shaders/common/shadow_psm.frag) picks every pixel's map with this function:
+// technique (shaders/08_psm/shadow_psm.frag) picks every pixel's map with this function:
 //   lesson_09_psm_fixes --set impl=student --preset faces_always
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
 // Grade: ctest --test-dir build/default -L ex09 (the GLSL cases run on the GPU, headless, and the

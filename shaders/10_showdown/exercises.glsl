@@ -1,5 +1,5 @@
 // Lesson 10, GLSL exercise: YOUR choice of the cascade, written in the shader. With impl=student the
-// cascaded shadow maps (technique=csm, shaders/common/shadow_cascades.frag) pick every pixel's
+// cascaded shadow maps (technique=csm, shaders/10_showdown/shadow_cascades.frag) pick every pixel's
 // cascade, and the blend band's mix, with this function:
 //   lesson_10_showdown --set impl=student --set csm.colours=on
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).

@@ -1,5 +1,5 @@
 // The maps of common/technique/projective_maps as the lit shader reads them (the perspective
-// shadow maps and LiSPSM, shaders/common/shadow_psm.frag; the cascades, shadow_cascades.frag): per
+// shadow maps and LiSPSM, shaders/08_psm/shadow_psm.frag; the cascades, shadow_cascades.frag): per
 // light up to six maps, the layers of one array texture, each with the matrix that takes a world
 // point to its clip space in one projective step, and the lookup with the receiver's normal offset.
 #include "common/light.glsl"

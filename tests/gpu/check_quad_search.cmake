@@ -1,4 +1,4 @@
-# PCSS's quad search (pcss.quad_search, shaders/common/shadow_pcss.frag): the four pixels of a 2x2
+# PCSS's quad search (pcss.quad_search, shaders/05_soft_shadows/shadow_pcss.frag): the four pixels of a 2x2
 # quad share one blocker search, each reading a quarter of the taps, the sums passed round the quad
 # by fine derivatives (GL_ARB_derivative_control). Against the Embree sphere-light reference
 # (--measure, 64 rays a pixel, 320x180), in the box's contact view, the default view and the forest:
@@ -20,7 +20,7 @@ file(COPY ${SOURCE_DIR}/shaders DESTINATION ${mutant})
 file(MAKE_DIRECTORY ${mutant}/lessons)
 file(CREATE_LINK ${SOURCE_DIR}/textures ${mutant}/textures SYMBOLIC)
 file(CREATE_LINK ${SOURCE_DIR}/lessons/05_soft_shadows ${mutant}/lessons/05_soft_shadows SYMBOLIC)
-set(pcss ${mutant}/shaders/common/shadow_pcss.frag)
+set(pcss ${mutant}/shaders/05_soft_shadows/shadow_pcss.frag)
 file(READ ${pcss} text)
 string(REGEX REPLACE "(vec2 quadSum\\(vec2 v, vec2 corner\\) {)[^}]*}" "\\1 return 4.0 * v; }" mutated "${text}")
 if(mutated STREQUAL text)

@@ -1,8 +1,8 @@
-// The hybrid map's GPU passes (common/technique/hybrid_build) against the CPU reference
+// The hybrid map's GPU passes (lessons/07_hybrid_maps/hybrid_build) against the CPU reference
 // (common/algorithms/hybrid_map), on a real headless context: given the same depth map, the GPU's
 // root grid and records must equal the CPU's word for word, for every criterion, level count,
 // depth format and a size that does not halve evenly; and the GLSL descent
-// (shaders/common/hybrid_descent.glsl) must find, for every source texel, the depth, level and
+// (shaders/07_hybrid_maps/hybrid_descent.glsl) must find, for every source texel, the depth, level and
 // steps hybrid::descend finds. Tolerance: none.
 #include <doctest/doctest.h>
 
@@ -15,7 +15,7 @@
 #include "app/context.hpp"
 #include "core/paths.hpp"
 #include "gl/debug.hpp"
-#include "technique/hybrid_build.hpp"
+#include "07_hybrid_maps/hybrid_build.hpp"
 #include "test_support.hpp"
 
 using namespace shadowlab;
@@ -147,12 +147,12 @@ TEST_CASE("hybrid gpu: an upload reads back as it went in") {
 namespace {
 
 // A probe: for every source texel of the map, the GLSL descent's depth bits, level and steps
-// (shaders/common/hybrid_descent.glsl), written into an RGBA32UI target of the map's size. The
+// (shaders/07_hybrid_maps/hybrid_descent.glsl), written into an RGBA32UI target of the map's size. The
 // shader lives in a scratch shader root next to copies of the includes it tests (the descent
 // itself is exercise 07.5's reference, 07_hybrid_maps/exercises_reference.glsl; the preprocessor
 // expands both sides of its #ifdef, so the student's file is copied too).
 const char* kProbe = R"(#version 410 core
-#include "common/hybrid_descent.glsl"
+#include "07_hybrid_maps/hybrid_descent.glsl"
 uniform usampler2D uRoot, uRecords;
 uniform int uLevels;
 out uvec4 outProbe;
@@ -166,8 +166,8 @@ std::vector<std::uint32_t> probe(const tech::HybridMapGpu& map) {
   const fs::path root = fs::temp_directory_path() / "shadowlab_hybrid_probe";
   fs::create_directories(root / "shaders/common");
   fs::create_directories(root / "shaders/07_hybrid_maps");
-  for (const char* f : {"common/hybrid_descent.glsl", "common/hybrid_texel.glsl", "07_hybrid_maps/exercises.glsl",
-                        "07_hybrid_maps/exercises_reference.glsl"})
+  for (const char* f : {"07_hybrid_maps/hybrid_descent.glsl", "07_hybrid_maps/hybrid_texel.glsl",
+                        "07_hybrid_maps/exercises.glsl", "07_hybrid_maps/exercises_reference.glsl"})
     fs::copy_file(fs::path(configuredSourceRoot()) / "shaders" / f, root / "shaders" / f,
                   fs::copy_options::overwrite_existing);
   fs::copy_file(fs::path(configuredSourceRoot()) / "shaders/common/fullscreen.vert",

@@ -222,7 +222,7 @@ leak() {
     shaders/04_shadow_volumes/exercises_reference.glsl shaders/07_hybrid_maps/exercises_reference.glsl \
     shaders/05_soft_shadows/exercises_reference.glsl shaders/08_psm/exercises_reference.glsl \
     shaders/09_psm_fixes/exercises_reference.glsl shaders/10_showdown/exercises_reference.glsl \
-    shaders/common/volumes/volume.geom \
+    shaders/04_shadow_volumes/volume.geom \
     shaders/common/shadow_bias_slope.glsl shaders/common/soft_answers.glsl; do
     rm -rf "$dir"
     mkdir -p "$dir"

@@ -17,7 +17,7 @@ void cascadeSplits(double zNear, double zFar, int count, double lambda, std::vec
 // much of the next one is blended in: within the last `band` fraction of cascade i's depth range the
 // weight of cascade i + 1 rises linearly from 0 to 1, so the switch leaves no seam (the last cascade
 // has nobody to blend into). cascade = -1 outside [splits.front(), splits.back()]: no map covers it.
-// shaders/common/shadow_cascades.frag mirrors it.
+// shaders/10_showdown/shadow_cascades.frag mirrors it.
 struct CascadeBlend {
   int cascade = -1;
   double nextWeight = 0.0;  // in [0, 1): the weight of cascade + 1

@@ -14,7 +14,7 @@ namespace shadowlab::ex07glsl {
 
 // hybridDescend is declared ahead of the exercise file, which defines it (after this prelude).
 inline const char* const kPrelude = R"(
-#include "common/hybrid_texel.glsl"
+#include "07_hybrid_maps/hybrid_texel.glsl"
 uniform usampler2D uCaseRoot2, uCaseRoot3, uCaseRecords;
 HybridTexel hybridDescend(usampler2D root, usampler2D records, int levels, ivec2 s);
 // Map A: 8x8 source texels, 2 levels (root 2x2); map B: 8x8, 3 levels (root 1x1).

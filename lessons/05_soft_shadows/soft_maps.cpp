@@ -1,0 +1,192 @@
+#include "soft_maps.hpp"
+
+#include <cmath>
+
+#include "algorithms/soft_shadows.hpp"
+#include "technique/map_settings.hpp"
+#include "technique/scene_cache.hpp"
+
+namespace shadowlab::tech {
+namespace {
+const glm::vec4 kFrustumColour{1.0f, 0.9f, 0.3f, 1.0f};
+}  // namespace
+
+void setTaps(const gl::Program& p, const std::string& name, const std::vector<glm::vec2>& taps) {
+  for (std::size_t k = 0; k < taps.size(); ++k) p.set((name + "[" + std::to_string(k) + "]").c_str(), taps[k]);
+}
+
+void SoftMaps::declare(ParamRegistry& r, const std::string& n, bool reuseSwitch) {
+  declareMapSize(r, n + "map_size", &p_.mapSize, "texels per side of each light sample's map");
+  r.add(n + "bias.constant", &p_.bias, 0, 8, "depth bias in texels of world size at the receiver");
+  r.add(n + "bias.slope", &p_.slopeBias, 0, 8, "depth bias in texels per unit of tan(theta)");
+  r.add(n + "bias.normal_offset", &p_.normalOffset, 0, 4, "look up from this many texels along the normal");
+  r.add(n + "bias.offset_factor", &p_.offsetFactor, 0, 8,
+        "glPolygonOffset factor in the depth pass (times the depth slope)");
+  r.add(n + "bias.offset_units", &p_.offsetUnits, 0, 16, "glPolygonOffset units in the depth pass");
+  r.add(n + "bias.card_slope", &p_.cardSlopeBias, 0, 8, "bias.slope on two-sided materials (leaf cards)");
+  r.add(n + "bias.card_normal_offset", &p_.cardNormalOffset, 0, 4, "bias.normal_offset on two-sided materials");
+  if (reuseSwitch)
+    r.add(n + "reuse_maps", &p_.reuseMaps, "keep the maps while nothing they depend on changes (a still light)");
+}
+
+int SoftMaps::mapSize() const { return p_.mapSize; }
+
+void SoftMaps::init() {
+  casters_.build();
+  compare_ = gl::makeCompareSampler(true, label_ + ": compare linear");
+  raw_ = gl::makeRawDepthSampler(label_ + ": raw depth");
+  fbo_ = gl::makeFramebuffer(label_ + ": fbo");
+  ensureArray(1, 1);  // something to bind before the first frame, and with every light off
+}
+
+void SoftMaps::ensureArray(int size, int layers) {
+  if (array_ && size == arraySize_ && layers == arrayLayers_) return;
+  array_ = gl::makeTexture(GL_TEXTURE_2D_ARRAY, label_ + ": maps");
+  glBindTexture(GL_TEXTURE_2D_ARRAY, array_.id());
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, size, size, layers, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
+               nullptr);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  arraySize_ = size;
+  arrayLayers_ = layers;
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, array_.id(), 0, 0);
+  glDrawBuffer(GL_NONE);  // depth only
+  glReadBuffer(GL_NONE);
+  gl::requireComplete(GL_FRAMEBUFFER, label_ + ": fbo");
+}
+
+// ==== 1. the light cameras: one at the sphere's centre per light, fitted to the scene =============
+void SoftMaps::fit(const ShadowContext& c) {
+  lights_.assign(std::min<std::size_t>(c.lights.size(), kMaxLights), {});
+  const shadow::CasterBoxes boxes = c.scene.casterBoxes();
+  int layer = 0;
+  for (std::size_t i = 0; i < lights_.size(); ++i) {
+    const Light& light = c.lights[i];
+    SoftLight& s = lights_[i];
+    std::optional<Light> spot;
+    if (!light.enabled) s.why = "off";
+    else if (light.kind == LightKind::Directional) s.why = "directional: a sphere needs a position";
+    else if (light.kind == LightKind::Spot) spot = light;
+    else if (!(spot = soft::spotCovering(light, c.scene.bounds()))) s.why = "inside the scene: no one frustum";
+    if (!spot) continue;
+    s.radius = light.area == AreaShape::Sphere ? light.radius : 0.0f;
+    const glm::vec2 range =
+        soft::depthRange(shadow::lightViewAlong(spot->position, spot->direction), c.scene.bounds(), p_.minNear);
+    s.nearZ = std::max(p_.minNear, range.x - s.radius);
+    s.farZ = range.y + s.radius;
+    s.casterNearZ = soft::nearestCasterDepth(shadow::lightViewAlong(spot->position, spot->direction), boxes.boxes,
+                                             boxes.casts, s.nearZ);
+    s.spot = *spot;
+    s.centre = shadow::spotCamera(*spot, s.nearZ, s.farZ, boxes, true);
+    s.tanHalfFov = std::tan(0.5f * shadow::spotFieldOfView(*spot));
+    s.firstLayer = layer;
+    s.on = true;
+    layer += int(samples_.size());
+  }
+}
+
+// ==== 2. the depth passes: one map per light and sample point on its sphere ======================
+void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samples, ShadowStats& stats,
+                      bool renderMaps) {
+  samples_.assign(samples.begin(), samples.begin() + std::min<std::size_t>(samples.size(), kMaxSamples));
+  if (samples_.empty()) samples_.push_back(glm::vec3(0.0f));
+  fit(c);
+  for (std::size_t i = 0; i < lights_.size(); ++i)
+    if (!lights_[i].on && c.lights[i].enabled)
+      stats.extra.push_back({"light" + std::to_string(i), "no soft shadow (" + lights_[i].why + ")"});
+  if (!renderMaps) return;
+  int layers = 0;
+  for (const SoftLight& s : lights_) layers += s.on ? int(samples_.size()) : 0;
+  const int size = mapSize();
+  ensureArray(layers > 0 ? size : 1, std::max(layers, 1));
+  const shadow::CasterBoxes boxes = c.scene.casterBoxes();
+  // Every sample's camera first: what the maps depend on, with the scene and the pass's settings.
+  std::vector<shadow::LightCamera> cameras;
+  PassKey key;
+  key << c.scene.revision() << size << arrayLayers_ << p_.offsetFactor << p_.offsetUnits;
+  for (const SoftLight& s : lights_) {
+    if (!s.on) continue;
+    const glm::mat3 toWorld = glm::transpose(glm::mat3(s.centre.view));
+    Light moved = s.spot;  // same axis and cone: the same rotation, moved by R s_k
+    for (const glm::vec3& sample : samples_) {
+      moved.position = s.spot.position + toWorld * (s.radius * sample);
+      cameras.push_back(shadow::spotCamera(moved, s.nearZ, s.farZ, boxes, true));
+      key << s.firstLayer << cameras.back().viewProj() << std::span<const char>(cameras.back().casters);
+      stats.culledCasters += cameras.back().culled;
+    }
+  }
+  stats.bytes += std::uint64_t(arraySize_) * std::uint64_t(arraySize_) * std::uint64_t(arrayLayers_) * 4;
+  if (p_.reuseMaps && key == rendered_) {
+    stats.reusedMaps += int(cameras.size());
+    return;
+  }
+  rendered_ = std::move(key);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, size, size);
+  glDepthMask(GL_TRUE);
+  CasterOptions options;
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < lights_.size(); ++i) {
+    const SoftLight& s = lights_[i];
+    if (!s.on) continue;
+    auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
+    for (std::size_t k = 0; k < samples_.size(); ++k) {
+      const shadow::LightCamera& camera = cameras[next++];
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, array_.id(), 0, s.firstLayer + int(k));
+      glClear(GL_DEPTH_BUFFER_BIT);
+      stats.triangles += casters_.draw(c.scene, camera.viewProj(), camera.casters, options);
+      stats.texels += std::uint64_t(size) * std::uint64_t(size);
+    }
+  }
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glBindFramebuffer(GL_FRAMEBUFFER, c.frame.framebuffer);
+  glViewport(0, 0, c.frame.width, c.frame.height);
+}
+
+// ==== 3. what the visibility shaders read (shaders/05_soft_shadows/soft_maps.glsl) ========================
+void SoftMaps::bind(const gl::Program& p, int unit) const {
+  for (int i = 0; i < kMaxLights; ++i) {
+    const SoftLight* s = i < int(lights_.size()) && lights_[std::size_t(i)].on ? &lights_[std::size_t(i)] : nullptr;
+    const std::string n = "[" + std::to_string(i) + "]";
+    p.set(("uSoftLayer" + n).c_str(), s ? s->firstLayer : -1);
+    if (!s) continue;
+    p.set(("uSoftView" + n).c_str(), s->centre.view);
+    p.set(("uSoftRadius" + n).c_str(), s->radius);
+    p.set(("uSoftTanHalfFov" + n).c_str(), s->tanHalfFov);
+    p.set(("uSoftDepthRange" + n).c_str(), glm::vec2(s->nearZ, s->farZ));
+    p.set(("uSoftCasterNear" + n).c_str(), s->casterNearZ);
+  }
+  for (std::size_t k = 0; k < samples_.size(); ++k)
+    p.set(("uSoftSamples[" + std::to_string(k) + "]").c_str(), samples_[k]);
+  p.set("uSoftSampleCount", int(samples_.size()));
+  p.set("uSoftMapSize", float(mapSize()));
+  p.set("uSoftBias", p_.bias);
+  p.set("uSoftSlopeBias", p_.slopeBias);
+  p.set("uSoftNormalOffset", p_.normalOffset);
+  p.set("uSoftCardSlopeBias", p_.cardSlopeBias);
+  p.set("uSoftCardNormalOffset", p_.cardNormalOffset);
+  p.set("uSoftMaps", unit);
+  p.set("uSoftDepths", unit + 1);
+  for (int u = 0; u < 2; ++u) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit + u));
+    glBindTexture(GL_TEXTURE_2D_ARRAY, array_.id());
+    glBindSampler(GLuint(unit + u), u == 0 ? compare_.id() : raw_.id());
+  }
+  glActiveTexture(GL_TEXTURE0);
+}
+
+void SoftMaps::unbind(int unit) const {
+  for (int u = unit; u < unit + 2; ++u) glBindSampler(GLuint(u), 0);
+}
+
+void SoftMaps::pushShapes(const ShadowContext& c) const {
+  for (const SoftLight& s : lights_)
+    if (s.on) c.debug.frustum(s.centre.viewProj(), kFrustumColour);
+}
+
+}  // namespace shadowlab::tech

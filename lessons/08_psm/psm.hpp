@@ -1,0 +1,92 @@
+#pragma once
+// Perspective Shadow Maps: the depth map rendered and applied in the camera's post-projective
+// space, where near things are big (Stamminger & Drettakis, SIGGRAPH 2002), with each fix of
+// Kozlov et al., "Perspective Shadow Maps: Care and Feeding" (GPU Gems 1 ch. 14) a switch:
+//   fix.inverse  §3    a light behind the camera: the inverse projection instead of the original's
+//                      virtual camera slid back behind every potential caster
+//   fix.clip     §4.1  the light camera fitted to the receivers' rough volumes inside the view
+//                      (a coarse height map, the city's blocks, the room's walls) along the
+//                      smallest cone holding them, instead of every object in the frustum
+//   fix.faces    §4.2  a map on each face of the unit cube the light cannot see (3 to 5, or 6 with
+//                      the light inside), chosen when the cone gets too wide, or forced
+//   bias=world   §5    the world-space texel-size bias a + b L_texel, per caster vertex
+//   fix.fallback       a directional light whose warp is predicted to alias more than the uniform
+//                      map at the same texels gets the uniform map (psm_plan.hpp; the header says
+//                      which, with the predicted ratio)
+// With every switch off it is the original (lesson 08); lesson 09 turns them on one by one.
+// The GL-free plan is algorithms/psm/psm_plan; the maps and their GLSL are projective_maps and
+// shaders/08_psm/shadow_psm.frag. A light's texels are map_size squared however many maps it has.
+#include <vector>
+
+#include "algorithms/psm/psm_plan.hpp"
+#include "technique/projective_maps.hpp"
+#include "technique/technique.hpp"
+
+namespace shadowlab::tech {
+
+struct PsmParams {
+  ProjectiveMapParams maps;                   // texels, format, filter, bias (fix 4)
+  bool inverseProjection = true;              // fix 1
+  bool receiverClipping = true;               // fix 2
+  psm::FaceMode faces = psm::FaceMode::Auto;  // fix 3
+  bool uniformFallback = true;                // the uniform map where the warp cannot help
+  float fallbackRatio = 1.0f;                 // ... predicted to alias more than this times the uniform map
+  int receiverTiles = 8;                      // the rough receiver volumes: large objects in cells of scene/8
+  float maxConeDegrees = 80.0f;               // faces=auto: wider cones switch to cube faces
+  float nearFraction = 0.5f;                  // near plane at this share of the nearest key point
+  bool cullCasters = true;                    // draw only the casters that can shade the view
+  // The original PSM: every fix off, one map however wide, the constant bias.
+  static PsmParams original();
+};
+
+class PerspectiveShadowMaps : public ShadowTechnique {
+ public:
+  explicit PerspectiveShadowMaps(PsmParams defaults = {}) : p_(defaults), maps_(defaults.maps) {}
+  std::string name() const override { return "psm"; }
+  void declare(ParamRegistry& r, const std::string& prefix) override;
+  void init() override { maps_.init(); }
+  void renderShadows(const ShadowContext& c) override;
+  const ShadowStats& stats() const override { return stats_; }
+  std::string visibilityShader() const override { return "08_psm/shadow_psm.frag"; }
+  std::vector<std::string> shaderDefines() const override;
+  void bindVisibility(const gl::Program& lit, int firstUnit) const override { maps_.bind(lit, firstUnit); }
+  void unbindVisibility(int firstUnit) const override { maps_.unbind(firstUnit); }
+  glm::dmat4 postProjectiveCamera(const ShadowContext& c, int light) const override;
+  void describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const override;
+
+  PsmParams& params() { return p_; }
+  // This frame's plan of light i (nullptr for a light without one), and its key points.
+  const psm::PsmPlan* plan(int light) const;
+  std::span<const glm::dvec3> worldKeyPoints(int light) const;
+  // A student's steps (impl=student): the post-projective light, the virtual shift, the inverse
+  // projection, the cone, the face test (in switches()) and the world-space bias (maps()).
+  psm::PsmSwitches& studentSteps() { return student_; }
+  ProjectiveMapSet& maps() { return maps_; }
+  // Draws light i's maps side by side (view=map).
+  void drawMaps(int light, int x, int y, int w, int h) { maps_.drawLayers(light, x, y, w, h); }
+
+ private:
+  struct PerLight {
+    psm::PsmPlanner planner;
+    bool planned = false;
+    std::vector<char> keep;
+    std::vector<Aabb> casterBoxes;
+  };
+  psm::PsmSwitches switches() const;
+  void planLight(const ShadowContext& c, int i, const psm::CameraFrustum& camera);
+  void pushShapes(const ShadowContext& c) const;
+  void addCounters(int i);
+
+  PsmParams p_;
+  ProjectiveMapSet maps_;
+  psm::PsmSwitches student_;
+  std::vector<PerLight> lights_;
+  ReceiverVolumes receiverCache_;
+  std::span<const Aabb> receivers_;
+  ShadowStats stats_;
+};
+
+// The viewer as the PSM maths sees it (double precision, GL projection).
+psm::CameraFrustum viewerFrustum(const ShadowContext& c);
+
+}  // namespace shadowlab::tech

@@ -1,0 +1,139 @@
+// The soft-shadow techniques' shared half (lessons/05_soft_shadows/soft_maps; lesson 05): per light a
+// perspective camera at the centre of its spherical emitter, the sample points on the sphere and
+// one depth map per sample in an array texture. Mirrors common/algorithms/soft_shadows.
+//   view space: the centre camera looks down -z; z = -view.z is the distance along its axis
+//   uv = 0.5 + view.xy / (2 z tan(fov/2)); sample k's camera sits at R s_k in that view space
+#include "common/light.glsl"
+
+#ifndef SOFT_MAX_SAMPLES
+#define SOFT_MAX_SAMPLES 64
+#endif
+
+// A tap loop that whole groups of pixels skip (PCSS's filter, where the search found no blocker)
+// runs to a count held in a uniform, over an array of SOFT_MAX_TAPS: the compiler cannot unroll it
+// then. llvmpipe runs every instruction of an `if` under a mask whether or not a pixel takes it,
+// but it leaves a loop as soon as no pixel of its group (4 x 2 pixels with AVX2) is still in it;
+// and a loop with a count it knows, or can bound by the size of the array indexed, it unrolls (16
+// taps were unrolled, 32 and 64 stayed loops). Lesson 05's default view: 139-162 -> 107-119 ms,
+// the picture byte for byte the same (its README, "What pays on llvmpipe"). Loops that every pixel
+// runs (the search, PCF's filter) stay compiled in: unrolled, they are faster (PCF 109-116 against
+// 116-127 ms as a loop).
+#ifndef SOFT_MAX_TAPS
+#define SOFT_MAX_TAPS 64
+#endif
+
+uniform Light uLights[MAX_LIGHTS];
+uniform int uSoftLayer[MAX_LIGHTS];        // light i's first layer; -1: no soft shadow (lit)
+uniform mat4 uSoftView[MAX_LIGHTS];        // the centre camera's view
+uniform float uSoftRadius[MAX_LIGHTS];     // R
+uniform float uSoftTanHalfFov[MAX_LIGHTS];
+uniform vec2 uSoftDepthRange[MAX_LIGHTS];  // near, far
+uniform float uSoftCasterNear[MAX_LIGHTS]; // the nearest caster along the axis (>= near)
+uniform vec3 uSoftSamples[SOFT_MAX_SAMPLES];  // unit-ball points in the light's view space
+uniform int uSoftSampleCount;
+uniform float uSoftMapSize;
+uniform float uSoftBias, uSoftSlopeBias;  // texels of world size at the receiver; per tan(theta)
+uniform float uSoftNormalOffset;          // texels along the normal
+uniform float uSoftCardSlopeBias, uSoftCardNormalOffset;  // the same two on two-sided materials
+uniform bool uTwoSided;                   // scene.frag's: the receiver is a two-sided card
+uniform sampler2DArrayShadow uSoftMaps;   // comparison, GL_LINEAR: hardware 2x2 PCF per lookup
+uniform sampler2DArray uSoftDepths;       // the same texture, raw: the blocker search reads depths
+
+// Window depth of view distance z in light i's perspective maps (glm::perspective, GL depth [0,1]).
+float softWindowDepth(int i, float z) {
+  vec2 r = uSoftDepthRange[i];
+  return clamp(r.y / (r.y - r.x) * (1.0 - r.x / z), 0.0, 1.0);
+}
+float softLinearDepth(int i, float d) {
+  vec2 r = uSoftDepthRange[i];
+  return r.x * r.y / (r.y - d * (r.y - r.x));
+}
+
+// A receiver seen from light i's centre camera, moved along N by the normal offset first.
+struct SoftReceiver {
+  vec3 view;       // view-space position (after the normal offset)
+  vec2 uv;
+  float z;         // distance along the axis
+  float texel;     // world size of one map texel at the receiver
+  float tanTheta;  // of the angle between N and the direction to the light, capped at 10
+  float slopeBias; // uSoftSlopeBias, or uSoftCardSlopeBias on a two-sided card
+};
+
+SoftReceiver softReceiver(int i, vec3 worldPos, vec3 N) {
+  SoftReceiver r;
+  float cosT = clamp(dot(N, normalize(uLights[i].position - worldPos)), 1e-3, 1.0);
+  float sinT = sqrt(max(1.0 - cosT * cosT, 0.0));
+  float distance = max(-(uSoftView[i] * vec4(worldPos, 1.0)).z, 1e-3);
+  r.texel = 2.0 * distance * uSoftTanHalfFov[i] / uSoftMapSize;
+  r.tanTheta = min(sinT / cosT, 10.0);
+  r.slopeBias = uTwoSided ? uSoftCardSlopeBias : uSoftSlopeBias;
+  float offset = uTwoSided ? uSoftCardNormalOffset : uSoftNormalOffset;
+  r.view = (uSoftView[i] * vec4(worldPos + N * (offset * r.texel * sinT), 1.0)).xyz;
+  r.z = max(-r.view.z, 1e-4);
+  r.uv = 0.5 + r.view.xy / (2.0 * r.z * uSoftTanHalfFov[i]);
+  return r;
+}
+
+float softBias(SoftReceiver r) { return (uSoftBias + r.slopeBias * r.tanTheta) * r.texel; }
+
+// Nothing is known in front of the near plane (behind the light) or beyond the far plane: lit.
+bool softOutside(int i, SoftReceiver r) { return r.z <= uSoftDepthRange[i].x || r.z >= uSoftDepthRange[i].y; }
+
+// The point `view` (centre camera's view space) as sample k of light i sees it: (uv, z).
+vec3 softProjectSample(int i, vec3 view, int k) {
+  vec3 w = view - uSoftRadius[i] * uSoftSamples[k];
+  float z = max(-w.z, 1e-4);
+  return vec3(0.5 + w.xy / (2.0 * z * uSoftTanHalfFov[i]), z);
+}
+
+// Sample k's map at uv for a receiver at view distance z (bias already subtracted): 1 lit, 0
+// shadowed, hardware 2x2 PCF between.
+float softCompare(int i, int k, vec2 uv, float z) {
+  return texture(uSoftMaps, vec4(uv, float(uSoftLayer[i] + k), softWindowDepth(i, z)));
+}
+
+// The stored depth of sample k's map at uv, as a view distance (far outside the map).
+float softDepthAt(int i, int k, vec2 uv) {
+  return softLinearDepth(i, texture(uSoftDepths, vec3(uv, float(uSoftLayer[i] + k))).r);
+}
+
+// The lecture's A_frac of t = a / R and its linear approximation, softVisibleFraction(t) and
+// softProfile(t, linear) (exercise 05.2: sealed in the student handout with 05.1's and 05.3's).
+#include "common/soft_answers.glsl"
+
+// The mean of `count` samples' comparisons: the many point lights on the sphere, each a hard
+// shadow; their average is the fraction of the sphere the point sees, up to the sampling. A sample
+// below the receiver's horizon (its tangent plane, normalView in the light's view space) is hidden
+// by the receiver itself, whatever its map says; normalView = 0 (a grid node) has no horizon.
+float softSampledVisibility(int i, vec3 view, vec3 normalView, float bias, int count) {
+  float v = 0.0;
+  for (int k = 0; k < count; ++k) {
+    if (dot(normalView, uSoftRadius[i] * uSoftSamples[k] - view) < 0.0) continue;
+    vec3 s = softProjectSample(i, view, k);
+    v += softCompare(i, k, s.xy, s.z - bias);
+  }
+  return v / float(count);
+}
+
+// The share of the sphere above the receiver's tangent plane: the light's centre is a = N.(L - p)
+// above it, so A_frac(a / R) of the disk shows (soft::visibleFraction). A map cannot know it: the
+// receiver is not in front of itself. Multiplies the single-map techniques' V.
+float softHorizon(int i, vec3 worldPos, vec3 N) {
+  float a = dot(N, uLights[i].position - worldPos);
+  return uSoftRadius[i] > 0.0 ? softVisibleFraction(a / uSoftRadius[i]) : (a > 0.0 ? 1.0 : 0.0);
+}
+
+// The per-pixel rotation of the Poisson taps (shadow::rotationAngle).
+float softRotation(vec2 pixel) { return fract(sin(dot(pixel, vec2(12.9898, 78.233))) * 43758.5453) * 6.28318530718; }
+
+// The receiver plane (Isidoro 2006) in (uv, z): the depth change per unit of u and v, from the
+// screen derivatives dx, dy of (uv, z); the slope capped at tan(theta) = 10.
+vec2 softReceiverPlane(vec3 dx, vec3 dy, SoftReceiver r, int i) {
+  float det = dx.x * dy.y - dx.y * dy.x;
+  if (abs(det) < 1e-14) return vec2(0.0);
+  vec2 plane = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
+  float cap = 10.0 * 2.0 * r.z * uSoftTanHalfFov[i];
+  float len = length(plane);
+  return len > cap ? plane * (cap / len) : plane;
+}
+
