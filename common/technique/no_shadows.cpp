@@ -3,7 +3,7 @@
 namespace shadowlab::tech {
 
 // Nothing to render: no map, no volume. The stats say so (and that nothing is culled).
-void NoShadows::renderShadows(const ShadowContext&) {
+void NoShadows::render(const ShadowContext&) {
   stats_ = {};
   stats_.culls = false;
 }

@@ -11,11 +11,11 @@ class NoShadows : public ShadowTechnique {
   std::string name() const override { return "none"; }
   void declare(ParamRegistry&, const std::string&) override {}  // nothing to set
   void init() override {}
-  void renderShadows(const ShadowContext& c) override;
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "common/shadow_none.frag"; }
 
  private:
+  void render(const ShadowContext& c) override;
   ShadowStats stats_;
 };
 

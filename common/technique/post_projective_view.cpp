@@ -100,7 +100,7 @@ void PostProjectiveView::drawLines(const ShadowContext& c, const ShadowTechnique
                                    const glm::dmat4& camera, const glm::mat4& view) {
   psm::PostProjectiveShapes shapes;
   addFrame(shapes, camera, psm::homogeneousLight(c.lights[std::size_t(light)]));
-  t.describePostProjective(c, light, shapes);
+  if (const auto* s = dynamic_cast<const PostProjectiveSubject*>(&t)) s->describePostProjective(c, light, shapes);
   struct V {
     glm::vec4 p, c;
   };
@@ -139,7 +139,8 @@ std::optional<Inset> PostProjectiveView::draw(const ShadowContext& c, const Shad
   const Inset corner = inset(c.frame.width, c.frame.height).value_or(Inset{"", 0, 0, c.frame.width, c.frame.height});
   const int w = corner.width, h = corner.height;
   if (target_.width != w || target_.height != h) target_ = gl::makeRenderTarget(w, h, "post-projective view");
-  const glm::dmat4 camera = t.postProjectiveCamera(c, light);
+  const auto* subject = dynamic_cast<const PostProjectiveSubject*>(&t);
+  const glm::dmat4 camera = subject ? subject->postProjectiveCamera(c, light) : glm::dmat4(c.viewerViewProj());
   const glm::mat4 view = displayView();
 
   glBindFramebuffer(GL_FRAMEBUFFER, target_.fbo.id());

@@ -5,7 +5,7 @@
 // directional light lands on the plane just behind the far face, or stays a direction when it is
 // parallel to the near plane; a light behind the camera lands there too, but its rays leave it away
 // from the cube and come back through infinity (Kozlov et al., "Perspective Shadow Maps: Care and
-// Feeding" §3-4). With the technique's own shapes (ShadowTechnique::describePostProjective): its
+// Feeding" §3-4). With the technique's own shapes (PostProjectiveSubject::describePostProjective): its
 // light frusta (through infinity where they go), the cone, the key points, a slid virtual camera's
 // real cube inside it. An inset in the bottom-left corner (the god view has the other), or the whole
 // frame. Any lesson holds one for whichever technique it shows.
@@ -20,7 +20,25 @@
 #include "gl/program.hpp"
 #include "technique/technique.hpp"
 
+namespace shadowlab::psm {
+class PostProjectiveShapes;
+}
+
 namespace shadowlab::tech {
+
+// A technique that shows itself in the post-projective view (the uniform maps, PSM, LiSPSM, the
+// cascades); any other technique gets the viewer's space and no shapes of its own.
+class PostProjectiveSubject {
+ public:
+  virtual ~PostProjectiveSubject() = default;
+  // The camera whose post-projective space shows light `light`: the viewer's (the default), or a
+  // perspective shadow map's virtual camera slid back behind it.
+  virtual glm::dmat4 postProjectiveCamera(const ShadowContext& c, int light) const {
+    return glm::dmat4(c.viewerViewProj());
+  }
+  // The technique's own shapes in that space: its light frusta, cones, key points.
+  virtual void describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const = 0;
+};
 
 class PostProjectiveView {
  public:

@@ -1,11 +1,15 @@
 #pragma once
 // The technique layer: every shadow technique of the course as a module that a lesson, the A/B
-// split and the showdown can hold, several at once. A technique
+// split and the showdown can hold, several at once. Each lives in the lesson that teaches it
+// (lessons/03_shadow_quality/uniform_maps, lessons/04_shadow_volumes/stencil_volumes, ...). A
+// technique
 //   declare(r, prefix)    registers its parameters under a prefix ("" keeps the bare names, for the
 //                         lesson whose subject it is; the showdown gives each its own prefix)
 //   init()                creates its GL resources (programs, samplers)
-//   renderShadows(c)      fits itself to the viewer, the scene and the lights (the GL-free part lives
-//                         in common/algorithms), then renders its shadow passes under timer scopes
+//   renderShadows(c)      this frame's shadow passes: render(c), its stages in order (fit itself
+//                         to the viewer, the scene and the lights, then draw its maps under timer
+//                         scopes), then pushShapes(c) for the god view. The lesson that teaches a
+//                         technique calls the stages itself, under its own numbered banners.
 //   then, for the lit pass, one of two ways:
 //     map techniques      name a fragment shader defining the one GLSL function every lit shader
 //                         calls (see shaders/common/scene.frag),
@@ -13,8 +17,7 @@
 //                         and bind what it reads (bindVisibility); LitPass links the two
 //     lit-pass owners     (stencil volumes) draw the lit frame themselves: renderLit(c, lit)
 //   stats()               shadow triangles, texels, bytes, culled casters, skipped faces, reused maps
-// and pushes its debug shapes (frusta, cones, volumes) for the god view while it renders.
-// docs/adding_a_technique.md walks through writing one, with the uniform shadow map as the example.
+// docs/adding_a_technique.md walks through writing one.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -27,10 +30,6 @@
 #include "core/light.hpp"
 #include "core/params.hpp"
 #include "gl/program.hpp"
-
-namespace shadowlab::psm {
-class PostProjectiveShapes;
-}
 
 namespace shadowlab::tech {
 
@@ -79,9 +78,15 @@ class ShadowTechnique {
   virtual std::string name() const = 0;  // the choice's name: "uniform", "volumes"
   virtual void declare(ParamRegistry& r, const std::string& prefix) = 0;
   virtual void init() = 0;
-  // Shadow passes for this frame's viewer. The god view re-renders a frame from outside: a
-  // technique then keeps the maps the viewer's frame made (frame.godView).
-  virtual void renderShadows(const ShadowContext& c) = 0;
+  // This frame's shadow passes for the viewer (render), then the god view's shapes. The god view
+  // draws the viewer's frame again from outside (frame.godView): the maps that frame made stay, and
+  // only the shapes are pushed again.
+  void renderShadows(const ShadowContext& c) {
+    if (!c.frame.godView) render(c);
+    pushShapes(c);
+  }
+  // The shapes the god view draws: the light frusta, cones and volumes of this frame's passes.
+  virtual void pushShapes(const ShadowContext& c) const {}
   virtual const ShadowStats& stats() const = 0;
 
   // ---- map techniques: the lesson's lit shader calls shadowVisibility() -----------------------
@@ -97,15 +102,9 @@ class ShadowTechnique {
   virtual bool ownsLitPass() const { return false; }
   virtual void renderLit(const ShadowContext& c, const LitSettings& lit) {}
 
-  // ---- the post-projective view (technique/post_projective_view) ---------------------------------
-  // The camera whose post-projective space shows light `light` of this technique: the viewer's
-  // (the default), or a perspective shadow map's virtual camera slid back behind it.
-  virtual glm::dmat4 postProjectiveCamera(const ShadowContext& c, int light) const {
-    return glm::dmat4(c.viewerViewProj());
-  }
-  // The technique's own shapes in that space: its light frusta, cones, key points (none: only the
-  // unit cube, the squashed scene and the light are drawn).
-  virtual void describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const {}
+ protected:
+  // The passes for the viewer's frame, in order: fit, cull, render (never for the god view's).
+  virtual void render(const ShadowContext& c) = 0;
 };
 
 }  // namespace shadowlab::tech

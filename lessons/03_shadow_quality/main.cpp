@@ -123,9 +123,16 @@ class ShadowQualityLesson : public Lesson {
     tech::ShadowTechnique* const techniques[] = {&maps_, &volumes_, &none_};
     tech::ShadowTechnique& technique = *techniques[int(p_.technique)];
 
-    // ==== 1. the light cameras: fit, cull casters, skip cube faces (algorithms/light_cameras) =====
-    // ==== 2. shadow passes: one map per directional or spot light, six faces per point light =====
-    technique.renderShadows(c);
+    if (p_.technique == Technique::Uniform && !f.godView) {
+      // ==== 1. the light cameras: fit, cull casters, skip cube faces (algorithms/light_cameras) ===
+      maps_.fitLights(c);
+      // ==== 2. shadow passes: polygon offset; one map per directional or spot light, six faces ====
+      //         per point light (uniform_maps.cpp, renderDepth)
+      maps_.renderDepth(c);
+      maps_.pushShapes(c);  // the light frusta, for the god view
+    } else {
+      technique.renderShadows(c);  // lesson 04's volumes, or none; the god view: the shapes only
+    }
     if (!f.godView) counters = technique.stats().counters();
 
     // ==== 3. the scene from the eye, every light with its map ====================================

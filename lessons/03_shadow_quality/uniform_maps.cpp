@@ -120,23 +120,31 @@ void UniformShadowMaps::renderLight(const ShadowContext& c, int i) {
   }
 }
 
-void UniformShadowMaps::renderShadows(const ShadowContext& c) {
-  // The god view re-renders the viewer's frame from outside: the viewer's maps and cameras stay.
-  if (c.frame.godView) {
-    pushShapes(c);
-    return;
-  }
+void UniformShadowMaps::render(const ShadowContext& c) {
+  fitLights(c);
+  renderDepth(c);
+}
+
+void UniformShadowMaps::fitLights(const ShadowContext& c) {
   lights_.resize(c.lights.size());
   const shadow::ConvexVolume view = shadow::volumeFromViewProj(c.viewerViewProj());
   stats_ = {};
   for (int i = 0; i < int(c.lights.size()); ++i) fitLight(c, i, view);
+}
+
+void UniformShadowMaps::renderDepth(const ShadowContext& c) {
   glEnable(GL_DEPTH_TEST);
-  glEnable(GL_POLYGON_OFFSET_FILL);
+  glEnable(GL_POLYGON_OFFSET_FILL);  // every depth a little further from the light: less acne
   glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
-  for (int i = 0; i < int(c.lights.size()); ++i) renderLight(c, i);
+  for (int i = 0; i < int(lights_.size()); ++i) renderLight(c, i);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glBindFramebuffer(GL_FRAMEBUFFER, c.frame.framebuffer);
   glViewport(0, 0, c.frame.width, c.frame.height);
+  countMemory();
+}
+
+// The header's figures: the maps' memory, and the sun's texel in world units.
+void UniformShadowMaps::countMemory() {
   for (int i = 0; i < int(lights_.size()); ++i) {
     const PerLight& l = lights_[std::size_t(i)];
     if (l.type != Type::None)
@@ -146,11 +154,8 @@ void UniformShadowMaps::renderShadows(const ShadowContext& c) {
       stats_.extra.push_back(
           {"light" + std::to_string(i) + " texel", std::to_string(l.texel * 100.0f).substr(0, 5) + " cm"});
   }
-  pushShapes(c);
 }
 
-// The god view's shapes: each light's frustum (directional, spot) or position (point), and the
-// scene's bounds the directional fit clips against.
 void UniformShadowMaps::pushShapes(const ShadowContext& c) const {
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     const PerLight& l = lights_[i];

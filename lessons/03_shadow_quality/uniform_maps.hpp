@@ -16,6 +16,7 @@
 #include "gl/shadow_map.hpp"
 #include "technique/casters.hpp"
 #include "technique/pass_key.hpp"
+#include "technique/post_projective_view.hpp"
 #include "technique/map_settings.hpp"
 #include "technique/technique.hpp"
 
@@ -37,14 +38,16 @@ struct UniformMapParams : MapSettings {
   bool reuseMaps = true;                              // skip a map's pass when nothing it depends on changed
 };
 
-class UniformShadowMaps : public ShadowTechnique {
+class UniformShadowMaps : public ShadowTechnique, public PostProjectiveSubject {
  public:
   explicit UniformShadowMaps(UniformMapParams defaults = {}) : p_(defaults) {}
 
   std::string name() const override { return "uniform"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override;
-  void renderShadows(const ShadowContext& c) override;
+  // The god view's shapes: each light's frustum (directional, spot) or position (point), and the
+  // scene's bounds the directional fit clips against.
+  void pushShapes(const ShadowContext& c) const override;
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "03_shadow_quality/shadow_uniform.frag"; }
   std::vector<std::string> shaderDefines() const override;
@@ -52,6 +55,14 @@ class UniformShadowMaps : public ShadowTechnique {
   void unbindVisibility(int firstUnit) const override;
   // Light i's frustum (2D maps) in the post-projective view: what a uniform map spends its texels on.
   void describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const override;
+
+  // ---- the stages of render(), in order, for lesson 03 to call one by one ----------------------
+  // 1. Each light's camera, fitted to the view, its casters culled, a point light's faces skipped
+  //    (GL-free: algorithms/light_cameras); its map made the right size.
+  void fitLights(const ShadowContext& c);
+  // 2. The depth passes: polygon offset, one pass per 2D map and per cube face not skipped; a map
+  //    nothing invalidated is kept.
+  void renderDepth(const ShadowContext& c);
 
   // A student's versions of the directional light's steps (impl=student); empty: the reference.
   shadow::CasterTest casterTest;
@@ -78,9 +89,10 @@ class UniformShadowMaps : public ShadowTechnique {
     PassKey rendered;    // what the map holds now (empty: nothing valid)
   };
   PassKey passKey(const ShadowContext& c, const PerLight& l) const;
+  void render(const ShadowContext& c) override;
   void fitLight(const ShadowContext& c, int i, const shadow::ConvexVolume& view);
   void renderLight(const ShadowContext& c, int i);
-  void pushShapes(const ShadowContext& c) const;
+  void countMemory();
 
   UniformMapParams p_;
   std::vector<PerLight> lights_;

@@ -117,8 +117,17 @@ class ShadowVolumeLesson : public Lesson {
     const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
     // ==== 0. edge adjacency once per mesh, and which objects can cast a closed volume ===========
     volumes_.renderShadows(c);
-    // ==== 1.-4. depth and ambient; per light stencil counting and the lit pass; the views ========
-    volumes_.renderLit(c, {glm::vec3(p_.ambient), 0, p_.specular, p_.shininess});
+    // ==== 1. depth and ambient: the scene once, its depth for every light's count ===============
+    const tech::LitSettings lit{glm::vec3(p_.ambient), 0, p_.specular, p_.shininess};
+    const tech::StencilVolumes::Frame frame = volumes_.beginFrame(c);  // the far plane at infinity
+    volumes_.depthAndAmbient(frame, lit);
+    for (int i = 0; i < kLights; ++i) {
+      // ==== 2. stencil counting: each caster's volume, z-pass or z-fail (glStencilOpSeparate) ==
+      // ==== 3. lit pass: the light added where the count is 0 (glStencilFunc(GL_EQUAL, 0)) =====
+      volumes_.renderLight(frame, i, lit);  // scissored to the light's reach
+    }
+    // ==== 4. views: volumes, wireframe, the stencil count as a heatmap, silhouettes ==============
+    volumes_.finishFrame(frame);
     if (!f.godView) counters = volumes_.stats().counters();
     if (const auto key = volumes_.legend(); key && !f.godView) legends.push_back(*key);
   }

@@ -18,16 +18,6 @@ GLenum toGl(volume::StencilOp op) {
 
 }  // namespace
 
-// What one frame's passes share: the camera drawn with (far plane at infinity, or finite with
-// depth clamping), the viewer's near rectangle (z-pass or z-fail is decided for the viewer, also
-// when the god view draws), and per light which casters go z-fail.
-struct StencilVolumes::Frame {
-  const ShadowContext& c;
-  glm::mat4 viewProj{1.0f};
-  volume::NearRect nearRect;
-  std::vector<int> zFail;
-};
-
 void StencilVolumes::declare(ParamRegistry& r, const std::string& n) {
   r.addChoice(n + "view", &p_.view, {"lit", "volumes", "wireframe", "stencil", "silhouettes"}, "the inner buffers");
   r.add(n + "view_light", &p_.viewLight, 0, 3, "which light's volumes, stencil counts and silhouettes the views show");
@@ -82,7 +72,7 @@ void StencilVolumes::buildAdjacency(const SceneCache& cache) {
   caches_.clear();
 }
 
-void StencilVolumes::renderShadows(const ShadowContext& c) {
+void StencilVolumes::render(const ShadowContext& c) {
   if (c.scene.revision() != adjacencyRevision_) buildAdjacency(c.scene);
   // Which objects cast: closed meshes, and open ones only when drawn z-pass.
   const Scene& scene = c.scene.scene();
@@ -119,6 +109,13 @@ void StencilVolumes::buildVolumes(const ShadowContext& c, VolumeCache& cache, co
 }
 
 void StencilVolumes::renderLit(const ShadowContext& c, const LitSettings& lit) {
+  const Frame f = beginFrame(c);
+  depthAndAmbient(f, lit);
+  for (int i = 0; i < int(c.lights.size()); ++i) renderLight(f, i, lit);
+  finishFrame(f);
+}
+
+StencilVolumes::Frame StencilVolumes::beginFrame(const ShadowContext& c) {
   const FrameInfo& fi = c.frame;
   const float aspect = float(fi.width) / float(fi.height);
   Frame f{c};
@@ -131,10 +128,13 @@ void StencilVolumes::renderLit(const ShadowContext& c, const LitSettings& lit) {
   f.nearRect = volume::nearRect(c.viewer.view(), c.viewer.fovY, aspect, c.viewer.nearZ);
   zPassCount_ = zFailCount_ = 0;
   volumeTriangles_ = 0;
-  depthAndAmbient(f, lit);
-  for (int i = 0; i < int(c.lights.size()); ++i) renderLight(f, i, lit);
+  return f;
+}
 
-  // ==== 4. views: the volumes, their wireframe, the silhouettes (and the god view's lines) =======
+// ==== 4. views: the volumes, their wireframe, the silhouettes (and the god view's lines) =======
+void StencilVolumes::finishFrame(const Frame& f) {
+  const ShadowContext& c = f.c;
+  const FrameInfo& fi = c.frame;
   const VolumeCache& shown = caches_[std::size_t(std::clamp(p_.viewLight, 0, int(caches_.size()) - 1))];
   if (p_.view == P::View::Volumes || p_.view == P::View::Wireframe) {
     auto t = gl::TimerScope(c.timers, "volumes view");

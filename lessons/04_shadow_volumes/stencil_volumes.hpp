@@ -54,12 +54,29 @@ class StencilVolumes : public ShadowTechnique {
   std::string name() const override { return "volumes"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override;
-  // Finds the open meshes and decides z-pass or z-fail per caster for the viewer; the passes need
-  // the frame's depth, so they all run in renderLit.
-  void renderShadows(const ShadowContext& c) override;
   const ShadowStats& stats() const override { return stats_; }
   bool ownsLitPass() const override { return true; }
+  // The lit frame: beginFrame, depthAndAmbient, renderLight for every light, finishFrame.
   void renderLit(const ShadowContext& c, const LitSettings& lit) override;
+
+  // ---- the stages of renderLit(), in order, for lesson 04 to call one by one -------------------
+  // What one frame's passes share: the camera drawn with (far plane at infinity, or finite with
+  // depth clamping), the viewer's near rectangle (z-pass or z-fail is decided for the viewer, also
+  // when the god view draws), and per light which casters go z-fail.
+  struct Frame {
+    const ShadowContext& c;
+    glm::mat4 viewProj{1.0f};
+    volume::NearRect nearRect;
+    std::vector<int> zFail;
+  };
+  Frame beginFrame(const ShadowContext& c);
+  // 1. The scene once: its depth for every light's counting, ka Ia, and V = 0 for the measurement.
+  void depthAndAmbient(const Frame& f, const LitSettings& lit);
+  // 2.-3. Light i, scissored to its reach: the stencil count of its volumes (z-pass or z-fail per
+  // caster), then the light added where the count is 0.
+  void renderLight(const Frame& f, int light, const LitSettings& lit);
+  // 4. The views (volumes, wireframe, silhouettes), the god view's lines, the header's figures.
+  void finishFrame(const Frame& f);
 
   StencilVolumeHooks hooks;
   // Lesson 04's GLSL exercise 04.5 (impl=student): the extrusion to infinity from the student's
@@ -89,13 +106,13 @@ class StencilVolumes : public ShadowTechnique {
     GLuint samples = 0;
     PassKey counted;  // what the last query counted: the same volumes in the same view count the same
   };
-  struct Frame;  // what one frame's passes share (matrices, the z-fail choice)
+  // Builds the edge adjacency (once per mesh) and finds the casters with a closed volume; the
+  // passes need the frame's depth, so they all run in renderLit.
+  void render(const ShadowContext& c) override;
 
   bool casts(std::size_t object) const;
   void buildAdjacency(const SceneCache& scene);
   void buildVolumes(const ShadowContext& c, VolumeCache& cache, const glm::vec4& light);
-  void depthAndAmbient(const Frame& f, const LitSettings& lit);
-  void renderLight(const Frame& f, int light, const LitSettings& lit);
   void countStencil(const Frame& f, int light, const VolumeCache& cache, const glm::vec4& L);
   void litPass(const Frame& f, int light, const LitSettings& lit);
   void drawVolumes(const Frame& f, const VolumeCache& c, const glm::vec4& L, bool zFail);

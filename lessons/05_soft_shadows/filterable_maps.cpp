@@ -104,11 +104,7 @@ void FilterableMaps::blur(Target& t) {
   glEnable(GL_DEPTH_TEST);
 }
 
-void FilterableMaps::renderShadows(const ShadowContext& c) {
-  if (c.frame.godView) {
-    maps_.pushShapes(c);
-    return;
-  }
+void FilterableMaps::render(const ShadowContext& c) {
   stats_ = {};
   maps_.render(c, {glm::vec3(0.0f)}, stats_, false);
   const int size = maps_.mapSize();
@@ -150,7 +146,6 @@ void FilterableMaps::renderShadows(const ShadowContext& c) {
   glViewport(0, 0, c.frame.width, c.frame.height);
   stats_.extra.push_back(
       {"blur", std::to_string(2 * p_.blur + 1) + " taps per direction, " + std::to_string(size) + "^2"});
-  maps_.pushShapes(c);
 }
 
 void FilterableMaps::bindVisibility(const gl::Program& lit, int firstUnit) const {

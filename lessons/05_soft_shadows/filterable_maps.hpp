@@ -34,7 +34,7 @@ class FilterableMaps : public ShadowTechnique {
   std::string name() const override { return kind_ == Kind::Vsm ? "vsm" : "esm"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override;
-  void renderShadows(const ShadowContext& c) override;
+  void pushShapes(const ShadowContext& c) const override { maps_.pushShapes(c); }
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "05_soft_shadows/shadow_filterable.frag"; }
   std::vector<std::string> shaderDefines() const override;
@@ -43,6 +43,7 @@ class FilterableMaps : public ShadowTechnique {
   FilterableParams& params() { return p_; }
 
  private:
+  void render(const ShadowContext& c) override;
   struct Target {
     gl::Texture moments, scratch;  // the blur ping-pongs between them
     gl::Renderbuffer depth;

@@ -92,8 +92,7 @@ void LightMesh::bake(const ShadowContext& c) {
   ++builds_;
 }
 
-void LightMesh::renderShadows(const ShadowContext& c) {
-  if (c.frame.godView) return;  // nothing of the viewer's: the grid is the scene's
+void LightMesh::render(const ShadowContext& c) {
   const std::string k = key(c);
   stats_ = {};
   if (k != key_) {

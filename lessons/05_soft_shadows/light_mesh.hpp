@@ -27,7 +27,6 @@ class LightMesh : public ShadowTechnique {
   std::string name() const override { return "mesh"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override;
-  void renderShadows(const ShadowContext& c) override;
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "05_soft_shadows/shadow_light_mesh.frag"; }
   void bindVisibility(const gl::Program& lit, int firstUnit) const override;
@@ -36,7 +35,10 @@ class LightMesh : public ShadowTechnique {
   const soft::LightGrid& grid() const { return grid_; }
   double lastBuildMs() const { return buildMs_; }
 
+  // No shapes for the god view: the grid is the scene's, not the viewer's.
+
  private:
+  void render(const ShadowContext& c) override;
   std::string key(const ShadowContext& c) const;
   void bake(const ShadowContext& c);
   void countStats();
@@ -44,8 +46,8 @@ class LightMesh : public ShadowTechnique {
   LightMeshParams p_;
   SoftMaps maps_;
   soft::LightGrid grid_;
-  std::array<gl::Texture, 4> meshes_;  // per light (MAX_LIGHTS), R8
-  std::array<bool, 4> on_{};
+  std::array<gl::Texture, kMaxLights> meshes_;  // per light, R8
+  std::array<bool, kMaxLights> on_{};
   gl::Texture dummy_;  // 1^3, visibility 1: bound where a light has no mesh
   gl::Framebuffer fbo_;
   gl::VertexArray vao_;

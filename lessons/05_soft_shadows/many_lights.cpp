@@ -25,16 +25,11 @@ std::vector<std::string> ManyLights::shaderDefines() const {
   return {"SOFT_SAMPLES " + std::to_string(std::clamp(p_.samples, 1, SoftMaps::kMaxSamples))};
 }
 
-void ManyLights::renderShadows(const ShadowContext& c) {
-  if (c.frame.godView) {  // the viewer's maps stay; only the shapes again
-    maps_.pushShapes(c);
-    return;
-  }
+void ManyLights::render(const ShadowContext& c) {
   stats_ = {};
   maps_.render(c, samplesFor(p_.samples, p_.layout), stats_);
   stats_.extra.push_back({"point lights", std::to_string(maps_.samples().size()) + " per light, " +
                                               std::to_string(maps_.mapSize()) + "^2 each"});
-  maps_.pushShapes(c);
 }
 
 }  // namespace shadowlab::tech

@@ -32,7 +32,7 @@ class ManyLights : public ShadowTechnique {
   std::string name() const override { return "many"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override { maps_.init(); }
-  void renderShadows(const ShadowContext& c) override;
+  void pushShapes(const ShadowContext& c) const override { maps_.pushShapes(c); }
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "05_soft_shadows/shadow_many.frag"; }
   std::vector<std::string> shaderDefines() const override;
@@ -44,6 +44,7 @@ class ManyLights : public ShadowTechnique {
   static std::vector<glm::vec3> samplesFor(int n, SampleLayout layout);
 
  private:
+  void render(const ShadowContext& c) override;
   ManyLightsParams p_;
   SoftMaps maps_;
   ShadowStats stats_;

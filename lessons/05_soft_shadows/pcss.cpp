@@ -38,11 +38,7 @@ std::vector<std::string> PcssShadows::shaderDefines() const {
   return d;
 }
 
-void PcssShadows::renderShadows(const ShadowContext& c) {
-  if (c.frame.godView) {
-    maps_.pushShapes(c);
-    return;
-  }
+void PcssShadows::render(const ShadowContext& c) {
   stats_ = {};
   maps_.render(c, {glm::vec3(0.0f)}, stats_);
   const std::string filter = std::to_string(filterCount()) + " filter";
@@ -50,7 +46,6 @@ void PcssShadows::renderShadows(const ShadowContext& c) {
   if (quadSearchOn()) search += " (" + std::to_string(searchCount() / 4) + " a pixel, shared by its quad)";
   else if (adaptive_ && p_.quadSearch) search += " (quad search off: no GL_ARB_derivative_control)";
   stats_.extra.push_back({"taps", adaptive_ ? search + " + " + filter : filter});
-  maps_.pushShapes(c);
 }
 
 void PcssShadows::bindVisibility(const gl::Program& lit, int firstUnit) const {

@@ -35,7 +35,7 @@ class PcssShadows : public ShadowTechnique {
   std::string name() const override { return adaptive_ ? "pcss" : "pcf"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override { maps_.init(); }
-  void renderShadows(const ShadowContext& c) override;
+  void pushShapes(const ShadowContext& c) const override { maps_.pushShapes(c); }
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "05_soft_shadows/shadow_pcss.frag"; }
   std::vector<std::string> shaderDefines() const override;
@@ -47,6 +47,7 @@ class PcssShadows : public ShadowTechnique {
   bool studentSearch = false;
 
  private:
+  void render(const ShadowContext& c) override;
   int searchCount() const;
   int filterCount() const;
   bool quadSearchOn() const;  // asked for, PCSS, and the context has the fine derivatives

@@ -28,15 +28,10 @@ std::vector<std::string> SingleSampleSoft::shaderDefines() const {
   return d;
 }
 
-void SingleSampleSoft::renderShadows(const ShadowContext& c) {
-  if (c.frame.godView) {
-    maps_.pushShapes(c);
-    return;
-  }
+void SingleSampleSoft::render(const ShadowContext& c) {
   stats_ = {};
   maps_.render(c, {glm::vec3(0.0f)}, stats_);
   stats_.extra.push_back({"taps", std::to_string(searchCount()) + " blocker search"});
-  maps_.pushShapes(c);
 }
 
 void SingleSampleSoft::bindVisibility(const gl::Program& lit, int firstUnit) const {

@@ -29,7 +29,7 @@ class SingleSampleSoft : public ShadowTechnique {
   std::string name() const override { return kind_ == Kind::Parker ? "parker" : "haines"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override { maps_.init(); }
-  void renderShadows(const ShadowContext& c) override;
+  void pushShapes(const ShadowContext& c) const override { maps_.pushShapes(c); }
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "05_soft_shadows/shadow_single_sample.frag"; }
   std::vector<std::string> shaderDefines() const override;
@@ -38,6 +38,7 @@ class SingleSampleSoft : public ShadowTechnique {
   SingleSampleParams& params() { return p_; }
 
  private:
+  void render(const ShadowContext& c) override;
   int searchCount() const;
   Kind kind_;
   SingleSampleParams p_;

@@ -82,7 +82,6 @@ hybrid::MergeRule HybridShadowMaps::mergeRule(int i) const {
 
 // ==== 1. the light cameras (GL-free, algorithms/light_cameras), as the uniform maps fit theirs ======
 void HybridShadowMaps::fitLights(const ShadowContext& c) {
-  if (c.frame.godView) return;  // the god view re-renders the viewer's frame: its maps stay
   stats_ = {};
   while (lights_.size() < c.lights.size()) lights_.push_back(std::make_unique<PerLight>());
   const shadow::ConvexVolume view = shadow::volumeFromViewProj(c.viewerViewProj());
@@ -110,7 +109,6 @@ PassKey HybridShadowMaps::passKey(const ShadowContext& c, const PerLight& l) con
 
 // ==== 2. the full-resolution depth maps: what a standard map renders, N x N =======================
 void HybridShadowMaps::renderDepth(const ShadowContext& c) {
-  if (c.frame.godView) return;
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
@@ -155,7 +153,6 @@ void HybridShadowMaps::buildOnCpu(PerLight& l, const hybrid::MergeRule& rule) {
 
 // ==== 3.-4. the merge sweep and the index (HybridBuilder's passes), or on the CPU ===================
 void HybridShadowMaps::buildMaps(const ShadowContext& c) {
-  if (c.frame.godView) return;
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     PerLight& l = *lights_[i];
     if (!l.on || l.reused) continue;
@@ -170,6 +167,8 @@ void HybridShadowMaps::buildMaps(const ShadowContext& c) {
   }
   glBindFramebuffer(GL_FRAMEBUFFER, c.frame.framebuffer);
   glViewport(0, 0, c.frame.width, c.frame.height);
+  for (std::size_t i = 0; i < lights_.size(); ++i)
+    if (lights_[i]->on || lights_[i]->point) pushStats(int(i), *lights_[i]);
 }
 
 // The header's figures for light i: what the map stores against the full map, and where.
@@ -198,21 +197,16 @@ void HybridShadowMaps::pushStats(int i, const PerLight& l) {
   stats_.extra.push_back({n + " records", records + (m.levels > 0 ? ")" : "")});
 }
 
-void HybridShadowMaps::finish(const ShadowContext& c) {
-  for (std::size_t i = 0; i < lights_.size(); ++i) {
-    const PerLight& l = *lights_[i];
-    if (!c.frame.godView && (l.on || l.point)) pushStats(int(i), l);
-    if (l.on) c.debug.frustum(l.camera.camera.viewProj(), lightColour(i));
-  }
+void HybridShadowMaps::pushShapes(const ShadowContext& c) const {
+  for (std::size_t i = 0; i < lights_.size(); ++i)
+    if (lights_[i]->on) c.debug.frustum(lights_[i]->camera.camera.viewProj(), lightColour(i));
   if (p_.fit == Fit::View) c.debug.box(c.scene.bounds(), {0.4f, 0.4f, 0.4f, 1.0f});
 }
 
-// Each step leaves the god view's re-render alone (the viewer's maps stay); finish pushes the shapes.
-void HybridShadowMaps::renderShadows(const ShadowContext& c) {
+void HybridShadowMaps::render(const ShadowContext& c) {
   fitLights(c);
   renderDepth(c);
   buildMaps(c);
-  finish(c);
 }
 
 // ==== 5. what the lit pass reads: per light its matrix, texel size, levels, root and records ========

@@ -56,8 +56,8 @@ class HybridShadowMaps : public ShadowTechnique {
   std::string name() const override { return "hybrid"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override;
-  // fitLights, renderDepth, buildMaps and finish, in order (the god view: only the shapes again).
-  void renderShadows(const ShadowContext& c) override;
+  // The god view's shapes: each mapped light's frustum, and the bounds the directional fit clips against.
+  void pushShapes(const ShadowContext& c) const override;
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "07_hybrid_maps/shadow_hybrid.frag"; }
   std::vector<std::string> shaderDefines() const override;
@@ -68,11 +68,10 @@ class HybridShadowMaps : public ShadowTechnique {
   // SHADOWLAB_STUDENT_DESCENT).
   bool studentDescent = false;
 
-  // ---- the steps of renderShadows, for a lesson that tells them one by one --------------------------
+  // ---- the stages of render(), in order, for lesson 07 to call one by one ----------------------
   void fitLights(const ShadowContext& c);    // 1. light cameras (GL-free)
   void renderDepth(const ShadowContext& c);  // 2. the full-resolution depth maps
-  void buildMaps(const ShadowContext& c);    // 3.-4. the merge sweep and the index, GPU or CPU
-  void finish(const ShadowContext& c);       // the header's figures, the god view's shapes
+  void buildMaps(const ShadowContext& c);    // 3.-4. the merge sweep and the index, GPU or CPU; the figures
 
   // ---- views ------------------------------------------------------------------------------------
   // Light `light`'s map over the light's view, each source texel coloured by the level it is stored
@@ -107,6 +106,7 @@ class HybridShadowMaps : public ShadowTechnique {
     PassKey rendered;     // what the map was last built from (PassKey)
     bool reused = false;  // this frame: nothing changed, the map from an earlier frame stays
   };
+  void render(const ShadowContext& c) override;
   PassKey passKey(const ShadowContext& c, const PerLight& l) const;
   void buildOnCpu(PerLight& l, const hybrid::MergeRule& rule);
   void bindLight(const gl::Program& p, int i, int unitRoot, int unitRecords) const;

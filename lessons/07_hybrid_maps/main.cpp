@@ -117,9 +117,10 @@ class HybridMapsLesson : public Lesson {
   void render(const FrameInfo& f) override {
     const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
     if (f.measureLight >= 0 && f.measureLight < kLights) measured_ = f.measureLight;
-    if (p_.technique == Technique::Standard) {
-      standard_.renderShadows(c);  // lesson 03's passes, at uniform.map_size
-    } else {
+    tech::ShadowTechnique& technique = p_.technique == Technique::Standard
+                                           ? static_cast<tech::ShadowTechnique&>(standard_)
+                                           : static_cast<tech::ShadowTechnique&>(hybrid_);
+    if (p_.technique == Technique::Hybrid && !f.godView) {
       // ==== 1. the light camera: fitted to the view as lesson 03 fits its sun ====================
       hybrid_.fitLights(c);
       // ==== 2. the full-resolution depth map: what a standard map of map_size renders ============
@@ -127,11 +128,10 @@ class HybridMapsLesson : public Lesson {
       // ==== 3. the merge sweep: 2x2 blocks whose depths agree become one texel, level by level ==
       // ==== 4. the index: the root grid and a record of four words for every kept texel =========
       hybrid_.buildMaps(c);
-      hybrid_.finish(c);
+      hybrid_.pushShapes(c);  // its frusta, for the god view
+    } else {
+      technique.renderShadows(c);  // lesson 03's passes at uniform.map_size; the god view: the shapes only
     }
-    tech::ShadowTechnique& technique = p_.technique == Technique::Standard
-                                           ? static_cast<tech::ShadowTechnique&>(standard_)
-                                           : static_cast<tech::ShadowTechnique&>(hybrid_);
     if (!f.godView) counters = technique.stats().counters();
 
     // ==== 5. the scene from the eye: each lookup descends the index to the finest stored texel ====

@@ -144,9 +144,16 @@ class OriginalPsmLesson : public Lesson {
     tech::ShadowTechnique& technique = p_.technique == Technique::Psm ? static_cast<tech::ShadowTechnique&>(psm_)
                                                                       : static_cast<tech::ShadowTechnique&>(uniform_);
 
-    // ==== 1. the light in post-projective space; behind the camera: the virtual camera's slide =====
-    // ==== 2. the light camera on every object in the (virtual) frustum; its depth pass =============
-    technique.renderShadows(c);
+    if (p_.technique == Technique::Psm && !f.godView) {
+      // ==== 1. the light in post-projective space; behind the camera: the virtual camera's slide ===
+      //         (psm.cpp, planLights; the maths in algorithms/psm/psm_plan and psm_camera)
+      psm_.planLights(c);
+      // ==== 2. the light camera on every object in the (virtual) frustum; its depth pass ===========
+      psm_.renderDepth(c);
+      psm_.pushShapes(c);  // the slide and the light frustum, for the god view
+    } else {
+      technique.renderShadows(c);  // lesson 03's uniform map; the god view: the shapes only
+    }
     if (!f.godView) counters = technique.stats().counters();
 
     // ==== 3. the scene from the eye: each point looked up in the post-projective map ===============

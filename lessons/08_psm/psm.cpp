@@ -93,12 +93,11 @@ psm::PsmSwitches PerspectiveShadowMaps::switches() const {
 }
 
 // ==== 1. the plan: the light in post-projective space, the key points, the light camera(s) =====
-// ==== 2. the depth passes: one per map, casters that can shade the view only ===================
 void PerspectiveShadowMaps::planLight(const ShadowContext& c, int i, const psm::CameraFrustum& camera) {
   const Light& light = c.lights[std::size_t(i)];
   PerLight& l = lights_[std::size_t(i)];
   l.planned = false;
-  if (!light.enabled) return maps_.disable(i);
+  if (!light.enabled) return;
   const glm::dvec4 h = psm::homogeneousLight(light);
   const psm::Frustum frustum = psm::frustumFromViewProj(camera.viewProj, camera.invViewProj);
   // The slide covers the potential casters, whether or not the depth pass culls the others.
@@ -108,10 +107,16 @@ void PerspectiveShadowMaps::planLight(const ShadowContext& c, int i, const psm::
     if (l.keep[j]) l.casterBoxes.push_back(c.scene.boxes()[j]);
   if (p_.cullCasters) stats_.culledCasters += culled;
   else l.keep.assign(c.scene.casts().begin(), c.scene.casts().end());
-  const psm::PsmPlan& plan = l.planner.plan(camera, h, receivers_, c.scene.boxes(), l.casterBoxes, switches());
+  l.planner.plan(camera, h, receivers_, c.scene.boxes(), l.casterBoxes, switches());
   l.planned = true;
   addCounters(i);
-  if (plan.status != psm::PlanStatus::Ok) return maps_.disable(i);
+}
+
+// ==== 2. the depth passes: one per map, casters that can shade the view only ===================
+void PerspectiveShadowMaps::renderLight(const ShadowContext& c, int i) {
+  const psm::PsmPlan* p = plan(i);
+  if (!p || p->status != psm::PlanStatus::Ok) return maps_.disable(i);
+  const psm::PsmPlan& plan = *p;
   ProjectiveMapView views[kPsmMaps];
   FaceLookup faces;
   faces.faces = plan.faces;
@@ -124,29 +129,33 @@ void PerspectiveShadowMaps::planLight(const ShadowContext& c, int i, const psm::
     if (plan.maps[std::size_t(k)].face >= 0) faces.layerOfFace[std::size_t(plan.maps[std::size_t(k)].face)] = k;
   }
   const int side = psm::faceMapSize(maps_.totalSide(), plan.mapCount);
-  maps_.render(c, i, {views, std::size_t(plan.mapCount)}, side, l.keep, h, faces, stats_);
+  maps_.render(c, i, {views, std::size_t(plan.mapCount)}, side, lights_[std::size_t(i)].keep,
+               psm::homogeneousLight(c.lights[std::size_t(i)]), faces, stats_);
 }
 
-void PerspectiveShadowMaps::renderShadows(const ShadowContext& c) {
-  // The god view re-renders the viewer's frame from outside: the viewer's maps and plans stay.
-  if (c.frame.godView) {
-    pushShapes(c);
-    return;
-  }
+void PerspectiveShadowMaps::render(const ShadowContext& c) {
+  planLights(c);
+  renderDepth(c);
+}
+
+void PerspectiveShadowMaps::planLights(const ShadowContext& c) {
   stats_ = {};
   receivers_ = receiverCache_.get(c.scene, p_.receiverTiles);
   lights_.resize(kPsmLights);
   const psm::CameraFrustum camera = viewerFrustum(c);
   for (int i = 0; i < kPsmLights; ++i) {
     if (i < int(c.lights.size())) planLight(c, i, camera);
-    else maps_.disable(i);
+    else lights_[std::size_t(i)].planned = false;
   }
   for (std::size_t i = kPsmLights; i < c.lights.size(); ++i)
     if (c.lights[i].enabled)
       stats_.extra.push_back(
           {"light" + std::to_string(i), "no PSM map (" + std::to_string(kPsmLights) + " lights at most)"});
   stats_.extra.push_back({"receiver volumes", std::to_string(receivers_.size())});
-  pushShapes(c);
+}
+
+void PerspectiveShadowMaps::renderDepth(const ShadowContext& c) {
+  for (int i = 0; i < kPsmLights; ++i) renderLight(c, i);
 }
 
 void PerspectiveShadowMaps::addCounters(int i) {
@@ -193,7 +202,7 @@ std::span<const glm::dvec3> PerspectiveShadowMaps::worldKeyPoints(int light) con
 
 glm::dmat4 PerspectiveShadowMaps::postProjectiveCamera(const ShadowContext& c, int light) const {
   const psm::PsmPlan* p = plan(light);
-  return p ? p->camera.viewProj : ShadowTechnique::postProjectiveCamera(c, light);
+  return p ? p->camera.viewProj : PostProjectiveSubject::postProjectiveCamera(c, light);
 }
 
 void PerspectiveShadowMaps::describePostProjective(const ShadowContext& c, int light,
@@ -202,8 +211,6 @@ void PerspectiveShadowMaps::describePostProjective(const ShadowContext& c, int l
     psm::describePlan(*p, viewerFrustum(c), lights_[std::size_t(light)].planner.postKeyPoints(), out);
 }
 
-// The god view: the receivers' rough volumes, the key points, the slid virtual camera, and the
-// light frusta that are finite in world space.
 void PerspectiveShadowMaps::pushShapes(const ShadowContext& c) const {
   for (std::size_t k = 0; k < receivers_.size() && k < 4096; ++k) c.debug.box(receivers_[k], kVolumeColour);
   for (int i = 0; i < int(lights_.size()); ++i) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "algorithms/psm/psm_plan.hpp"
+#include "technique/post_projective_view.hpp"
 #include "technique/projective_maps.hpp"
 #include "technique/technique.hpp"
 
@@ -39,13 +40,15 @@ struct PsmParams {
   static PsmParams original();
 };
 
-class PerspectiveShadowMaps : public ShadowTechnique {
+class PerspectiveShadowMaps : public ShadowTechnique, public PostProjectiveSubject {
  public:
   explicit PerspectiveShadowMaps(PsmParams defaults = {}) : p_(defaults), maps_(defaults.maps) {}
   std::string name() const override { return "psm"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override { maps_.init(); }
-  void renderShadows(const ShadowContext& c) override;
+  // The god view: the receivers' rough volumes, the key points, the slid virtual camera, and the
+  // light frusta that are finite in world space.
+  void pushShapes(const ShadowContext& c) const override;
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "08_psm/shadow_psm.frag"; }
   std::vector<std::string> shaderDefines() const override;
@@ -53,6 +56,16 @@ class PerspectiveShadowMaps : public ShadowTechnique {
   void unbindVisibility(int firstUnit) const override { maps_.unbind(firstUnit); }
   glm::dmat4 postProjectiveCamera(const ShadowContext& c, int light) const override;
   void describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const override;
+
+  // ---- the stages of render(), in order, for lessons 08 and 09 to call one by one ---------------
+  // 1. Each light's plan (GL-free, algorithms/psm/psm_plan): the light in the camera's
+  //    post-projective space, the virtual camera's slide or the inverse projection (fix 1), the
+  //    receivers' key points and the smallest cone around them (fix 2) or the cube's faces (fix 3),
+  //    the light camera(s); the casters that can shade the view.
+  void planLights(const ShadowContext& c);
+  // 2. The depth passes: one per map (or face), each caster's vertices through the plan's
+  //    world -> map matrix, moved by the world-space bias (fix 4) in shaders/common/depth_psm.vert.
+  void renderDepth(const ShadowContext& c);
 
   PsmParams& params() { return p_; }
   // This frame's plan of light i (nullptr for a light without one), and its key points.
@@ -72,9 +85,10 @@ class PerspectiveShadowMaps : public ShadowTechnique {
     std::vector<char> keep;
     std::vector<Aabb> casterBoxes;
   };
+  void render(const ShadowContext& c) override;
   psm::PsmSwitches switches() const;
   void planLight(const ShadowContext& c, int i, const psm::CameraFrustum& camera);
-  void pushShapes(const ShadowContext& c) const;
+  void renderLight(const ShadowContext& c, int i);
   void addCounters(int i);
 
   PsmParams p_;

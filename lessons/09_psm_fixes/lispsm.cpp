@@ -9,6 +9,9 @@
 #include "technique/scene_cache.hpp"
 
 namespace shadowlab::tech {
+namespace {
+const glm::vec4 kFrustumColour{0.3f, 0.85f, 1.0f, 1.0f};
+}  // namespace
 
 void LightSpacePsm::declare(ParamRegistry& r, const std::string& n) {
   maps_.declare(r, n);
@@ -59,12 +62,12 @@ bool LightSpacePsm::fitLight(const ShadowContext& c, int i, const psm::CameraFru
 }
 
 // ==== 2. the depth pass: one map per light ======================================================
-void LightSpacePsm::renderShadows(const ShadowContext& c) {
-  if (c.frame.godView) {
-    for (const PerLight& l : lights_)
-      if (l.fitted) c.debug.frustum(glm::mat4(l.worldToClip), {0.3f, 0.85f, 1.0f, 1.0f});
-    return;
-  }
+void LightSpacePsm::pushShapes(const ShadowContext& c) const {
+  for (const PerLight& l : lights_)
+    if (l.fitted) c.debug.frustum(glm::mat4(l.worldToClip), kFrustumColour);
+}
+
+void LightSpacePsm::render(const ShadowContext& c) {
   stats_ = {};
   lights_.resize(kPsmLights);
   const psm::CameraFrustum camera = viewerFrustum(c);
@@ -78,13 +81,12 @@ void LightSpacePsm::renderShadows(const ShadowContext& c) {
     const ProjectiveMapView view{l.worldToClip};
     maps_.render(c, i, {&view, 1}, maps_.totalSide(), l.keep, psm::homogeneousLight(c.lights[std::size_t(i)]), {},
                  stats_);
-    c.debug.frustum(glm::mat4(l.worldToClip), {0.3f, 0.85f, 1.0f, 1.0f});
   }
 }
 
 void LightSpacePsm::describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const {
   if (light < 0 || light >= int(lights_.size()) || !lights_[std::size_t(light)].fitted) return;
-  out.worldFrustum(postProjectiveCamera(c, light), lights_[std::size_t(light)].worldToClip, {0.3f, 0.85f, 1.0f, 1.0f});
+  out.worldFrustum(postProjectiveCamera(c, light), lights_[std::size_t(light)].worldToClip, kFrustumColour);
 }
 
 }  // namespace shadowlab::tech

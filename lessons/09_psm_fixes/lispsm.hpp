@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "algorithms/psm/lispsm.hpp"
+#include "technique/post_projective_view.hpp"
 #include "technique/projective_maps.hpp"
 #include "technique/technique.hpp"
 
@@ -23,13 +24,13 @@ struct LispsmParams {
   bool cullCasters = true;   // draw only the casters that can shade the view frustum
 };
 
-class LightSpacePsm : public ShadowTechnique {
+class LightSpacePsm : public ShadowTechnique, public PostProjectiveSubject {
  public:
   explicit LightSpacePsm(LispsmParams defaults = {}) : p_(defaults), maps_(defaults.maps) {}
   std::string name() const override { return "lispsm"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override { maps_.init(); }
-  void renderShadows(const ShadowContext& c) override;
+  void pushShapes(const ShadowContext& c) const override;  // each fitted light's frustum
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "08_psm/shadow_psm.frag"; }
   std::vector<std::string> shaderDefines() const override { return maps_.shaderDefines(); }
@@ -49,6 +50,7 @@ class LightSpacePsm : public ShadowTechnique {
     glm::dmat4 worldToClip{1.0};
     std::vector<char> keep;
   };
+  void render(const ShadowContext& c) override;
   bool fitLight(const ShadowContext& c, int i, const psm::CameraFrustum& camera);
 
   LispsmParams p_;

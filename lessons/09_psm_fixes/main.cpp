@@ -151,9 +151,19 @@ class PsmFixesLesson : public Lesson {
     tech::ShadowTechnique* const techniques[] = {&psm_, &lispsm_, &uniform_};
     tech::ShadowTechnique& technique = *techniques[int(p_.technique)];
 
-    // ==== 1. the plan: the light in post-projective space, receivers' key points, cone or faces ====
-    // ==== 2. shadow passes: one map, or one per hidden face; casters moved by the world bias =======
-    technique.renderShadows(c);
+    if (p_.technique == Technique::Psm && !f.godView) {
+      // ==== 1. the plan: the light in post-projective space, receivers' key points, cone or faces ==
+      //   fix 1 the inverse projection (algorithms/psm/psm_camera), fix 2 the key points and the
+      //   smallest cone (psm/receivers, psm/clipping, psm/enclosing_cone), fix 3 the unit cube's
+      //   faces the light cannot see (psm/cube_faces); the whole plan: psm/psm_plan
+      psm_.planLights(c);
+      // ==== 2. shadow passes: one map, or one per hidden face; casters moved by the world bias =====
+      //   fix 4, a + b L_texel per caster vertex (psm/bias, shaders/common/depth_psm.vert)
+      psm_.renderDepth(c);
+      psm_.pushShapes(c);  // volumes, key points, frusta, for the god view
+    } else {
+      technique.renderShadows(c);  // LiSPSM or lesson 03's uniform map; the god view: the shapes only
+    }
     if (!f.godView) counters = technique.stats().counters();
 
     // ==== 3. the scene from the eye, every light with its map ======================================

@@ -106,11 +106,7 @@ void CascadedShadowMaps::warpLight(const ShadowContext& c, int i) {
 }
 
 // ==== 2. the depth passes: one layer per cascade of the light's array =========================
-void CascadedShadowMaps::renderShadows(const ShadowContext& c) {
-  if (c.frame.godView) {
-    pushShapes(c);
-    return;
-  }
+void CascadedShadowMaps::render(const ShadowContext& c) {
   stats_ = {};
   const int side = psm::cascadeSide(maps_.totalSide(), p_.count);
   const glm::mat4 view = c.viewer.view();
@@ -131,7 +127,6 @@ void CascadedShadowMaps::renderShadows(const ShadowContext& c) {
     if (c.lights[i].enabled)
       stats_.extra.push_back(
           {"light" + std::to_string(i), "no cascades (" + std::to_string(kPsmLights) + " lights at most)"});
-  pushShapes(c);
 }
 
 // The god view: each cascade's light frustum in its colour (red, green, blue, yellow near to far).

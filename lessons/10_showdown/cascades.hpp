@@ -16,6 +16,7 @@
 
 #include "algorithms/cascade_cameras.hpp"
 #include "technique/lit_pass.hpp"
+#include "technique/post_projective_view.hpp"
 #include "technique/projective_maps.hpp"
 #include "technique/technique.hpp"
 
@@ -37,13 +38,13 @@ struct CascadeParams {
   int receiverTiles = 8;       // with the warp: the rough receiver volumes each slice's warp is fitted to
 };
 
-class CascadedShadowMaps : public ShadowTechnique {
+class CascadedShadowMaps : public ShadowTechnique, public PostProjectiveSubject {
  public:
   explicit CascadedShadowMaps(CascadeParams defaults = {}) : p_(defaults), maps_(defaults.maps) {}
   std::string name() const override { return "csm"; }
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override { maps_.init(); }
-  void renderShadows(const ShadowContext& c) override;
+  void pushShapes(const ShadowContext& c) const override;  // each cascade's frustum, in its colour
   const ShadowStats& stats() const override { return stats_; }
   std::string visibilityShader() const override { return "10_showdown/shadow_cascades.frag"; }
   std::vector<std::string> shaderDefines() const override;
@@ -72,9 +73,9 @@ class CascadedShadowMaps : public ShadowTechnique {
     shadow::CascadeSet set;
     std::vector<glm::dmat4> matrices;  // each cascade's world -> map clip: its camera's, or its warp's
   };
+  void render(const ShadowContext& c) override;
   bool fitLight(const ShadowContext& c, int i, int side);
   void warpLight(const ShadowContext& c, int i);
-  void pushShapes(const ShadowContext& c) const;
 
   CascadeParams p_;
   ProjectiveMapSet maps_;
