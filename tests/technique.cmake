@@ -8,6 +8,8 @@
 #                            specialised program compiles
 #   gpu.technique.map_reuse  static lights over a static scene: every map drawn once, then reused, and
 #                            the picture equals the one redrawn every frame
+#   registry: ...            the showdown's registry of techniques: names, prefixes, presets, golden
+#                            images and benchmark rows (gpu/registry_test.cpp)
 if(SHADOWLAB_UNIT_ONLY OR NOT TARGET lesson_03_shadow_quality OR NOT TARGET lesson_04_shadow_volumes)
   return()
 endif()
@@ -97,4 +99,10 @@ if(TARGET frame_bench AND TARGET lesson_01_lighting)
            -DBIN=$<TARGET_FILE_DIR:lesson_01_lighting> -DOUT=${CMAKE_BINARY_DIR}/test-bench/frames
            -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_frame_bench.cmake)
   set_tests_properties(bench.frames.smoke PROPERTIES LABELS gpu TIMEOUT 300)
+endif()
+
+if(TARGET shadowlab_10_showdown)
+  add_executable(technique_registry_tests ${CMAKE_CURRENT_SOURCE_DIR}/gpu/registry_test.cpp)
+  target_link_libraries(technique_registry_tests PRIVATE shadowlab_test_main shadowlab_10_showdown)
+  shadowlab_discover_tests(technique_registry_tests LABELS gpu)
 endif()

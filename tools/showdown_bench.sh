@@ -59,17 +59,21 @@ done
 [[ $size =~ ^[0-9]+x[0-9]+$ ]] || { echo "showdown_bench: SIZE '$size' is not WxH" >&2; exit 2; }
 mkdir -p "$out"
 
-# The configurations: each hard technique at each budget (texels: the side of a light's total),
-# the volumes once.
+# The configurations: each map technique at each budget (texels: the side of a light's total),
+# the volumes once. (tests/gpu/registry_test.cpp: every technique of the showdown's registry has a
+# configuration here, in this list or as technique=NAME.)
+map_techniques="uniform psm lispsm csm hybrid"
 configs=()
 for b in $budgets; do
-  for t in uniform psm lispsm csm hybrid; do
+  for t in $map_techniques; do
     # (every map redrawn every frame, as on a moving path: a held pose's reuse would time nothing)
     extra=" $t.reuse_maps=false"
     configs+=(--config "$t $b: technique=$t texels=$b triangles=$triangles$extra")
   done
 done
 configs+=(--config "volumes -: technique=volumes triangles=$triangles")
+# No shadows at all: the floor every row's error is read against (the summary never ranks it).
+configs+=(--config "none -: technique=none triangles=$triangles")
 # The comparison of Lloyd et al. 2006: the cascades with a LiSPSM warp inside each (csm.warp) at
 # 2048^2 total against one LiSPSM map at 4096^2 (with --quick 4096^2 is not among the budgets).
 configs+=(--config "csm+warp 2048: technique=csm csm.warp=true texels=2048 triangles=$triangles csm.reuse_maps=false")

@@ -114,6 +114,12 @@ def budget(label):
     return parts[1] if len(parts) > 1 else "-"
 
 
+def contender(label):
+    """Every row but "none" (no shadows at all): the floor the others are read against, listed in the
+    tables but never the least misclassified, the fastest or on the front."""
+    return label.split()[0] != "none"
+
+
 def pareto(items):
     """Labels not dominated in (frame ms, misclassified %): nothing else is as fast and as right."""
     front = []
@@ -135,7 +141,7 @@ def verdicts(name, table):
     lines = []
     budgets = sorted({budget(t) for t in table if budget(t) != "-"}, key=int)
     for b in budgets:
-        items = [(t, f) for t, f in table.items() if budget(t) in (b, "-")]
+        items = [(t, f) for t, f in table.items() if budget(t) in (b, "-") and contender(t)]
         best, second = best_of(items)
         margin = (f"{second[1]['mis'] - best[1]['mis']:.3f} points less than {second[0]} "
                   f"({second[1]['mis']:.3f} %)") if second else "alone"
@@ -164,7 +170,7 @@ def one_page(tables):
     for b in budgets:
         row = []
         for p in paths:
-            items = [(t, f) for t, f in tables[p].items() if budget(t) in (b, "-")]
+            items = [(t, f) for t, f in tables[p].items() if budget(t) in (b, "-") and contender(t)]
             if not any(budget(t) == b for t, _ in items):
                 row.append("-")
                 continue

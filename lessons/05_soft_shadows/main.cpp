@@ -23,27 +23,23 @@
 #include "app/lesson.hpp"
 #include "core/light_rig.hpp"
 #include "exercises.hpp"
-#include "filterable_maps.hpp"
-#include "light_mesh.hpp"
 #include "technique/lit_pass.hpp"
-#include "many_lights.hpp"
-#include "pcss.hpp"
 #include "technique/scene_cache.hpp"
-#include "single_sample.hpp"
+#include "pcss.hpp"
+#include "soft_techniques.hpp"
 #include "soft_theory.hpp"
 
 using namespace shadowlab;
 
 namespace {
 
-enum class Technique { Many, Pcf, Pcss, Parker, Haines, Mesh, Vsm, Esm };
 enum class View { Lit, Visibility };
 constexpr int kLights = 2;
 constexpr int kEdgeSamples = 25;  // odd: the middle sample is the edge's midpoint
 
 struct Params {
-  tech::SceneChoice scene{0, 30000};      // showcase: contact penumbras at the box, far ones under the knot
-  Technique technique = Technique::Pcss;  // the one engines ship: contact hardening for 32 taps
+  tech::SceneChoice scene{0, 30000};  // showcase: contact penumbras at the box, far ones under the knot
+  int technique = 0;  // which of soft_techniques.cpp's list: declare() starts at pcss, the one engines ship
   View view = View::Lit;
   Impl impl = Impl::Reference;  // student: your half-width draws the edges, your A_frac the plot
   float ambient = 0.12f;
@@ -62,8 +58,6 @@ G: the predicted penumbra edges of box edge E (yellow centre, red inner, cyan ou
 A: the A_frac plot; L: Parker's profile, exact or linear (the 7 %; haines.profile too).
 V: the visibility alone. M: error against the sphere-light reference; O: god view.)";
 
-const char* const kTechniques[] = {"many", "pcf", "pcss", "parker", "haines", "mesh", "vsm", "esm"};
-
 }  // namespace
 
 // The lesson holds every soft technique and draws with the one `technique` picks; each declares its
@@ -75,7 +69,8 @@ class SoftShadowsLesson : public Lesson {
     camera.aim({-3.5f, 0.0f, -0.5f}, 15.0f, 0.9f);  // from above: the box's long shadow, the knot's far one
     camera.yaw = -0.3f;
     tech::SceneCache::declare(r, &p_.scene, "procedural scene", "scene size: what every shadow pass draws");
-    r.addChoice("technique", &p_.technique, std::vector<std::string>(std::begin(kTechniques), std::end(kTechniques)),
+    p_.technique = techniques_.indexOf("pcss");
+    r.addChoice("technique", &p_.technique, techniques_.names(),
                 "which approximation of the sphere's visible fraction draws the shadows")
         .hotkey = "T";
     r.addChoice("view", &p_.view, {"lit", "visibility"}, "lit, or V of the measured light alone").hotkey = "V";
@@ -92,7 +87,7 @@ class SoftShadowsLesson : public Lesson {
                 "which edge of the box (0-3 along its x, 4-7 upright, 8-11 along its z)")
         .hotkey = "N";
     r.add("theory.plot", &p_.plot, "A_frac against (1 + a/R) / 2, with the largest difference").hotkey = "P";
-    for (std::size_t i = 0; i < techniques_.size(); ++i) techniques_[i]->declare(r, std::string(kTechniques[i]) + ".");
+    techniques_.declare(r);  // each under its own name: many.samples, pcss.filter_taps, ...
     r.setHotkey("parker.profile", "L");
     declareLights(r);
   }
@@ -100,7 +95,7 @@ class SoftShadowsLesson : public Lesson {
   LessonInfo info() const override { return {"05", "05_soft_shadows", "Soft shadows", kSummary, 4, kHelp, true}; }
 
   void init() override {
-    for (tech::ShadowTechnique* t : techniques_) t->init();
+    techniques_.init();
     edgeLines_.build();
   }
 
@@ -115,12 +110,13 @@ class SoftShadowsLesson : public Lesson {
 
   void update(const FrameInfo&) override {
     scene_.update(p_.scene);
-    pcss_.studentSearch = p_.impl == Impl::Student;  // GLSL exercise 05.6: your blocker search
+    techniques_.get<tech::PcssShadows>("pcss").studentSearch =
+        p_.impl == Impl::Student;  // GLSL exercise 05.6: your blocker search
   }
 
   void render(const FrameInfo& f) override {
     const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
-    tech::ShadowTechnique& technique = *techniques_[std::size_t(p_.technique)];
+    tech::ShadowTechnique& technique = techniques_[p_.technique];
 
     // ==== 1. the light cameras: at the sphere's centre, or at each of N points on it =============
     // ==== 2. shadow passes (maps, moments and their blur, or the light mesh's bake) ==============
@@ -206,13 +202,7 @@ class SoftShadowsLesson : public Lesson {
 
   Params p_;
   tech::SceneCache scene_{"05 scene"};
-  tech::ManyLights many_;
-  tech::PcssShadows pcf_{false}, pcss_{true};
-  tech::SingleSampleSoft parker_{tech::SingleSampleSoft::Kind::Parker};
-  tech::SingleSampleSoft haines_{tech::SingleSampleSoft::Kind::Haines};
-  tech::LightMesh mesh_;
-  tech::FilterableMaps vsm_{tech::FilterableMaps::Kind::Vsm}, esm_{tech::FilterableMaps::Kind::Esm};
-  std::array<tech::ShadowTechnique*, 8> techniques_{&many_, &pcf_, &pcss_, &parker_, &haines_, &mesh_, &vsm_, &esm_};
+  tech::TechniqueSet techniques_{tech::softTechniques()};
   tech::LitPass lit_{"05 scene"};
   LineRenderer edgeLines_{"05 penumbra edges"};
 };

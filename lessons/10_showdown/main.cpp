@@ -29,21 +29,15 @@
 #include "exercises.hpp"
 #include "core/light_rig.hpp"
 #include "gl/gl.hpp"
-#include "cascades.hpp"
-#include "05_soft_shadows/filterable_maps.hpp"
-#include "07_hybrid_maps/hybrid_maps.hpp"
-#include "05_soft_shadows/light_mesh.hpp"
-#include "09_psm_fixes/lispsm.hpp"
-#include "technique/lit_pass.hpp"
-#include "05_soft_shadows/many_lights.hpp"
-#include "technique/no_shadows.hpp"
-#include "05_soft_shadows/pcss.hpp"
-#include "technique/post_projective_view.hpp"
-#include "08_psm/psm.hpp"
-#include "technique/scene_cache.hpp"
-#include "05_soft_shadows/single_sample.hpp"
-#include "04_shadow_volumes/stencil_volumes.hpp"
 #include "03_shadow_quality/uniform_maps.hpp"
+#include "07_hybrid_maps/hybrid_maps.hpp"
+#include "08_psm/psm.hpp"
+#include "09_psm_fixes/lispsm.hpp"
+#include "cascades.hpp"
+#include "showdown_techniques.hpp"
+#include "technique/lit_pass.hpp"
+#include "technique/post_projective_view.hpp"
+#include "technique/scene_cache.hpp"
 
 using namespace shadowlab;
 
@@ -51,17 +45,14 @@ namespace {
 
 enum class View { Lit, Visibility, Maps, FourUp };
 constexpr int kLights = 2;
-constexpr int kTechniques = 15;
-const char* const kNames[kTechniques] = {"uniform", "psm",    "lispsm", "csm",  "hybrid", "volumes", "many", "pcf",
-                                         "pcss",    "parker", "haines", "mesh", "vsm",    "esm",     "none"};
 
 struct Params {
   tech::SceneChoice scene{1, 60000};  // the city: long straight edges near and far, the light's hard case
-  int technique = 3;                  // csm: what engines ship, the baseline of the comparison
+  int technique = 0;                  // of showdown_techniques.cpp's list: declare() starts at csm, the baseline
   View view = View::Lit;
-  bool equalTexels = true;        // every map technique gets `texels` squared per light
-  int texels = 2048;              // 2048^2 per light (texels per side, one of tech::kMapSizes)
-  int quarter[4] = {0, 1, 2, 3};  // the four-up view: uniform, psm, lispsm, csm
+  bool equalTexels = true;  // every map technique gets `texels` squared per light
+  int texels = 2048;        // 2048^2 per light (texels per side, one of tech::kMapSizes)
+  int quarter[4] = {};      // the four-up view: declare() starts at uniform, psm, lispsm, csm
   float ambient = 0.1f;
   Impl impl = Impl::Reference;  // student: your split scheme and texel snapping drive technique=csm
   Light lights[kLights];        // a sun, and a spherical spot (off) for the soft methods
@@ -93,7 +84,9 @@ class ShowdownLesson : public Lesson {
     camera.aim({0, 2, 0}, 45.0f, 0.5f);  // the city from above (lesson 09's view): near and far shadows
     camera.nearZ = 1.0f;                 // Zf/Zn = 200, as lesson 09 (PSM's unit cube is not all far face)
     tech::SceneCache::declare(r, &p_.scene, "procedural scene", "scene size: what every shadow pass draws");
-    const std::vector<std::string> names(std::begin(kNames), std::end(kNames));
+    const std::vector<std::string> names = techniques_.names();
+    p_.technique = techniques_.indexOf("csm");
+    for (int q = 0; q < 4; ++q) p_.quarter[q] = techniques_.indexOf(std::array{"uniform", "psm", "lispsm", "csm"}[q]);
     r.addChoice("technique", &p_.technique, names, "which technique draws the shadows").hotkey = "T";
     r.addChoice("view", &p_.view, {"lit", "visibility", "maps", "four_up"},
                 "lit, V of the measured light, light 0's maps, or four techniques side by side")
@@ -111,7 +104,7 @@ class ShowdownLesson : public Lesson {
     exercises.add("10.2", "snapToTexels", "csm.snap=on: each cascade's map covers nothing: its shadows are gone");
     exercises.add("10.3", "cascadeAt", "");  // "": the lit shader picks the cascade (10.4); not used live
     exercises.addGlsl("10.4", "cascadeAt", "technique=csm: no point falls in a cascade: the sun casts no shadow");
-    for (int i = 0; i < kTechniques; ++i) techniques_[std::size_t(i)]->declare(r, std::string(kNames[i]) + ".");
+    techniques_.declare(r);  // each under its own name: uniform.map_size, csm.cascades, ...
     r.setHotkey("csm.colours", "C");
     postView_.declare(r);
     declareLights(r);
@@ -122,7 +115,7 @@ class ShowdownLesson : public Lesson {
   }
 
   void init() override {
-    for (tech::ShadowTechnique* t : techniques_) t->init();
+    techniques_.init();
     postView_.init();
   }
 
@@ -146,7 +139,7 @@ class ShowdownLesson : public Lesson {
   }
 
   void render(const FrameInfo& f) override {
-    tech::ShadowTechnique& technique = *techniques_[std::size_t(p_.technique)];
+    tech::ShadowTechnique& technique = techniques_[p_.technique];
     if (p_.view == View::FourUp) {
       renderFourUp(f);
       return;
@@ -214,7 +207,7 @@ class ShowdownLesson : public Lesson {
   void drawMaps(const FrameInfo& f) {
     auto t = scope("map view");
     const int h = f.height / 3, x = postView_.rightOfInset(f.width, f.height);  // beside the post-projective inset
-    const std::string name = kNames[p_.technique];
+    const std::string name = techniques_.entry(p_.technique).name;
     const int room = std::max(f.width - x, 1);
     if (name == "psm") psm_.drawMaps(0, x, 0, std::min(room, h * 6), h);
     if (name == "lispsm") lispsm_.drawMaps(0, x, 0, h, h);
@@ -243,8 +236,8 @@ class ShowdownLesson : public Lesson {
       fq.measureLight = -1;
       glBindFramebuffer(GL_FRAMEBUFFER, fq.framebuffer);
       glViewport(0, 0, w, h);
-      tech::ShadowTechnique& t = *techniques_[std::size_t(p_.quarter[q])];
-      if (timed) timers.begin("quarter " + std::to_string(q) + ": " + kNames[p_.quarter[q]]);
+      tech::ShadowTechnique& t = techniques_[p_.quarter[q]];
+      if (timed) timers.begin("quarter " + std::to_string(q) + ": " + t.name());
       timers.setEnabled(false);  // the technique's own passes: the quarter is the figure
       glFinish();
       const auto start = std::chrono::steady_clock::now();
@@ -272,7 +265,7 @@ class ShowdownLesson : public Lesson {
   std::string quarterLabel(int q, const tech::ShadowTechnique& t) const {
     const tech::ShadowStats& s = t.stats();
     char b[160];
-    std::snprintf(b, sizeof b, "%s  %.0f ms  %.2f Mtexels%s  %zuk tris  %.1f MB", kNames[p_.quarter[q]],
+    std::snprintf(b, sizeof b, "%s  %.0f ms  %.2f Mtexels%s  %zuk tris  %.1f MB", t.name().c_str(),
                   quarters_[std::size_t(q)].ms, double(s.texels) / 1e6, s.reusedMaps ? " (maps reused)" : "",
                   s.triangles / 1000, double(s.bytes) / (1024.0 * 1024.0));
     return b;
@@ -290,22 +283,13 @@ class ShowdownLesson : public Lesson {
 
   Params p_;
   tech::SceneCache scene_{"10 scene"};
-  tech::UniformShadowMaps uniform_;
-  tech::PerspectiveShadowMaps psm_;
-  tech::LightSpacePsm lispsm_;
-  tech::CascadedShadowMaps csm_;
-  tech::HybridShadowMaps hybrid_;
-  tech::StencilVolumes volumes_;
-  tech::ManyLights many_;
-  tech::PcssShadows pcf_{false}, pcss_{true};
-  tech::SingleSampleSoft parker_{tech::SingleSampleSoft::Kind::Parker};
-  tech::SingleSampleSoft haines_{tech::SingleSampleSoft::Kind::Haines};
-  tech::LightMesh mesh_;
-  tech::FilterableMaps vsm_{tech::FilterableMaps::Kind::Vsm}, esm_{tech::FilterableMaps::Kind::Esm};
-  tech::NoShadows none_;
-  std::array<tech::ShadowTechnique*, kTechniques> techniques_{&uniform_, &psm_,  &lispsm_, &csm_,  &hybrid_,
-                                                              &volumes_, &many_, &pcf_,    &pcss_, &parker_,
-                                                              &haines_,  &mesh_, &vsm_,    &esm_,  &none_};
+  tech::TechniqueSet techniques_{tech::showdownTechniques()};
+  // What only some of them have: equal texels, the maps views, the cascades' student hooks.
+  tech::UniformShadowMaps& uniform_ = techniques_.get<tech::UniformShadowMaps>("uniform");
+  tech::PerspectiveShadowMaps& psm_ = techniques_.get<tech::PerspectiveShadowMaps>("psm");
+  tech::LightSpacePsm& lispsm_ = techniques_.get<tech::LightSpacePsm>("lispsm");
+  tech::CascadedShadowMaps& csm_ = techniques_.get<tech::CascadedShadowMaps>("csm");
+  tech::HybridShadowMaps& hybrid_ = techniques_.get<tech::HybridShadowMaps>("hybrid");
   tech::LitPass lit_{"10 scene"};
   tech::PostProjectiveView postView_;
   std::array<Quarter, 4> quarters_;
