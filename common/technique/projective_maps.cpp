@@ -148,7 +148,7 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
   glEnable(GL_DEPTH_CLAMP);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(p_.slopeOffset, 0.0f);
-  const bool student = studentBias && p_.bias == ProjectiveBias::WorldTexel;
+  const bool biasOnCpu = student.worldBias && p_.bias == ProjectiveBias::WorldTexel;
   for (int k = 0; k < l.used; ++k) {
     glBindFramebuffer(GL_FRAMEBUFFER, l.fbo.id());
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, l.array.id(), 0, k);
@@ -161,7 +161,7 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
     l.texelStep[std::size_t(k)] = glm::vec4(step.u);
     l.clipW[std::size_t(k)] = glm::vec4(step.r);
     const std::span<const char> drawn = maps[std::size_t(k)].keep.empty() ? keep : maps[std::size_t(k)].keep;
-    if (student) {
+    if (biasOnCpu) {
       stats.triangles += drawStudentBiased(c, m, side, drawn, worldLight);
     } else {
       setBiasUniforms(m, side, worldLight);
@@ -182,7 +182,7 @@ PassKey ProjectiveMapSet::passKey(const ShadowContext& c, const PerLight& l, std
                                   int side, std::span<const char> keep, const glm::dvec4& worldLight) const {
   PassKey key;
   key << c.scene.revision() << l.generation << side << p_.format << p_.bias << p_.worldA << p_.worldB << p_.worldMax
-      << p_.slopeOffset << bool(studentBias) << worldLight << maps.size() << keep;
+      << p_.slopeOffset << bool(student.worldBias) << worldLight << maps.size() << keep;
   for (const ProjectiveMapView& m : maps) key << m.worldToClip << m.keep;
   return key;
 }
@@ -204,7 +204,7 @@ std::size_t ProjectiveMapSet::drawStudentBiased(const ShadowContext& c, const gl
     for (const glm::vec3& v : scene.meshes[o.mesh].positions) {
       const glm::dvec3 p(o.model * glm::vec4(v, 1.0f));
       const glm::dvec3 biased =
-          studentBias(worldToClip, p, psm::directionFromLight(worldLight, p), p_.worldA, p_.worldB, double(side));
+          student.worldBias(worldToClip, p, psm::directionFromLight(worldLight, p), p_.worldA, p_.worldB, double(side));
       studentScratch_.push_back(glm::vec3(biased));
     }
   }
@@ -244,8 +244,8 @@ std::vector<std::string> ProjectiveMapSet::shaderDefines() const {
   if (p_.normalOffset > 0 || (p_.receiverPlane && p_.planeNormalOffset > 0)) defines.push_back("PSM_NORMAL_OFFSET");
   if (p_.receiverPlane)
     defines.push_back(p_.filter == ProjectiveFilter::Hardware2x2 ? "PSM_RECEIVER_PLANE 2" : "PSM_RECEIVER_PLANE 1");
-  if (studentLookup) defines.push_back("SHADOWLAB_STUDENT_PSM_LOOKUP");
-  if (studentFaces) defines.push_back("SHADOWLAB_STUDENT_PSM_FACES");
+  if (student.glslLookup) defines.push_back("SHADOWLAB_STUDENT_PSM_LOOKUP");
+  if (student.glslFaces) defines.push_back("SHADOWLAB_STUDENT_PSM_FACES");
   return defines;
 }
 

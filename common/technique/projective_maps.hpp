@@ -106,14 +106,17 @@ class ProjectiveMapSet {
   bool anyFaces() const;
   // The lit program's variant for these maps: PSM_FACES (some light has face maps), PSM_NORMAL_OFFSET.
   std::vector<std::string> shaderDefines() const;
-  // A student's world-space bias (ex09.4), evaluated per caster vertex on the CPU; empty: the
-  // reference in the depth pass's vertex shader.
-  std::function<glm::dvec3(const glm::dmat4&, const glm::dvec3&, const glm::dvec3&, double, double, double)>
-      studentBias;
-  // The GLSL exercises (impl=student): lesson 08's map lookup (08.3, psmMapCoords) and lesson 09's
-  // face choice (09.6, cubeFaceLayer) from the student's shaders/NN_name/exercises.glsl
-  // (shaderDefines() add SHADOWLAB_STUDENT_PSM_LOOKUP / SHADOWLAB_STUDENT_PSM_FACES).
-  bool studentLookup = false, studentFaces = false;
+  // A student's world-space bias (ex09.4), evaluated per caster vertex on the CPU.
+  using WorldBias =
+      std::function<glm::dvec3(const glm::dmat4&, const glm::dvec3&, const glm::dvec3&, double, double, double)>;
+  // The steps of lessons 08 and 09 that the maps run (impl=student, set by the PSM technique);
+  // empty or false: the reference (the bias in the depth pass's vertex shader).
+  struct Student {
+    WorldBias worldBias;      // 09.4
+    bool glslLookup = false;  // 08.3, psmMapCoords: shaderDefines() add SHADOWLAB_STUDENT_PSM_LOOKUP
+    bool glslFaces = false;   // 09.6, cubeFaceLayer: shaderDefines() add SHADOWLAB_STUDENT_PSM_FACES
+  };
+  Student student;
   // The layers of light i side by side in (x, y, w, h) of the bound framebuffer (view=map).
   void drawLayers(int light, int x, int y, int w, int h);
 

@@ -111,11 +111,10 @@ class ShadowQualityLesson : public Lesson {
   void update(const FrameInfo& f) override {
     scene_.update(p_.scene);
     if (p_.drift) camera.target.x += float(f.dt) * 0.37f;
-    // impl=student: the student's culling test and fit replace the reference's in the technique.
-    const bool student = p_.impl == Impl::Student;
-    maps_.casterTest = student ? shadow::CasterTest(ex03::casterMayShadow) : nullptr;
-    maps_.fitter = student ? shadow::OrthoFitter(ex03::fitOrthographic) : nullptr;
-    maps_.studentPcf = student;  // GLSL exercise 03.6: your N x N kernel (filter=pcf_nxn)
+    // impl=student: your culling test (03.4), fit (03.5) and N x N kernel (03.6, filter=pcf_nxn).
+    maps_.student = p_.impl == Impl::Student
+                        ? tech::UniformShadowMaps::Student{ex03::casterMayShadow, ex03::fitOrthographic, true}
+                        : tech::UniformShadowMaps::Student{};
   }
 
   void render(const FrameInfo& f) override {

@@ -71,8 +71,8 @@ void UniformShadowMaps::fitLight(const ShadowContext& c, int i, const shadow::Co
     l.faces = shadow::cubeCameras(light.position, p_.cubeNear, p_.cubeFar, boxes, view, p_.cullCasters, p_.skipFaces);
     return;
   }
-  const shadow::Map2DCamera m =
-      shadow::fitMap2D(light, boxes, view, directionalFit(p_, size, casterTest, fitter), p_.spotNear, p_.spotFar);
+  const shadow::Map2DCamera m = shadow::fitMap2D(
+      light, boxes, view, directionalFit(p_, size, student.casterTest, student.fitter), p_.spotNear, p_.spotFar);
   l.camera = m.camera;
   l.texel = m.texel;
   l.textureMatrix = m.textureMatrix;
@@ -175,7 +175,7 @@ std::vector<std::string> UniformShadowMaps::shaderDefines() const {
   std::vector<std::string> defines{"SHADOW_TYPES " + types, "SHADOW_FILTER " + std::to_string(int(p_.filter)),
                                    "PCF_SIZE " + std::to_string(p_.pcfSize),
                                    std::string("RECEIVER_PLANE ") + (p_.receiverPlane ? "1" : "0")};
-  if (studentPcf) defines.push_back("SHADOWLAB_STUDENT_PCF");
+  if (student.glslPcf) defines.push_back("SHADOWLAB_STUDENT_PCF");
   return defines;
 }
 

@@ -64,12 +64,13 @@ class UniformShadowMaps : public ShadowTechnique, public PostProjectiveSubject {
   //    nothing invalidated is kept.
   void renderDepth(const ShadowContext& c);
 
-  // A student's versions of the directional light's steps (impl=student); empty: the reference.
-  shadow::CasterTest casterTest;
-  shadow::OrthoFitter fitter;
-  // Lesson 03's GLSL exercise 03.6 (impl=student): the N x N kernel from the student's
-  // shaders/03_shadow_quality/exercises.glsl (shaderDefines() add SHADOWLAB_STUDENT_PCF).
-  bool studentPcf = false;
+  // A student's versions of the steps (lesson 03, impl=student); empty or false: the reference.
+  struct Student {
+    shadow::CasterTest casterTest;  // 03.4: may a caster shade the view?
+    shadow::OrthoFitter fitter;     // 03.5: the sun's orthographic fit
+    bool glslPcf = false;           // 03.6: the N x N kernel of shaders/03_shadow_quality/exercises.glsl
+  };
+  Student student;
 
   UniformMapParams& params() { return p_; }
   // Light i's 2D map (directional or spot, when on), for views of the map; nullptr otherwise.

@@ -91,7 +91,7 @@ class ShadowVolumeLesson : public Lesson {
   LessonInfo info() const override { return {"04", "04_shadow_volumes", "Shadow volumes", kSummary, 3, kHelp, true}; }
 
   void init() override {
-    volumes_.studentExtrusion = p_.impl == Impl::Student;  // a broken exercises.glsl stops a headless run at once
+    applyImpl();  // a broken exercises.glsl stops a headless run at once
     volumes_.init();
   }
 
@@ -105,12 +105,15 @@ class ShadowVolumeLesson : public Lesson {
       const float a = float(f.time) * 0.6f;
       p_.lights[1].position = {4.0f * std::cos(a), p_.lights[1].position.y, 4.0f * std::sin(a)};
     }
-    // impl=student: the student's silhouette test, projection, stencil ops and near-plane test.
-    volumes_.hooks = {};
-    volumes_.studentExtrusion = p_.impl == Impl::Student;  // GLSL exercise 04.5 (silhouettes=gpu)
-    if (p_.impl == Impl::Student)
-      volumes_.hooks = {ex04::stencilOps, &ex04::isSilhouette, ex04::infinitePerspective,
-                        ex04::volumeMayReachNearPlane};
+    applyImpl();
+  }
+
+  // impl=student: your silhouette test, projection, stencil ops, near-plane test and extrusion.
+  void applyImpl() {
+    volumes_.student = p_.impl == Impl::Student ? tech::StencilVolumes::Student{ex04::stencilOps, &ex04::isSilhouette,
+                                                                                ex04::infinitePerspective,
+                                                                                ex04::volumeMayReachNearPlane, true}
+                                                : tech::StencilVolumes::Student{};
   }
 
   void render(const FrameInfo& f) override {

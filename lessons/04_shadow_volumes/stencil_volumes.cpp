@@ -88,11 +88,11 @@ void StencilVolumes::render(const ShadowContext& c) {
 // The CPU path: silhouettes and caps per caster in its own space (the light taken there), then
 // moved to world space, all casters of one light in one buffer.
 void StencilVolumes::buildVolumes(const ShadowContext& c, VolumeCache& cache, const glm::vec4& L) {
-  const std::uint64_t key = c.scene.revision() * 4 + (hooks.isSilhouette ? 2 : 0) + std::uint64_t(p_.openMeshes);
+  const std::uint64_t key = c.scene.revision() * 4 + (student.isSilhouette ? 2 : 0) + std::uint64_t(p_.openMeshes);
   if (cache.key == key && cache.light == L) return;
   auto t = gl::TimerScope(c.timers, "cpu volumes");
   volume::buildSceneVolumes(
-      c.scene.scene(), adjacency_, L, [this](std::size_t o) { return casts(o); }, hooks.isSilhouette, cache);
+      c.scene.scene(), adjacency_, L, [this](std::size_t o) { return casts(o); }, student.isSilhouette, cache);
   if (!cache.vao) {
     cache.vao = gl::makeVertexArray("volumes");
     cache.buffer = gl::makeBuffer(GL_ARRAY_BUFFER, "volumes");
@@ -121,8 +121,8 @@ StencilVolumes::Frame StencilVolumes::beginFrame(const ShadowContext& c) {
   Frame f{c};
   glm::mat4 proj = fi.projection;
   if (p_.far == P::FarPlane::Infinite)
-    proj = hooks.infinitePerspective && !fi.godView
-               ? hooks.infinitePerspective(c.viewer.fovY, aspect, c.viewer.nearZ, volume::kInfiniteEpsilon)
+    proj = student.infinitePerspective && !fi.godView
+               ? student.infinitePerspective(c.viewer.fovY, aspect, c.viewer.nearZ, volume::kInfiniteEpsilon)
                : volume::makeFarInfinite(fi.projection);
   f.viewProj = proj * fi.view;
   f.nearRect = volume::nearRect(c.viewer.view(), c.viewer.fovY, aspect, c.viewer.nearZ);
@@ -202,9 +202,9 @@ void StencilVolumes::renderLight(const Frame& frame, int i, const LitSettings& l
     if (!casts(o)) continue;
     const bool open = !adjacency_[scene.objects[o].mesh].closed();
     const Aabb box = c.scene.boxes()[o];
-    const bool reach = open                      ? false
-                       : hooks.mayReachNearPlane ? hooks.mayReachNearPlane(box, f.nearRect, L)
-                                                 : volume::volumeMayReachNearPlane(box, f.nearRect, L);
+    const bool reach = open                        ? false
+                       : student.mayReachNearPlane ? student.mayReachNearPlane(box, f.nearRect, L)
+                                                   : volume::volumeMayReachNearPlane(box, f.nearRect, L);
     f.zFail[o] = p_.method == P::Method::ZFail ? !open : p_.method == P::Method::ZPass ? 0 : reach;
     (f.zFail[o] ? zFailCount_ : zPassCount_) += 1;
   }
@@ -237,7 +237,7 @@ void StencilVolumes::countStencil(const Frame& f, int i, const VolumeCache& cach
   glStencilFunc(GL_ALWAYS, 0, 0xff);
   if (p_.far == P::FarPlane::DepthClamp) glEnable(GL_DEPTH_CLAMP);
   for (bool fail : {false, true}) {
-    const volume::StencilOps ops = hooks.stencilOps ? hooks.stencilOps(fail) : volume::stencilOps(fail);
+    const volume::StencilOps ops = student.stencilOps ? student.stencilOps(fail) : volume::stencilOps(fail);
     auto set = [](GLenum face, const volume::FaceStencilOps& o) {
       glStencilOpSeparate(face, toGl(o.stencilFail), toGl(o.depthFail), toGl(o.depthPass));
     };
@@ -339,8 +339,8 @@ void StencilVolumes::measureFill(const Frame& f, int i, const VolumeCache& c, co
   // count the same fragments again is skipped, as a map nothing invalidated is kept.
   PassKey key;
   key << c.key << f.c.scene.revision() << f.viewProj << L << p_ << f.c.frame.width << f.c.frame.height
-      << f.c.lights[std::size_t(i)] << f.c.frame.measureLight << bool(hooks.isSilhouette)
-      << bool(hooks.mayReachNearPlane);
+      << f.c.lights[std::size_t(i)] << f.c.frame.measureLight << bool(student.isSilhouette)
+      << bool(student.mayReachNearPlane);
   for (int z : f.zFail) key << z;
   if (fl.issued && key == fl.counted) return;
   fl.counted = std::move(key);

@@ -40,14 +40,6 @@ struct StencilVolumeParams {
   bool fillQuery = true;                       // count every volume fragment (occlusion query)
 };
 
-// A student's versions of the steps (lesson 04, impl=student); empty: the reference.
-struct StencilVolumeHooks {
-  std::function<volume::StencilOps(bool zFail)> stencilOps;
-  volume::SilhouetteTest isSilhouette = nullptr;
-  std::function<glm::mat4(float fovY, float aspect, float nearZ, float epsilon)> infinitePerspective;
-  std::function<bool(const Aabb&, const volume::NearRect&, const glm::vec4&)> mayReachNearPlane;
-};
-
 class StencilVolumes : public ShadowTechnique {
  public:
   explicit StencilVolumes(StencilVolumeParams defaults = {}) : p_(defaults) {}
@@ -78,10 +70,17 @@ class StencilVolumes : public ShadowTechnique {
   // 4. The views (volumes, wireframe, silhouettes), the god view's lines, the header's figures.
   void finishFrame(const Frame& f);
 
-  StencilVolumeHooks hooks;
-  // Lesson 04's GLSL exercise 04.5 (impl=student): the extrusion to infinity from the student's
-  // shaders/04_shadow_volumes/exercises.glsl in the geometry shader (silhouettes=gpu).
-  bool studentExtrusion = false;
+  // A student's versions of the steps (lesson 04, impl=student); empty or false: the reference.
+  struct Student {
+    std::function<volume::StencilOps(bool zFail)> stencilOps;                                            // 04.3
+    volume::SilhouetteTest isSilhouette = nullptr;                                                       // 04.1
+    std::function<glm::mat4(float fovY, float aspect, float nearZ, float epsilon)> infinitePerspective;  // 04.2
+    std::function<bool(const Aabb&, const volume::NearRect&, const glm::vec4&)> mayReachNearPlane;       // 04.4
+    // 04.5: the extrusion to infinity of shaders/04_shadow_volumes/exercises.glsl in the geometry
+    // shader (silhouettes=gpu)
+    bool glslExtrusion = false;
+  };
+  Student student;
   StencilVolumeParams& params() { return p_; }
   // The stencil view's colour key (none in the other views).
   std::optional<Legend> legend() const;
@@ -138,7 +137,7 @@ class StencilVolumes : public ShadowTechnique {
   ExerciseProgram volumeGs_{
       "volumes: volume gs",
       {"04_shadow_volumes/volume_gs.vert", "04_shadow_volumes/volume.geom", "04_shadow_volumes/volume.frag"},
-      [this] { return studentExtrusion; }};
+      [this] { return student.glslExtrusion; }};
   gl::Program heat_{"volumes: stencil heatmap", {"common/fullscreen.vert", "04_shadow_volumes/heat.frag"}};
   gl::VertexArray emptyVao_, lineVao_;
   gl::Buffer lineBuffer_;

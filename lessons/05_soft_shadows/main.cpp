@@ -110,8 +110,7 @@ class SoftShadowsLesson : public Lesson {
 
   void update(const FrameInfo&) override {
     scene_.update(p_.scene);
-    techniques_.get<tech::PcssShadows>("pcss").studentSearch =
-        p_.impl == Impl::Student;  // GLSL exercise 05.6: your blocker search
+    techniques_.get<tech::PcssShadows>("pcss").student.glslSearch = p_.impl == Impl::Student;  // 05.6
   }
 
   void render(const FrameInfo& f) override {

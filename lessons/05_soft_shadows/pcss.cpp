@@ -34,7 +34,7 @@ std::vector<std::string> PcssShadows::shaderDefines() const {
   std::vector<std::string> d = {"SEARCH_TAPS " + std::to_string(quad ? searchCount() / 4 : searchCount())};
   if (quad) d.push_back("QUAD_SEARCH 1");
   d.push_back(adaptive_ ? "PCSS" : "FILTER_TAPS " + std::to_string(filterCount()));
-  if (adaptive_ && studentSearch) d.push_back("SHADOWLAB_STUDENT_PCSS");
+  if (adaptive_ && student.glslSearch) d.push_back("SHADOWLAB_STUDENT_PCSS");
   return d;
 }
 

@@ -42,9 +42,12 @@ class PcssShadows : public ShadowTechnique {
   void bindVisibility(const gl::Program& lit, int firstUnit) const override;
   void unbindVisibility(int firstUnit) const override { maps_.unbind(firstUnit); }
   PcssParams& params() { return p_; }
-  // Lesson 05's GLSL exercise 05.6 (impl=student): the blocker search from the student's
-  // shaders/05_soft_shadows/exercises.glsl (shaderDefines() add SHADOWLAB_STUDENT_PCSS).
-  bool studentSearch = false;
+  // A student's version of the search (lesson 05, impl=student): shaderDefines() add
+  // SHADOWLAB_STUDENT_PCSS.
+  struct Student {
+    bool glslSearch = false;  // 05.6: the blocker search of shaders/05_soft_shadows/exercises.glsl
+  };
+  Student student;
 
  private:
   void render(const ShadowContext& c) override;

@@ -48,7 +48,7 @@ void HybridShadowMaps::init() {
   casters_.build();
   builder_.init();
   levelsView_.build();
-  levelsViewStudent_.setRequired([this] { return studentDescent; });
+  levelsViewStudent_.setRequired([this] { return student.glslDescent; });
   levelsViewStudent_.build();
   vao_ = gl::makeVertexArray("hybrid maps: views");
   const std::uint32_t zero[4] = {0, 0, 0, 0};
@@ -103,7 +103,7 @@ void HybridShadowMaps::fitLights(const ShadowContext& c) {
 PassKey HybridShadowMaps::passKey(const ShadowContext& c, const PerLight& l) const {
   PassKey key;
   key << c.scene.revision() << p_.mapSize << p_.format << p_.offsetFactor << p_.offsetUnits << p_.cullFront << p_.levels
-      << p_.criterion << p_.eps0 << p_.maxSlope << p_.build << bool(sweep) << l.camera.camera.viewProj();
+      << p_.criterion << p_.eps0 << p_.maxSlope << p_.build << bool(student.sweep) << l.camera.camera.viewProj();
   return key << std::span<const char>(l.camera.camera.casters);
 }
 
@@ -136,10 +136,10 @@ void HybridShadowMaps::renderDepth(const ShadowContext& c) {
 
 void HybridShadowMaps::buildOnCpu(PerLight& l, const hybrid::MergeRule& rule) {
   const shadow::DepthMap depth = builder_.readDepth(l.depth);
-  std::vector<hybrid::MergeGrid> grids = hybrid::mergeSweep(depth, rule, sweep ? 0 : p_.levels);
-  for (int k = 1; sweep && k <= p_.levels; ++k) {
+  std::vector<hybrid::MergeGrid> grids = hybrid::mergeSweep(depth, rule, student.sweep ? 0 : p_.levels);
+  for (int k = 1; student.sweep && k <= p_.levels; ++k) {
     // A student's sweep: its grid must be the next level's, or the index cannot be built from it.
-    hybrid::MergeGrid next = sweep(grids.back(), rule, k);
+    hybrid::MergeGrid next = student.sweep(grids.back(), rule, k);
     const int expected = hybrid::halvedSize(grids.back().size);
     if (next.size != expected || next.value.size() != std::size_t(expected) * std::size_t(expected))
       throw std::runtime_error("impl=student: sweepLevel returned a " + std::to_string(next.size) + "x" +
@@ -158,7 +158,7 @@ void HybridShadowMaps::buildMaps(const ShadowContext& c) {
     if (!l.on || l.reused) continue;
     const hybrid::MergeRule rule = mergeRule(int(i));
     const std::string suffix = " light" + std::to_string(i);
-    if (p_.build == HybridPath::Cpu || sweep) {
+    if (p_.build == HybridPath::Cpu || student.sweep) {
       auto t = gl::TimerScope(c.timers, "hybrid cpu build" + suffix);
       buildOnCpu(l, rule);
     } else {
@@ -212,7 +212,7 @@ void HybridShadowMaps::render(const ShadowContext& c) {
 // ==== 5. what the lit pass reads: per light its matrix, texel size, levels, root and records ========
 std::vector<std::string> HybridShadowMaps::shaderDefines() const {
   std::vector<std::string> defines{"HYBRID_FILTER " + std::to_string(int(p_.filter))};
-  if (studentDescent) defines.push_back("SHADOWLAB_STUDENT_DESCENT");
+  if (student.glslDescent) defines.push_back("SHADOWLAB_STUDENT_DESCENT");
   return defines;
 }
 
@@ -261,7 +261,7 @@ void HybridShadowMaps::drawLevels(int light, int x, int y, int width, int height
   glGetIntegerv(GL_VIEWPORT, viewport);
   glViewport(x, y, width, height);
   glDisable(GL_DEPTH_TEST);
-  const gl::Program& view = studentDescent ? levelsViewStudent_ : levelsView_;  // GLSL exercise 07.5
+  const gl::Program& view = student.glslDescent ? levelsViewStudent_ : levelsView_;  // GLSL exercise 07.5
   view.use();
   view.set("uRoot", 0);
   view.set("uRecords", 1);

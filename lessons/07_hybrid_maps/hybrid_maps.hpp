@@ -63,10 +63,13 @@ class HybridShadowMaps : public ShadowTechnique {
   std::vector<std::string> shaderDefines() const override;
   void bindVisibility(const gl::Program& lit, int firstUnit) const override;
   void unbindVisibility(int firstUnit) const override;
-  // Lesson 07's GLSL exercise 07.5 (impl=student): the index descent from the student's
-  // shaders/07_hybrid_maps/exercises.glsl in the visibility (shaderDefines() add
-  // SHADOWLAB_STUDENT_DESCENT).
-  bool studentDescent = false;
+  // A student's versions of the steps (lesson 07, impl=student); empty or false: the reference.
+  struct Student {
+    // 07.2: one level of the sweep; when set, the maps are built on the CPU with it
+    std::function<hybrid::MergeGrid(const hybrid::MergeGrid&, const hybrid::MergeRule&, int)> sweep;
+    bool glslDescent = false;  // 07.5: the index descent of shaders/07_hybrid_maps/exercises.glsl
+  };
+  Student student;
 
   // ---- the stages of render(), in order, for lesson 07 to call one by one ----------------------
   void fitLights(const ShadowContext& c);    // 1. light cameras (GL-free)
@@ -85,8 +88,6 @@ class HybridShadowMaps : public ShadowTechnique {
   int viewLight(int preferred) const;
 
   // ---- hooks and access ---------------------------------------------------------------------------
-  // A student's level sweep (impl=student): when set, the maps are built on the CPU with it.
-  std::function<hybrid::MergeGrid(const hybrid::MergeGrid&, const hybrid::MergeRule&, int)> sweep;
   HybridMapParams& params() { return p_; }
   const HybridMapParams& params() const { return p_; }
   // Light i's map and camera this frame (nullptr when it has none).
@@ -118,7 +119,7 @@ class HybridShadowMaps : public ShadowTechnique {
   HybridBuilder builder_{"hybrid maps"};
   gl::Texture dummy_;  // an RGBA32UI texel bound where a light has no map
   gl::Program levelsView_{"hybrid maps: levels view", {"common/fullscreen.vert", "07_hybrid_maps/levels_view.frag"}};
-  // The same view through the student's descent (studentDescent): required only while it is in use.
+  // The same view through the student's descent (student.glslDescent): required only while it is in use.
   gl::Program levelsViewStudent_{"hybrid maps: levels view (student GLSL)",
                                  {"common/fullscreen.vert", "07_hybrid_maps/levels_view.frag"},
                                  {"SHADOWLAB_STUDENT_DESCENT"}};

@@ -57,6 +57,11 @@ The header: stored texels and bytes (root + index) against the full map.
 T: lesson 03's uniform map (uniform.*). G: build on the CPU (the reference).
 M: error and aliasing heatmaps; the figures near edges are in --measure's JSON.)";
 
+// Exercise 07.2 as the technique's sweep step.
+hybrid::MergeGrid studentSweep(const hybrid::MergeGrid& children, const hybrid::MergeRule& rule, int) {
+  return ex07::sweepLevel(children, rule.eps0);
+}
+
 }  // namespace
 
 // The lesson holds the hybrid maps (its subject: bare parameter names) and lesson 03's uniform
@@ -105,13 +110,10 @@ class HybridMapsLesson : public Lesson {
 
   void update(const FrameInfo&) override {
     scene_.update(p_.scene);
-    // impl=student: your level sweep (window depth, eps0) replaces the reference's, on the CPU.
-    if (p_.impl == Impl::Student)
-      hybrid_.sweep = [](const hybrid::MergeGrid& children, const hybrid::MergeRule& rule, int) {
-        return ex07::sweepLevel(children, rule.eps0);
-      };
-    else hybrid_.sweep = nullptr;
-    hybrid_.studentDescent = p_.impl == Impl::Student;  // GLSL exercise 07.5: your descent, every tap
+    // impl=student: your level sweep (07.2: window depth, eps0; the maps then build on the CPU) and
+    // your index descent at every tap (07.5).
+    hybrid_.student = p_.impl == Impl::Student ? tech::HybridShadowMaps::Student{studentSweep, true}
+                                               : tech::HybridShadowMaps::Student{};
   }
 
   void render(const FrameInfo& f) override {

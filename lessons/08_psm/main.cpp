@@ -132,11 +132,14 @@ class OriginalPsmLesson : public Lesson {
     scene_.update(p_.scene);
     if (p_.turn) camera.yaw += float(f.dt) * p_.turnSpeed;
     if (p_.equalTexels) uniform_.params().mapSize = psm_.maps().params().mapSize;
-    const bool student = p_.impl == Impl::Student;
-    psm::PsmSwitches& steps = psm_.studentSteps();
-    steps.toPostProjective = student ? decltype(steps.toPostProjective)(studentLight) : nullptr;
-    steps.virtualShift = student ? decltype(steps.virtualShift)(studentShift) : nullptr;
-    psm_.maps().studentLookup = student;  // GLSL exercise 08.3: your lookup in the map
+    // impl=student: your post-projective light (08.1), slide (08.2) and lookup in the map (08.3).
+    tech::PerspectiveShadowMaps::Student student;
+    if (p_.impl == Impl::Student) {
+      student.toPostProjective = studentLight;
+      student.virtualShift = studentShift;
+      student.glslLookup = true;
+    }
+    psm_.student = student;
   }
 
   void render(const FrameInfo& f) override {

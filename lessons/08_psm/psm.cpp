@@ -79,7 +79,10 @@ void PerspectiveShadowMaps::declare(ParamRegistry& r, const std::string& n) {
 }
 
 psm::PsmSwitches PerspectiveShadowMaps::switches() const {
-  psm::PsmSwitches s = student_;  // the student's steps, if any; the settings are ours
+  psm::PsmSwitches s;
+  s.toPostProjective = student.toPostProjective;
+  s.virtualShift = student.virtualShift;
+  s.options.steps = student.fixes;
   s.inverseProjection = p_.inverseProjection;
   s.receiverClipping = p_.receiverClipping;
   s.faces = p_.faces;
@@ -139,6 +142,7 @@ void PerspectiveShadowMaps::render(const ShadowContext& c) {
 }
 
 void PerspectiveShadowMaps::planLights(const ShadowContext& c) {
+  maps_.student = {student.worldBias, student.glslLookup, student.glslFaces};  // the maps' share of the steps
   stats_ = {};
   receivers_ = receiverCache_.get(c.scene, p_.receiverTiles);
   lights_.resize(kPsmLights);

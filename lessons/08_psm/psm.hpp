@@ -71,9 +71,16 @@ class PerspectiveShadowMaps : public ShadowTechnique, public PostProjectiveSubje
   // This frame's plan of light i (nullptr for a light without one), and its key points.
   const psm::PsmPlan* plan(int light) const;
   std::span<const glm::dvec3> worldKeyPoints(int light) const;
-  // A student's steps (impl=student): the post-projective light, the virtual shift, the inverse
-  // projection, the cone, the face test (in switches()) and the world-space bias (maps()).
-  psm::PsmSwitches& studentSteps() { return student_; }
+  // A student's versions of the steps (lessons 08 and 09, impl=student); empty or false: the reference.
+  struct Student {
+    std::function<psm::PostProjectiveLight(const glm::dmat4&, const glm::dvec4&)> toPostProjective;  // 08.1
+    std::function<double(const psm::CameraFrustum&, std::span<const Aabb>)> virtualShift;            // 08.2
+    psm::PsmSteps fixes;                    // 09.1 the inverse projection, 09.2 the smallest cone, 09.3 the face test
+    ProjectiveMapSet::WorldBias worldBias;  // 09.4, per caster vertex on the CPU
+    bool glslLookup = false;                // 08.3: the lookup in the map (shaders/08_psm/exercises.glsl)
+    bool glslFaces = false;                 // 09.6: the face map of a point (shaders/09_psm_fixes/exercises.glsl)
+  };
+  Student student;
   ProjectiveMapSet& maps() { return maps_; }
   // Draws light i's maps side by side (view=map).
   void drawMaps(int light, int x, int y, int w, int h) { maps_.drawLayers(light, x, y, w, h); }
@@ -93,7 +100,6 @@ class PerspectiveShadowMaps : public ShadowTechnique, public PostProjectiveSubje
 
   PsmParams p_;
   ProjectiveMapSet maps_;
-  psm::PsmSwitches student_;
   std::vector<PerLight> lights_;
   ReceiverVolumes receiverCache_;
   std::span<const Aabb> receivers_;

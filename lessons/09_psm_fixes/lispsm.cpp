@@ -35,8 +35,8 @@ bool LightSpacePsm::fitLight(const ShadowContext& c, int i, const psm::CameraFru
     return false;
   }
   if (light.kind == LightKind::Directional) {
-    const psm::LispsmCamera fit =
-        psm::fitLispsm(camera, glm::dvec3(light.direction), points_, psm::DepthRange::MinusOneToOne, p_.n, optimalN);
+    const psm::LispsmCamera fit = psm::fitLispsm(camera, glm::dvec3(light.direction), points_,
+                                                 psm::DepthRange::MinusOneToOne, p_.n, student.optimalN);
     l.worldToClip = fit.worldToClip;
     char b[96];
     if (fit.perspective)

@@ -40,8 +40,11 @@ class LightSpacePsm : public ShadowTechnique, public PostProjectiveSubject {
 
   LispsmParams& params() { return p_; }
   ProjectiveMapSet& maps() { return maps_; }
-  // A student's n_opt (ex09.5, impl=student); empty: psm::lispsmOptimalN.
-  std::function<double(double, double, double)> optimalN;
+  // A student's version of the step (lesson 09, impl=student); empty: the reference.
+  struct Student {
+    std::function<double(double, double, double)> optimalN;  // 09.5: n_opt (psm::lispsmOptimalN)
+  };
+  Student student;
   void drawMaps(int light, int x, int y, int w, int h) { maps_.drawLayers(light, x, y, w, h); }
 
  private:

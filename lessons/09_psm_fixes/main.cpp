@@ -136,14 +136,18 @@ class PsmFixesLesson : public Lesson {
       uniform_.params().mapSize = psm_.maps().params().mapSize;
       uniform_.params().cubeSize = psm_.maps().params().mapSize;
     }
-    const bool student = p_.impl == Impl::Student;
-    psm::PsmSteps& steps = psm_.studentSteps().options.steps;
-    steps.inverseProjection = student ? decltype(steps.inverseProjection)(ex09::inverseProjection) : nullptr;
-    steps.cone = student ? decltype(steps.cone)(studentCone) : nullptr;
-    steps.faceVisible = student ? decltype(steps.faceVisible)(studentFaceVisible) : nullptr;
-    psm_.maps().studentBias = student ? decltype(psm_.maps().studentBias)(ex09::texelSizeBias) : nullptr;
-    lispsm_.optimalN = student ? decltype(lispsm_.optimalN)(ex09::lispsmOptimalN) : nullptr;
-    psm_.maps().studentFaces = student;  // GLSL exercise 09.6: your face choice (fix.faces)
+    // impl=student: your inverse projection (09.1), cone (09.2), face test (09.3), texel-size bias
+    // (09.4) and face choice in the shader (09.6) in PSM, your n_opt (09.5) in LiSPSM.
+    tech::PerspectiveShadowMaps::Student psm;
+    tech::LightSpacePsm::Student lispsm;
+    if (p_.impl == Impl::Student) {
+      psm.fixes = {studentCone, ex09::inverseProjection, studentFaceVisible};
+      psm.worldBias = ex09::texelSizeBias;
+      psm.glslFaces = true;
+      lispsm.optimalN = ex09::lispsmOptimalN;
+    }
+    psm_.student = psm;
+    lispsm_.student = lispsm;
   }
 
   void render(const FrameInfo& f) override {

@@ -31,7 +31,7 @@ std::string joined(const std::vector<double>& values, const char* format, double
 std::vector<std::string> CascadedShadowMaps::shaderDefines() const {
   std::vector<std::string> defines = maps_.shaderDefines();
   defines.push_back("SHADOW_TEXEL_JACOBIAN");  // m through each pixel's own cascade (shadow_cascades.frag)
-  if (studentChoice) defines.push_back("SHADOWLAB_STUDENT_CASCADES");
+  if (student.glslCascade) defines.push_back("SHADOWLAB_STUDENT_CASCADES");
   return defines;
 }
 
@@ -70,9 +70,9 @@ bool CascadedShadowMaps::fitLight(const ShadowContext& c, int i, int side) {
   o.fit.snap = p_.snap;
   o.fit.cullCasters = p_.cullCasters;
   o.fit.mapSize = side;
-  o.fit.snapper = snapper;
+  o.fit.snapper = student.snap;
   o.cullPerCascade = p_.cullPerCascade;
-  o.splitter = splitter;
+  o.splitter = student.splits;
   const shadow::CascadeViewer viewer{c.viewer.view(), c.viewer.fovY, c.viewerAspect(), c.viewer.nearZ, c.viewer.farZ};
   l.set = shadow::fitCascades(light.direction, c.scene.casterBoxes(), viewer, o);
   if (!l.set.problem.empty()) {

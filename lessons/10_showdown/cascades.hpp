@@ -56,12 +56,13 @@ class CascadedShadowMaps : public ShadowTechnique, public PostProjectiveSubject 
   void describePostProjective(const ShadowContext& c, int light, psm::PostProjectiveShapes& out) const override;
 
   CascadeParams& params() { return p_; }
-  // A student's split scheme and texel snap (lesson 10's exercises 10.1, 10.2); empty: the reference.
-  shadow::SplitScheme splitter;
-  shadow::TexelSnapper snapper;
-  // The GLSL exercise (impl=student): lesson 10's cascade choice (10.4, cascadeAt) from the
-  // student's shaders/10_showdown/exercises.glsl (shaderDefines() add SHADOWLAB_STUDENT_CASCADES).
-  bool studentChoice = false;
+  // A student's versions of the steps (lesson 10, impl=student); empty or false: the reference.
+  struct Student {
+    shadow::SplitScheme splits;  // 10.1: the practical split scheme
+    shadow::TexelSnapper snap;   // 10.2: texel snapping
+    bool glslCascade = false;    // 10.4: cascadeAt of shaders/10_showdown/exercises.glsl (SHADOWLAB_STUDENT_CASCADES)
+  };
+  Student student;
   ProjectiveMapSet& maps() { return maps_; }
   // Light i's cascades this frame (empty when it has none), for tests and views.
   const shadow::CascadeSet& cascades(int light) const { return lights_[std::size_t(light)].set; }

@@ -131,11 +131,10 @@ class ShowdownLesson : public Lesson {
   void update(const FrameInfo&) override {
     scene_.update(p_.scene);
     if (p_.equalTexels) equaliseTexels();
-    // impl=student: the student's split scheme (10.1) and texel snapping (10.2) in the cascades.
-    const bool student = p_.impl == Impl::Student;
-    csm_.splitter = student ? shadow::SplitScheme(ex10::practicalSplits) : nullptr;
-    csm_.snapper = student ? shadow::TexelSnapper(ex10::snapToTexels) : nullptr;
-    csm_.studentChoice = student;  // GLSL exercise 10.4: your cascade choice in the shader
+    // impl=student: your split scheme (10.1), texel snapping (10.2) and cascade choice in the shader (10.4).
+    csm_.student = p_.impl == Impl::Student
+                       ? tech::CascadedShadowMaps::Student{ex10::practicalSplits, ex10::snapToTexels, true}
+                       : tech::CascadedShadowMaps::Student{};
   }
 
   void render(const FrameInfo& f) override {
