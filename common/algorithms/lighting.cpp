@@ -47,20 +47,6 @@ glm::mat4 ndcToTexture() {
   return glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
 }
 
-std::vector<Light> courseLights() {
-  auto make = [](LightKind k, glm::vec3 pos, glm::vec3 dir, glm::vec3 color, float intensity, glm::vec3 att, bool on) {
-    Light l{k, pos};
-    l.direction = glm::normalize(dir), l.color = color, l.intensity = intensity, l.attenuation = att, l.enabled = on;
-    return l;
-  };
-  return {
-      make(LightKind::Directional, {}, {-0.4f, -1.0f, -0.3f}, {1.0f, 0.95f, 0.85f}, 0.7f, {1, 0, 0}, true),
-      make(LightKind::Point, {3.0f, 3.0f, 2.0f}, {0, -1, 0}, {1.0f, 0.6f, 0.3f}, 2.0f, {1.0f, 0.1f, 0.05f}, true),
-      make(LightKind::Spot, {-3.0f, 5.0f, 3.0f}, {0.5f, -1.0f, -0.5f}, {0.4f, 0.6f, 1.0f}, 3.0f, {1.0f, 0.05f, 0.02f},
-           false),
-      make(LightKind::Point, {-3.0f, 2.5f, -2.5f}, {0, -1, 0}, {0.5f, 1.0f, 0.5f}, 2.0f, {1.0f, 0.2f, 0.1f}, false)};
-}
-
 glm::vec3 incidentRadiance(const Light& light, const glm::vec3& p) {
   if (!light.enabled) return glm::vec3(0.0f);
   glm::vec3 radiance = light.color * light.intensity;

@@ -35,10 +35,6 @@ glm::vec3 lightContributionBlinn(const glm::vec3& N, const glm::vec3& L, const g
 // the last step of every shadow-map lookup ([Boreskov2005]).
 glm::mat4 ndcToTexture();
 
-// The course's standard rig, so lessons start from the same lights: a sun (directional), a warm
-// point light, a blue spot (off) and a green point light (off).
-std::vector<Light> courseLights();
-
 // f_att, spot cone and colour of `light` at point p (everything but V and the material).
 glm::vec3 incidentRadiance(const Light& light, const glm::vec3& p);
 

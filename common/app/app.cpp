@@ -672,6 +672,10 @@ void declareLight(ParamRegistry& r, int index, Light& l) {
   addLightChecks(r, n, l);
 }
 
+void declareLights(ParamRegistry& r, std::span<Light> lights) {
+  for (std::size_t i = 0; i < lights.size(); ++i) declareLight(r, int(i), lights[i]);
+}
+
 int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, char** argv) {
   Runner runner(make());
   return runner.run(argc, argv);

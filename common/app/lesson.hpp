@@ -10,6 +10,7 @@
 //   gui()            the lesson's own ImGui widgets (the parameter panel is automatic)
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -108,5 +109,7 @@ void declareCamera(ParamRegistry& params, OrbitCamera& camera);
 // Light `index` as parameters lightN.enabled (hotkey N+1), .kind, .position, .direction, .color,
 // .intensity, .attenuation, .spot_inner, .spot_outer: every lesson's lights look the same.
 void declareLight(ParamRegistry& params, int index, Light& light);
+// Every light of a lesson: lights[i] as light<i>.
+void declareLights(ParamRegistry& params, std::span<Light> lights);
 
 }  // namespace shadowlab

@@ -2,6 +2,25 @@
 
 namespace shadowlab {
 
+std::array<Light, 4> courseRig() {
+  auto make = [](LightKind k, glm::vec3 pos, glm::vec3 dir, glm::vec3 color, float intensity, glm::vec3 att, bool on) {
+    Light l{k, pos};
+    l.direction = glm::normalize(dir), l.color = color, l.intensity = intensity, l.attenuation = att, l.enabled = on;
+    return l;
+  };
+  return {
+      make(LightKind::Directional, {}, {-0.4f, -1.0f, -0.3f}, {1.0f, 0.95f, 0.85f}, 0.7f, {1, 0, 0}, true),
+      make(LightKind::Point, {3.0f, 3.0f, 2.0f}, {0, -1, 0}, {1.0f, 0.6f, 0.3f}, 2.0f, {1.0f, 0.1f, 0.05f}, true),
+      make(LightKind::Spot, {-3.0f, 5.0f, 3.0f}, {0.5f, -1.0f, -0.5f}, {0.4f, 0.6f, 1.0f}, 3.0f, {1.0f, 0.05f, 0.02f},
+           false),
+      make(LightKind::Point, {-3.0f, 2.5f, -2.5f}, {0, -1, 0}, {0.5f, 1.0f, 0.5f}, 2.0f, {1.0f, 0.2f, 0.1f}, false)};
+}
+
+Light off(Light light) {
+  light.enabled = false;
+  return light;
+}
+
 Light courseSun(const glm::vec3& direction) {
   Light l{LightKind::Directional};
   l.direction = glm::normalize(direction);
@@ -42,6 +61,41 @@ Light secondSphereSpot() {
   l.spotOuter = 0.72f;
   l.area = AreaShape::Sphere;
   l.radius = 0.3f;
+  l.enabled = false;
+  return l;
+}
+
+Light forestSpot() {
+  Light l{LightKind::Spot, {14.0f, 26.0f, 10.0f}};
+  l.direction = glm::normalize(glm::vec3(-14.0f, -26.0f, -10.0f));
+  l.color = {1.0f, 0.95f, 0.85f};
+  l.intensity = 1.6f;
+  l.attenuation = {1.0f, 0.0f, 0.0f};
+  l.spotInner = 0.45f;
+  l.spotOuter = 0.6f;
+  return l;
+}
+
+Light citySpot() {
+  Light l{LightKind::Spot, {-12.0f, 16.0f, 10.0f}};
+  l.direction = glm::normalize(glm::vec3(12.0f, -16.0f, -10.0f));
+  l.color = {0.5f, 0.7f, 1.0f};
+  l.intensity = 2.0f;
+  l.attenuation = {1.0f, 0.0f, 0.002f};
+  l.spotInner = 0.35f;
+  l.spotOuter = 0.5f;
+  l.enabled = false;
+  return l;
+}
+
+Light cityHighSpot() {
+  Light l{LightKind::Spot, {-14.0f, 18.0f, 12.0f}};
+  l.direction = glm::normalize(glm::vec3(14.0f, -18.0f, -12.0f));
+  l.color = {0.6f, 0.75f, 1.0f};
+  l.intensity = 2.5f;
+  l.attenuation = {1.0f, 0.0f, 0.0015f};
+  l.spotInner = 0.4f;
+  l.spotOuter = 0.55f;
   l.enabled = false;
   return l;
 }

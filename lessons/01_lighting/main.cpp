@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/lesson.hpp"
+#include "core/light_rig.hpp"
 #include "algorithms/lighting.hpp"
 #include "core/mesh_gen.hpp"
 #include "core/scene_gen.hpp"
@@ -42,7 +43,8 @@ struct Params {
   bool textures = true;                    // modulate: texture colour times material colour
   bool gizmos = true;                      // draw where the lights are
   bool animate = false;                    // move the point light around the scene
-  Light lights[3];
+  // The course's rig but its fourth: the sun and a warm point light on, a blue spot off.
+  Light lights[3] = {courseRig()[0], courseRig()[1], courseRig()[2]};
 };
 
 constexpr int kLightCount = 3;
@@ -84,9 +86,7 @@ class LightingLesson : public Lesson {
     r.add("gizmos", &p_.gizmos, "draw the lights").hotkey = "G";
     r.add("animate", &p_.animate, "orbit the point light around the scene").hotkey = "L";
 
-    // The course's rig: the sun and a warm point light on, a blue spot off.
-    const std::vector<Light> rig = lighting::courseLights();
-    for (int i = 0; i < kLightCount; ++i) declareLight(r, i, p_.lights[i] = rig[std::size_t(i)]);
+    declareLights(r, p_.lights);
   }
 
   LessonInfo info() const override { return {"01", "01_lighting", "Lighting", kSummary, 1, kHelp, true}; }

@@ -17,6 +17,7 @@
 
 #include "app/exercise_program.hpp"
 #include "app/lesson.hpp"
+#include "core/light_rig.hpp"
 #include "core/mesh_gen.hpp"
 #include "core/scene_gen.hpp"
 #include "algorithms/light_cameras.hpp"
@@ -56,7 +57,7 @@ struct Params {
   float ambient = 0.12f;
   bool animate = false;                                 // swing the spot around the scene
   tech::PrepassMode prepass = tech::PrepassMode::Auto;  // off while the frame budget halves the size
-  Light light;                                          // light0 of the course's rig: a spot
+  Light light = forestSpot();                           // light0: a spot high over the forest
 };
 
 // What the launcher and the F1 overlay say about this lesson.
@@ -107,15 +108,7 @@ class ShadowMapLesson : public Lesson {
     r.add("animate", &p_.animate, "swing the spot light around the scene").hotkey = "L";
     r.addChoice("depth_prepass", &p_.prepass, {"auto", "on", "off"},
                 "depth first, then the lit shader once per pixel; auto: off at render scale 0.5 or less");
-    Light& l = p_.light;
-    l = {LightKind::Spot, {14.0f, 26.0f, 10.0f}};
-    l.direction = glm::normalize(glm::vec3(-14.0f, -26.0f, -10.0f));
-    l.color = {1.0f, 0.95f, 0.85f};
-    l.intensity = 1.6f;
-    l.attenuation = {1.0f, 0.0f, 0.0f};
-    l.spotInner = 0.45f;
-    l.spotOuter = 0.6f;
-    declareLight(r, 0, l);  // light0.*: position, direction, spot_outer (the frustum's fov is twice it)
+    declareLight(r, 0, p_.light);  // light0.*: position, direction, spot_outer (the frustum's fov is twice it)
   }
 
   LessonInfo info() const override { return {"02", "02_shadow_maps", "Shadow maps", kSummary, 2, kHelp, true}; }

@@ -20,6 +20,7 @@
 // culling test, the orthographic fit; in GLSL (shaders/03_shadow_quality/exercises.glsl) the
 // N x N PCF kernel.
 #include "app/lesson.hpp"
+#include "core/light_rig.hpp"
 #include "core/scene_gen.hpp"
 #include "exercises.hpp"
 #include "technique/lit_pass.hpp"
@@ -44,7 +45,8 @@ struct Params {
   Impl impl = Impl::Reference;  // student: your culling test and fit drive the directional light's pass
   bool drift = false;           // move the camera slowly (shows shimmer without snapping)
   float ambient = 0.1f;
-  Light lights[kLights];  // a sun, a point light with a cube map (off), a spot (off)
+  // The sun on; a warm point light with a cube map and a blue spot with a 2D map, off.
+  Light lights[kLights] = {courseSun({-0.45f, -1.0f, -0.3f}), courseLamp({4.0f, 6.0f, 3.0f}), citySpot()};
 };
 
 // What the launcher and the F1 overlay say about this lesson.
@@ -91,7 +93,7 @@ class ShadowQualityLesson : public Lesson {
                                     {"cull_casters", "K"}})
       r.setHotkey(name, key);
     volumes_.declare(r, "volumes.");
-    declareLights(r);
+    declareLights(r, p_.lights);
   }
 
   LessonInfo info() const override {
@@ -154,29 +156,6 @@ class ShadowQualityLesson : public Lesson {
   }
 
  private:
-  // The course's rig (light0..light2): the sun on, a warm point light and a blue spot off.
-  void declareLights(ParamRegistry& r) {
-    Light* l = p_.lights;
-    l[0] = {LightKind::Directional};
-    l[0].direction = glm::normalize(glm::vec3(-0.45f, -1.0f, -0.3f));
-    l[0].color = {1.0f, 0.95f, 0.85f};
-    l[0].intensity = 0.9f;
-    l[1] = {LightKind::Point, {4.0f, 6.0f, 3.0f}};
-    l[1].color = {1.0f, 0.6f, 0.3f};
-    l[1].intensity = 3.0f;
-    l[1].attenuation = {1.0f, 0.05f, 0.02f};
-    l[1].enabled = false;
-    l[2] = {LightKind::Spot, {-12.0f, 16.0f, 10.0f}};
-    l[2].direction = glm::normalize(glm::vec3(12.0f, -16.0f, -10.0f));
-    l[2].color = {0.5f, 0.7f, 1.0f};
-    l[2].intensity = 2.0f;
-    l[2].attenuation = {1.0f, 0.0f, 0.002f};
-    l[2].spotInner = 0.35f;
-    l[2].spotOuter = 0.5f;
-    l[2].enabled = false;
-    for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
-  }
-
   Params p_;
   tech::SceneCache scene_{"03 scene"};
   tech::UniformShadowMaps maps_;

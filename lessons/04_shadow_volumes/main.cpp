@@ -25,6 +25,7 @@
 
 #include "algorithms/lighting.hpp"
 #include "app/lesson.hpp"
+#include "core/light_rig.hpp"
 #include "core/scene_gen.hpp"
 #include "exercises.hpp"
 #include "technique/scene_cache.hpp"
@@ -43,7 +44,8 @@ struct Params {
   float specular = 0.35f;
   float shininess = 48.0f;
   bool animate = false;  // orbit the point light: the volumes are rebuilt every frame
-  Light lights[kLights];
+  // The course's rig: a sun and a warm point light on, a blue spot and a green point light off.
+  std::array<Light, kLights> lights = courseRig();
 };
 
 // What the launcher and the F1 overlay say about this lesson.
@@ -83,9 +85,7 @@ class ShadowVolumeLesson : public Lesson {
     r.add("shininess", &p_.shininess, 1, 256, "the specular exponent");
     r.add("animate", &p_.animate, "orbit the point light: its volumes are rebuilt every frame").hotkey = "L";
 
-    // The course's rig: a sun, a warm point light (both on), a spot and a green point light (off; see many_lights).
-    const std::vector<Light> rig = lighting::courseLights();
-    for (int i = 0; i < kLights; ++i) declareLight(r, i, p_.lights[i] = rig[std::size_t(i)]);
+    declareLights(r, p_.lights);
   }
 
   LessonInfo info() const override { return {"04", "04_shadow_volumes", "Shadow volumes", kSummary, 3, kHelp, true}; }
@@ -96,7 +96,7 @@ class ShadowVolumeLesson : public Lesson {
   }
 
   MeasureSource measureSource() override {
-    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}};
+    return {&scene_.scene(), scene_.revision(), {p_.lights.begin(), p_.lights.end()}};
   }
 
   void update(const FrameInfo& f) override {
@@ -117,7 +117,7 @@ class ShadowVolumeLesson : public Lesson {
   }
 
   void render(const FrameInfo& f) override {
-    const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
+    const tech::ShadowContext c{f, camera, scene_, {p_.lights.begin(), p_.lights.end()}, timers, debug};
     // ==== 0. edge adjacency once per mesh, and which objects can cast a closed volume ===========
     volumes_.renderShadows(c);
     // ==== 1. depth and ambient: the scene once, its depth for every light's count ===============

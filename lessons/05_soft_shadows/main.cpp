@@ -46,7 +46,9 @@ struct Params {
   bool showEdge = false;  // the predicted penumbra of the picked caster edge
   int edge = 11;          // which of the box's 12 edges (soft::boxEdges): 11 is a top edge over open ground
   bool plot = true;       // A_frac against its linear approximation (ImGui)
-  Light lights[kLights];  // a spherical spot over the scene, a second spherical light (off)
+  // A sphere of radius 0.5 m over the showcase, a spot whose cone holds the scene's shapes; a second
+  // sphere (off), to show that every technique serves several lights.
+  Light lights[kLights] = {showcaseSphereSpot(), secondSphereSpot()};
 };
 
 const char* const kSummary =
@@ -89,7 +91,7 @@ class SoftShadowsLesson : public Lesson {
     r.add("theory.plot", &p_.plot, "A_frac against (1 + a/R) / 2, with the largest difference").hotkey = "P";
     techniques_.declare(r);  // each under its own name: many.samples, pcss.filter_taps, ...
     r.setHotkey("parker.profile", "L");
-    declareLights(r);
+    declareLights(r, p_.lights);
   }
 
   LessonInfo info() const override { return {"05", "05_soft_shadows", "Soft shadows", kSummary, 4, kHelp, true}; }
@@ -188,15 +190,6 @@ class SoftShadowsLesson : public Lesson {
                                student ? tech::FractionFn(ex05::visibleFractionLinear) : soft::visibleFractionLinear);
     std::snprintf(buf, sizeof buf, "%.2f %% at a/R = %+.3f", 100.0f * f.maxDifference, f.at);
     counters.push_back({"A_frac linear error", buf});
-  }
-
-  // light0: a sphere of radius 0.5 m over the showcase, a spot whose cone holds the scene's shapes;
-  // light1: a second sphere (off), to show that every technique serves several lights.
-  void declareLights(ParamRegistry& r) {
-    Light* l = p_.lights;
-    l[0] = showcaseSphereSpot();
-    l[1] = secondSphereSpot();
-    for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
   }
 
   Params p_;

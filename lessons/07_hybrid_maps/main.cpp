@@ -20,6 +20,7 @@
 #include <cstdio>
 
 #include "app/lesson.hpp"
+#include "core/light_rig.hpp"
 #include "exercises.hpp"
 #include "hybrid_maps.hpp"
 #include "technique/lit_pass.hpp"
@@ -43,7 +44,9 @@ struct Params {
   float bandTexels = 2.0f;  // measured "near an edge": within this many source texels of a shadow boundary
   int bandMapSize = 0;      // ... texels of a map this size (0: the technique's own), so that maps of any
                             // size can be judged on the same pixels
-  Light lights[kLights];    // the sun, and a spot (off) whose perspective depth crowds toward 1
+  // The sun over the city; a spot (off) for the depth spaces of a perspective map, whose window
+  // depth crowds toward 1.
+  Light lights[kLights] = {courseSun({-0.45f, -1.0f, -0.3f}), cityHighSpot()};
 };
 
 // What the launcher and the F1 overlay say about this lesson.
@@ -92,7 +95,7 @@ class HybridMapsLesson : public Lesson {
     for (const auto& [name, key] : {std::pair{"levels", "L"}, {"criterion", "C"}, {"filter", "P"}, {"build", "G"}})
       r.setHotkey(name, key);
     standard_.declare(r, "uniform.");
-    declareLights(r);
+    declareLights(r, p_.lights);
   }
 
   LessonInfo info() const override {
@@ -169,24 +172,6 @@ class HybridMapsLesson : public Lesson {
     const int own = p_.technique == Technique::Standard ? standard_.params().mapSize : hybrid_.params().mapSize;
     const int texels = p_.bandMapSize > 0 ? p_.bandMapSize : own;
     return p_.bandTexels * width / float(texels);
-  }
-
-  // light0: the sun over the city; light1: a spot (off), for the depth spaces of a perspective map.
-  void declareLights(ParamRegistry& r) {
-    Light* l = p_.lights;
-    l[0] = {LightKind::Directional};
-    l[0].direction = glm::normalize(glm::vec3(-0.45f, -1.0f, -0.3f));
-    l[0].color = {1.0f, 0.95f, 0.85f};
-    l[0].intensity = 0.9f;
-    l[1] = {LightKind::Spot, {-14.0f, 18.0f, 12.0f}};
-    l[1].direction = glm::normalize(glm::vec3(14.0f, -18.0f, -12.0f));
-    l[1].color = {0.6f, 0.75f, 1.0f};
-    l[1].intensity = 2.5f;
-    l[1].attenuation = {1.0f, 0.0f, 0.0015f};
-    l[1].spotInner = 0.4f;
-    l[1].spotOuter = 0.55f;
-    l[1].enabled = false;
-    for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
   }
 
   // The spot's near plane further out than lesson 03's: window depth keeps precision where the city is.

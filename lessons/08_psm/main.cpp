@@ -45,7 +45,8 @@ struct Params {
   bool turn = false;            // the camera turns (a caster leaves the view)
   float turnSpeed = 0.35f;      // radians per second
   float ambient = 0.1f;
-  Light lights[kLights];  // the sun overhead-ish, and a point light (off)
+  // A sun ahead of the camera (in front: a finite point behind the far face); a point light (off).
+  Light lights[kLights] = {courseSun({0.6f, -1.0f, 0.7f}), courseLamp({3.0f, 6.0f, -6.0f})};
 };
 
 const char* const kSummary =
@@ -108,7 +109,7 @@ class OriginalPsmLesson : public Lesson {
     psm_.declare(r, "");  // the subject: bare names (the fixes are lesson 09's, all off here)
     uniform_.declare(r, "uniform.");
     postView_.declare(r);
-    declareLights(r);
+    declareLights(r, p_.lights);
   }
 
   LessonInfo info() const override { return {"08", "08_psm", "Perspective shadow maps", kSummary, 4, kHelp, true}; }
@@ -183,15 +184,6 @@ class OriginalPsmLesson : public Lesson {
   }
 
  private:
-  // light0 a sun ahead of the camera (in front: a finite point behind the far face), light1 a point
-  // light (off).
-  void declareLights(ParamRegistry& r) {
-    Light* l = p_.lights;
-    l[0] = courseSun({0.6f, -1.0f, 0.7f});
-    l[1] = courseLamp({3.0f, 6.0f, -6.0f});
-    for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
-  }
-
   Params p_;
   tech::SceneCache scene_{"08 scene"};
   tech::PerspectiveShadowMaps psm_{tech::PsmParams::original()};

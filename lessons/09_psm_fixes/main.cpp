@@ -48,7 +48,8 @@ struct Params {
   Impl impl = Impl::Reference;  // student: your inverse projection, cone, face test, bias and n_opt
   bool equalTexels = true;      // LiSPSM and the uniform map get PSM's texels (map_size)
   float ambient = 0.1f;
-  Light lights[kLights];  // a sun behind the camera, and a point light (off)
+  // A sun behind the camera (PSM's hard case: fix 1); a point light (off).
+  Light lights[kLights] = {courseSun({-0.5f, -0.45f, -0.7f}), courseLamp({2.0f, 5.0f, -4.0f})};
 };
 
 const char* const kSummary =
@@ -106,7 +107,7 @@ class PsmFixesLesson : public Lesson {
     lispsm_.declare(r, "lispsm.");
     uniform_.declare(r, "uniform.");
     postView_.declare(r);
-    declareLights(r);
+    declareLights(r, p_.lights);
   }
 
   LessonInfo info() const override {
@@ -197,14 +198,6 @@ class PsmFixesLesson : public Lesson {
   }
 
  private:
-  // light0 a sun behind the camera (PSM's hard case: fix 1), light1 a point light (off).
-  void declareLights(ParamRegistry& r) {
-    Light* l = p_.lights;
-    l[0] = courseSun({-0.5f, -0.45f, -0.7f});
-    l[1] = courseLamp({2.0f, 5.0f, -4.0f});
-    for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
-  }
-
   Params p_;
   tech::SceneCache scene_{"09 scene"};
   tech::PerspectiveShadowMaps psm_;

@@ -55,7 +55,9 @@ struct Params {
   int quarter[4] = {};      // the four-up view: declare() starts at uniform, psm, lispsm, csm
   float ambient = 0.1f;
   Impl impl = Impl::Reference;  // student: your split scheme and texel snapping drive technique=csm
-  Light lights[kLights];        // a sun, and a spherical spot (off) for the soft methods
+  // Lesson 09's sun over the city, behind the camera; lesson 05's spherical spot over the showcase
+  // (off): the light the soft_* presets switch to.
+  Light lights[kLights] = {courseSun({-0.5f, -0.45f, -0.7f}), off(showcaseSphereSpot())};
 };
 
 const char* const kSummary =
@@ -107,7 +109,7 @@ class ShowdownLesson : public Lesson {
     techniques_.declare(r);  // each under its own name: uniform.map_size, csm.cascades, ...
     r.setHotkey("csm.colours", "C");
     postView_.declare(r);
-    declareLights(r);
+    declareLights(r, p_.lights);
   }
 
   LessonInfo info() const override {
@@ -268,16 +270,6 @@ class ShowdownLesson : public Lesson {
                   quarters_[std::size_t(q)].ms, double(s.texels) / 1e6, s.reusedMaps ? " (maps reused)" : "",
                   s.triangles / 1000, double(s.bytes) / (1024.0 * 1024.0));
     return b;
-  }
-
-  // light0: lesson 09's sun over the city, behind the camera; light1: lesson 05's spherical spot
-  // over the showcase (off), the light the soft_* presets switch to.
-  void declareLights(ParamRegistry& r) {
-    Light* l = p_.lights;
-    l[0] = courseSun({-0.5f, -0.45f, -0.7f});
-    l[1] = showcaseSphereSpot();
-    l[1].enabled = false;
-    for (int i = 0; i < kLights; ++i) declareLight(r, i, l[i]);
   }
 
   Params p_;

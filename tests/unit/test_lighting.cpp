@@ -1,11 +1,12 @@
 #include <doctest/doctest.h>
 
 #include "algorithms/lighting.hpp"
+#include "core/light_rig.hpp"
 
 using namespace shadowlab;
 
 TEST_CASE("lighting: the course's light rig is one of each kind, unit directions, sun and bulb on") {
-  const auto rig = lighting::courseLights();
+  const auto rig = courseRig();
   REQUIRE(rig.size() == 4);
   CHECK(rig[0].kind == LightKind::Directional);
   CHECK(rig[1].kind == LightKind::Point);
