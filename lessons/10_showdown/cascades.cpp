@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "algorithms/psm/cascades.hpp"
+#include "algorithms/cascades.hpp"
 #include "algorithms/psm/conventions.hpp"
 #include "algorithms/psm/post_shapes.hpp"
 #include "technique/map_settings.hpp"
@@ -52,7 +52,7 @@ void CascadedShadowMaps::declare(ParamRegistry& r, const std::string& n) {
         "with the warp: rough receiver volumes, large objects cut into cells of scene size / tiles");
 }
 
-// ==== 1. the slices and their light cameras (GL-free: algorithms/cascade_cameras) ===============
+// ==== 1. the slices and their light cameras (GL-free: algorithms/cascades) ===============
 bool CascadedShadowMaps::fitLight(const ShadowContext& c, int i, int side) {
   PerLight& l = lights_[std::size_t(i)];
   l.set = {};
@@ -108,7 +108,7 @@ void CascadedShadowMaps::warpLight(const ShadowContext& c, int i) {
 // ==== 2. the depth passes: one layer per cascade of the light's array =========================
 void CascadedShadowMaps::render(const ShadowContext& c) {
   stats_ = {};
-  const int side = psm::cascadeSide(maps_.totalSide(), p_.count);
+  const int side = shadow::cascadeSide(maps_.totalSide(), p_.count);
   const glm::mat4 view = c.viewer.view();
   viewZ_ = glm::vec4(view[0][2], view[1][2], view[2][2], view[3][2]);
   near_ = c.viewer.nearZ;

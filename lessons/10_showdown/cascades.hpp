@@ -6,7 +6,7 @@
 // slice meets the scene, casters that can shade them, texel snapping at the cascade's texel size).
 // A blend band at each cascade's far end mixes it into the next, so the switch leaves no seam. The
 // cascades of a light share its texel budget (map_size squared: four cascades of half the side).
-// GL-free fit: algorithms/cascade_cameras; storage, depth pass, bias and lookup: the projective
+// GL-free fit: algorithms/cascades; storage, depth pass, bias and lookup: the projective
 // maps (technique/projective_maps, shaders/common/projective_maps.glsl); the GLSL that picks the
 // cascade: shaders/10_showdown/shadow_cascades.frag. view=cascades (the `colours` switch) draws the
 // cascade-colouring view instead of the lit frame. warp puts a LiSPSM warp inside each cascade
@@ -14,7 +14,7 @@
 // light gets no map (lit), and the header says so.
 #include <vector>
 
-#include "algorithms/cascade_cameras.hpp"
+#include "algorithms/cascades.hpp"
 #include "technique/lit_pass.hpp"
 #include "technique/post_projective_view.hpp"
 #include "technique/projective_maps.hpp"

@@ -19,10 +19,10 @@ shadow::TexelSnap snapToTexels(const glm::vec2& centre, const glm::vec2& half, i
 }
 
 // EXERCISE 10.3
-psm::CascadeBlend cascadeAt(std::span<const double> splits, double depth, double band) {
+shadow::CascadeBlend cascadeAt(std::span<const double> splits, double depth, double band) {
   SHADOWLAB_STUB("10.3");  // delete this line when you write the exercise
   // TODO: the first cascade whose far split is >= depth, then the weight in its band
-  return psm::CascadeBlend{};
+  return shadow::CascadeBlend{};
 }
 
 }  // namespace shadowlab::ex10

@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "algorithms/psm/cascades.hpp"
+#include "algorithms/cascades.hpp"
 #include "algorithms/shadow_math.hpp"
 #include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
@@ -42,6 +42,6 @@ shadow::TexelSnap snapToTexels(const glm::vec2& centre, const glm::vec2& half, i
 // nextWeight = min((depth - start) / width, 1) when depth > start, else 0. The last cascade and
 // band <= 0 blend nothing (weight 0). Outside [splits.front(), splits.back()] (or fewer than 2
 // splits) no map covers the point: return cascade -1, weight 0.
-psm::CascadeBlend cascadeAt(std::span<const double> splits, double depth, double band);
+shadow::CascadeBlend cascadeAt(std::span<const double> splits, double depth, double band);
 
 }  // namespace shadowlab::ex10

@@ -1,6 +1,6 @@
 // Lesson 10, GLSL exercise: the reference (sealed in the student handout; exercises.glsl says what
 // the function does). shadow_cascades.frag includes this file unless SHADOWLAB_STUDENT_CASCADES is
-// set; it reads that shader's uniforms. Mirrors psm::cascadeAt (common/algorithms/psm/cascades.cpp);
+// set; it reads that shader's uniforms. Mirrors shadow::cascadeAt (common/algorithms/cascades.cpp);
 // keep them in step.
 
 // The cascade that shades view depth `depth` of light `light` (-1: none), and the weight of the next.

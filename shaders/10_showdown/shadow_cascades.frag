@@ -4,7 +4,7 @@
 // 1 to 4 slices by the practical split scheme; slice k has its own orthographic map, layer k of the
 // light's array texture (the projective maps' storage and lookup, common/projective_maps.glsl). A
 // point takes the cascade its view depth falls in; within the blend band at a cascade's far end the
-// next cascade's lookup is mixed in (psm::cascadeAt in common/algorithms/psm/cascades.cpp mirrors
+// next cascade's lookup is mixed in (shadow::cascadeAt in common/algorithms/cascades.cpp mirrors
 // cascadeAt in 10_showdown/exercises_reference.glsl: keep the two in step).
 #include "common/projective_maps.glsl"
 

@@ -4,15 +4,15 @@
 namespace shadowlab::ex10 {
 
 std::vector<double> practicalSplits(double zNear, double zFar, int count, double lambda) {
-  return psm::cascadeSplits(zNear, zFar, count, lambda);
+  return shadow::cascadeSplits(zNear, zFar, count, lambda);
 }
 
 shadow::TexelSnap snapToTexels(const glm::vec2& centre, const glm::vec2& half, int mapSize) {
   return shadow::snapToTexels(centre, half, mapSize);
 }
 
-psm::CascadeBlend cascadeAt(std::span<const double> splits, double depth, double band) {
-  return psm::cascadeAt(splits, depth, band);
+shadow::CascadeBlend cascadeAt(std::span<const double> splits, double depth, double band) {
+  return shadow::cascadeAt(splits, depth, band);
 }
 
 }  // namespace shadowlab::ex10

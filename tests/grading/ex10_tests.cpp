@@ -140,7 +140,7 @@ TEST_CASE("ex10.3: the cascade for a view depth and the blend band, by hand") {
   // Splits 1 2 4 8 (three cascades), band 0.25. Cascade 0 blends on [1.75, 2], cascade 1 on [3.5, 4].
   const std::vector<double> s = {1.0, 2.0, 4.0, 8.0};
   auto check = [&](double depth, int cascade, double weight) {
-    const psm::CascadeBlend b = ex10::cascadeAt(s, depth, 0.25);
+    const shadow::CascadeBlend b = ex10::cascadeAt(s, depth, 0.25);
     INFO("splits 1 2 4 8, band 0.25, depth ", depth, ": want cascade ", cascade, " with next weight ", weight, ", got ",
          b.cascade, " with ", b.nextWeight);
     return CHECK_EXACT(b.cascade, cascade) && CHECK_NEAR(b.nextWeight, weight, kApprox);
@@ -155,7 +155,7 @@ TEST_CASE("ex10.3: the cascade for a view depth and the blend band, by hand") {
   check(8.0, 2, 0.0);
   check(0.5, -1, 0.0);  // nearer than the near plane: no map covers it
   check(8.5, -1, 0.0);  // beyond the last split
-  const psm::CascadeBlend hard = ex10::cascadeAt(s, 1.99, 0.0);
+  const shadow::CascadeBlend hard = ex10::cascadeAt(s, 1.99, 0.0);
   INFO("band 0 is a hard switch: depth 1.99 is cascade 0 with weight 0");
   CHECK_EXACT(hard.cascade, 0);
   CHECK_NEAR(hard.nextWeight, 0.0, kApprox);
@@ -171,7 +171,7 @@ TEST_CASE("ex10.3: random splits and depths: the right slice, a weight rising 0 
     const double band = 0.5 * u(rng), depth = s.front() + (s.back() - s.front()) * u(rng);
     INFO("random case ", i, " of 300 (seed ", test::seed(), "): ", n, " cascades from ", s.front(), " to ", s.back(),
          ", band ", band, ", depth ", depth);
-    const psm::CascadeBlend b = ex10::cascadeAt(s, depth, band);
+    const shadow::CascadeBlend b = ex10::cascadeAt(s, depth, band);
     int want = 0;
     while (want < n - 1 && depth > s[std::size_t(want) + 1]) ++want;
     INFO("the depth lies in [", s[std::size_t(want)], ", ", s[std::size_t(want) + 1], "]");

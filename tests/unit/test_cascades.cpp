@@ -1,4 +1,4 @@
-// algorithms/psm/cascades and algorithms/cascade_cameras: which cascade shades a depth and how much
+// algorithms/cascades and algorithms/cascades: which cascade shades a depth and how much
 // of the next is blended in, each cascade's side at equal total texels, and the cascades' light
 // cameras on a small scene whose answers follow from the geometry.
 #include <doctest/doctest.h>
@@ -9,32 +9,31 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "algorithms/cascade_cameras.hpp"
-#include "algorithms/psm/cascades.hpp"
+#include "algorithms/cascades.hpp"
 
 using namespace shadowlab;
 
 TEST_CASE("cascades: the cascade of a depth and the blend band at its far end") {
   const std::vector<double> splits{1.0, 5.0, 9.0};  // cascade 0 is 4 m deep: a band of 0.25 is its last 1 m
-  CHECK(psm::cascadeAt(splits, 3.0, 0.25).cascade == 0);
-  CHECK(psm::cascadeAt(splits, 3.0, 0.25).nextWeight == 0.0);
-  CHECK(psm::cascadeAt(splits, 4.5, 0.25).cascade == 0);
-  CHECK(psm::cascadeAt(splits, 4.5, 0.25).nextWeight == doctest::Approx(0.5));
-  CHECK(psm::cascadeAt(splits, 5.0, 0.25).nextWeight == doctest::Approx(1.0));  // all of cascade 1: no seam
-  CHECK(psm::cascadeAt(splits, 5.5, 0.25).cascade == 1);
-  CHECK(psm::cascadeAt(splits, 8.9, 0.25).nextWeight == 0.0);  // the last cascade blends into nothing
-  CHECK(psm::cascadeAt(splits, 4.5, 0.0).nextWeight == 0.0);   // no band: a hard switch
-  CHECK(psm::cascadeAt(splits, 0.5, 0.25).cascade == -1);      // nearer than the near plane
-  CHECK(psm::cascadeAt(splits, 9.5, 0.25).cascade == -1);      // beyond the last cascade
+  CHECK(shadow::cascadeAt(splits, 3.0, 0.25).cascade == 0);
+  CHECK(shadow::cascadeAt(splits, 3.0, 0.25).nextWeight == 0.0);
+  CHECK(shadow::cascadeAt(splits, 4.5, 0.25).cascade == 0);
+  CHECK(shadow::cascadeAt(splits, 4.5, 0.25).nextWeight == doctest::Approx(0.5));
+  CHECK(shadow::cascadeAt(splits, 5.0, 0.25).nextWeight == doctest::Approx(1.0));  // all of cascade 1: no seam
+  CHECK(shadow::cascadeAt(splits, 5.5, 0.25).cascade == 1);
+  CHECK(shadow::cascadeAt(splits, 8.9, 0.25).nextWeight == 0.0);  // the last cascade blends into nothing
+  CHECK(shadow::cascadeAt(splits, 4.5, 0.0).nextWeight == 0.0);   // no band: a hard switch
+  CHECK(shadow::cascadeAt(splits, 0.5, 0.25).cascade == -1);      // nearer than the near plane
+  CHECK(shadow::cascadeAt(splits, 9.5, 0.25).cascade == -1);      // beyond the last cascade
 }
 
 TEST_CASE("cascades: each cascade's side at equal total texels") {
-  CHECK(psm::cascadeSide(2048, 1) == 2048);
-  CHECK(psm::cascadeSide(2048, 4) == 1024);  // four 1024^2 maps hold 2048^2 texels
-  CHECK(psm::cascadeSide(2048, 2) == 1448);  // 2048 / sqrt(2) = 1448.15
-  CHECK(psm::cascadeSide(4096, 3) == 2364);  // 4096 / sqrt(3) = 2364.83
-  CHECK_THROWS_AS(psm::cascadeSide(2048, 0), std::invalid_argument);
-  CHECK_THROWS_AS(psm::cascadeSide(0, 2), std::invalid_argument);
+  CHECK(shadow::cascadeSide(2048, 1) == 2048);
+  CHECK(shadow::cascadeSide(2048, 4) == 1024);  // four 1024^2 maps hold 2048^2 texels
+  CHECK(shadow::cascadeSide(2048, 2) == 1448);  // 2048 / sqrt(2) = 1448.15
+  CHECK(shadow::cascadeSide(4096, 3) == 2364);  // 4096 / sqrt(3) = 2364.83
+  CHECK_THROWS_AS(shadow::cascadeSide(2048, 0), std::invalid_argument);
+  CHECK_THROWS_AS(shadow::cascadeSide(0, 2), std::invalid_argument);
 }
 
 namespace {
@@ -173,7 +172,7 @@ TEST_CASE("cascades: a split scheme that does not give count + 1 increasing dist
   o.splitter = [](double, double zf, int, double) { return std::vector<double>{0.5, 2.0, 4.0, zf}; };
   CHECK(shadow::fitCascades({0, -1, 0}, g.get(), viewer(), o).problem ==
         "the splits do not run from the near distance to the far one");
-  o.splitter = [](double zn, double zf, int n, double l) { return psm::cascadeSplits(zn, zf, n, l); };
+  o.splitter = [](double zn, double zf, int n, double l) { return shadow::cascadeSplits(zn, zf, n, l); };
   set = shadow::fitCascades({0, -1, 0}, g.get(), viewer(), o);
   CHECK(set.problem.empty());
   CHECK(set.cameras.size() == 3);

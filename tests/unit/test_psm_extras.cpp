@@ -11,7 +11,7 @@
 
 #include "algorithms/psm/aliasing.hpp"
 #include "algorithms/psm/bias.hpp"
-#include "algorithms/psm/cascades.hpp"
+#include "algorithms/cascades.hpp"
 #include "algorithms/psm/cube_faces.hpp"
 #include "algorithms/psm/lispsm.hpp"
 
@@ -88,16 +88,16 @@ TEST_CASE("psm bias: texel size with an affine map, clamping, and the constant b
   CHECK(directionFromLight({0, 0, 2, 1}, {0, 0, 5}) == glm::dvec3(0, 0, 1));
 }
 
-TEST_CASE("psm cascades: the practical split scheme at lambda 0, 1 and 0.5") {
-  const auto uni = cascadeSplits(1.0, 9.0, 2, 0.0);
+TEST_CASE("cascades: the practical split scheme at lambda 0, 1 and 0.5") {
+  const auto uni = shadowlab::shadow::cascadeSplits(1.0, 9.0, 2, 0.0);
   CHECK(uni == std::vector<double>{1.0, 5.0, 9.0});
-  const auto lg = cascadeSplits(1.0, 9.0, 2, 1.0);
+  const auto lg = shadowlab::shadow::cascadeSplits(1.0, 9.0, 2, 1.0);
   CHECK(lg[1] == doctest::Approx(3.0));
-  const auto mix = cascadeSplits(1.0, 9.0, 2, 0.5);
+  const auto mix = shadowlab::shadow::cascadeSplits(1.0, 9.0, 2, 0.5);
   CHECK(mix[1] == doctest::Approx(4.0));
-  CHECK_THROWS_AS(cascadeSplits(0.0, 9.0, 2, 0.5), std::invalid_argument);
-  CHECK_THROWS_AS(cascadeSplits(1.0, 9.0, 0, 0.5), std::invalid_argument);
-  CHECK_THROWS_AS(cascadeSplits(1.0, 9.0, 2, 1.5), std::invalid_argument);
+  CHECK_THROWS_AS(shadowlab::shadow::cascadeSplits(0.0, 9.0, 2, 0.5), std::invalid_argument);
+  CHECK_THROWS_AS(shadowlab::shadow::cascadeSplits(1.0, 9.0, 0, 0.5), std::invalid_argument);
+  CHECK_THROWS_AS(shadowlab::shadow::cascadeSplits(1.0, 9.0, 2, 1.5), std::invalid_argument);
 }
 
 TEST_CASE("psm aliasing: closed forms at the ends of the depth range") {

@@ -1,7 +1,7 @@
 // Public GLSL cases for lesson 10: exercise 10.4 (cascadeAt) in shaders/10_showdown/exercises.glsl.
 // Each case evaluates GLSL on the GPU (app/glsl_cases.hpp) through the prelude's cascadeCase, which
 // sets shadow_cascades.frag's uniforms; expected values are worked out by hand from the splits
-// 1 | 2 | 4 | 8 | 16 and the band, or (random cases) psm::cascadeAt's. Every case holds a depth some
+// 1 | 2 | 4 | 8 | 16 and the band, or (random cases) shadow::cascadeAt's. Every case holds a depth some
 // cascade covers, so the untouched stub (-1: no cascade, everything lit) fails it.
 //
 // Tolerance 1e-5 per component: the cascade index is exact (a wrong one is off by 1 or more); the

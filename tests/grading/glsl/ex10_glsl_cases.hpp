@@ -1,7 +1,7 @@
 #pragma once
 // Lesson 10's GLSL cases, shared by the public (glsl/ex10_glsl.cpp) and hidden
 // (hidden/ex10_glsl_hidden.cpp) ones: the prelude that stands in for shadow_cascades.frag's
-// uniforms, and the random cases, whose expected values are psm::cascadeAt's on the same (float)
+// uniforms, and the random cases, whose expected values are shadow::cascadeAt's on the same (float)
 // inputs.
 #include <random>
 #include <span>
@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "algorithms/psm/cascades.hpp"
+#include "algorithms/cascades.hpp"
 #include "app/glsl_cases.hpp"
 
 namespace shadowlab::ex10glsl {
@@ -44,11 +44,11 @@ inline std::string cascadeCall(int light, const std::vector<float>& splits, floa
          glslFloat(splits.front()) + ", " + glslVec(far) + ", " + glslFloat(band) + ", " + glslFloat(depth) + ")";
 }
 
-// psm::cascadeAt on the same float inputs, in double (the shader rounds each step to float: the
+// shadow::cascadeAt on the same float inputs, in double (the shader rounds each step to float: the
 // weight's tolerance, 1e-5, holds with band >= 0.2, see ex10_glsl.cpp).
-inline psm::CascadeBlend expected(const std::vector<float>& splits, float band, float depth) {
+inline shadow::CascadeBlend expected(const std::vector<float>& splits, float band, float depth) {
   const std::vector<double> s(splits.begin(), splits.end());
-  return psm::cascadeAt(std::span<const double>(s), depth, band);
+  return shadow::cascadeAt(std::span<const double>(s), depth, band);
 }
 
 // A random cascade set (1 to 4 cascades, practical splits of [0.1, 2] .. 5 to 50 times that,
@@ -61,14 +61,14 @@ inline GlslCase randomChoices(std::mt19937_64& rng, const std::string& name) {
   const int count = std::uniform_int_distribution<int>(1, 4)(rng);
   const float zn = 0.1f + 1.9f * u(rng), zf = zn * (5 + 45 * u(rng));
   std::vector<float> splits;
-  for (double d : psm::cascadeSplits(zn, zf, count, u(rng))) splits.push_back(float(d));
+  for (double d : shadow::cascadeSplits(zn, zf, count, u(rng))) splits.push_back(float(d));
   const float band = 0.2f + 0.3f * u(rng);
   const int k = std::uniform_int_distribution<int>(0, std::max(0, count - 2))(rng);
   const float a = splits[std::size_t(k)], b = splits[std::size_t(k) + 1];
   const float d1 = count == 1 ? a + (b - a) * u(rng) : b - band * (b - a) * u(rng);
   const float d2 = zn - 0.1f * (zf - zn) + 1.2f * (zf - zn) * u(rng);
   const int light = std::uniform_int_distribution<int>(0, 1)(rng);
-  const psm::CascadeBlend e1 = expected(splits, band, d1), e2 = expected(splits, band, d2);
+  const shadow::CascadeBlend e1 = expected(splits, band, d1), e2 = expected(splits, band, d2);
   std::string list;
   for (float s : splits) list += (list.empty() ? "" : " ") + glslFloat(s);
   return {name + " (seed " + std::to_string(grading::seed()) + ")",

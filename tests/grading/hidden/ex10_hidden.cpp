@@ -94,7 +94,7 @@ TEST_SUITE("hidden") {
                                         : lo + (hi - lo) * std::max(f, 1e-9);
       INFO("random case ", i, " of 300 (seed ", test::seed(), "): ", n, " cascades from ", s.front(), " to ", s.back(),
            ", band ", band, ", depth ", depth);
-      const psm::CascadeBlend b = ex10::cascadeAt(s, depth, band);
+      const shadow::CascadeBlend b = ex10::cascadeAt(s, depth, band);
       int want = -1;
       for (int k = n - 1; k >= 0; --k)
         if (depth <= s[std::size_t(k) + 1] && depth >= s.front()) want = k;
