@@ -10,14 +10,8 @@
 #endif
 
 // A tap loop that whole groups of pixels skip (PCSS's filter, where the search found no blocker)
-// runs to a count held in a uniform, over an array of SOFT_MAX_TAPS: the compiler cannot unroll it
-// then. llvmpipe runs every instruction of an `if` under a mask whether or not a pixel takes it,
-// but it leaves a loop as soon as no pixel of its group (4 x 2 pixels with AVX2) is still in it;
-// and a loop with a count it knows, or can bound by the size of the array indexed, it unrolls (16
-// taps were unrolled, 32 and 64 stayed loops). Lesson 05's default view: 139-162 -> 107-119 ms,
-// the picture byte for byte the same (its README, "What pays on llvmpipe"). Loops that every pixel
-// runs (the search, PCF's filter) stay compiled in: unrolled, they are faster (PCF 109-116 against
-// 116-127 ms as a loop).
+// runs to a count held in a uniform, over an array of SOFT_MAX_TAPS, so that the compiler cannot
+// unroll it (docs/performance.md, "Work few pixels need: in a loop's second trip").
 #ifndef SOFT_MAX_TAPS
 #define SOFT_MAX_TAPS 64
 #endif

@@ -1,5 +1,5 @@
 // Lesson 08, GLSL exercise: YOUR lookup of a point in a perspective shadow map, written in the
-// shader. With impl=student the PSM technique (shaders/common/projective_maps.glsl, read by
+// shader. With impl=student the PSM technique (shaders/08_psm/projective_maps.glsl, read by
 // shadow_psm.frag) finds every pixel's place in its map with this function:
 //   lesson_08_psm --set impl=student --preset behind
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).

@@ -6,7 +6,7 @@
 // array texture: one map, or one per hidden face of the camera's unit cube (fix 3, PSM_FACES).
 // Each map's matrix takes the world point to the map's clip space in one projective step, the
 // camera's projection included.
-#include "common/projective_maps.glsl"
+#include "08_psm/projective_maps.glsl"
 
 #ifdef PSM_FACES
 uniform bool uPsmFaces[PSM_LIGHTS];

@@ -2,11 +2,11 @@
 // Cascaded shadow maps' visibility (lessons/10_showdown/cascades), linked into every lit program that
 // serves them (shaders/common/scene.frag declares the function). The view's depth range is cut into
 // 1 to 4 slices by the practical split scheme; slice k has its own orthographic map, layer k of the
-// light's array texture (the projective maps' storage and lookup, common/projective_maps.glsl). A
+// light's array texture (the projective maps' storage and lookup, 08_psm/projective_maps.glsl). A
 // point takes the cascade its view depth falls in; within the blend band at a cascade's far end the
 // next cascade's lookup is mixed in (shadow::cascadeAt in common/algorithms/cascades.cpp mirrors
 // cascadeAt in 10_showdown/exercises_reference.glsl: keep the two in step).
-#include "common/projective_maps.glsl"
+#include "08_psm/projective_maps.glsl"
 
 uniform vec4 uCsmViewZ;            // the viewer's view-matrix row of z: view depth = -dot(row, (p, 1))
 uniform float uCsmNear;            // where cascade 0 starts
@@ -36,11 +36,9 @@ float shadowVisibility(int light, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   float w;
   int k = cascadeOf(light, worldPos, w);
   if (k < 0) return 1.0;  // no cascade covers the point (light off, or beyond the last): lit
-  // The point's cascade k, then in the blend band the next one mixed in: as a loop of (at most) two
-  // trips from the pixel's own k, which the compiler cannot unroll, rather than an `if`, because
-  // llvmpipe runs an `if` for every pixel but leaves a loop once no pixel of its group (4 x 2 with
-  // AVX2) is still in it: the second lookup is then paid only by groups in a band (lesson 10's
-  // default view 64-74 -> 57-64 ms, the picture byte for byte the same; docs/adding_a_technique.md).
+  // The point's cascade k, then in the blend band the next one mixed in: a loop of (at most) two
+  // trips from the pixel's own k rather than an `if`, so that only pixels in a band pay the second
+  // lookup (docs/performance.md, "Work few pixels need: in a loop's second trip").
   float v = 1.0;
   for (int j = k; j <= k + 1; ++j) {
     vec2 coords;

@@ -5,12 +5,11 @@
 // defines shadowVisibility (shaders/common/shadow_*.frag). One shader for any technique and any
 // number of lights (up to MAX_LIGHTS).
 //
-// Specialised (common/technique/lit_pass): a software renderer pays for every light the shader
-// visits, even one a uniform switches off, so LitPass compiles a variant per light set with
+// Specialised (common/technique/lit_pass): LitPass compiles a variant per light set with
 //   LIGHT_COUNT n   LIGHT_ON a, b, c, d (1 on, 0 off)   LIGHT_KINDS k0, k1, k2, k3   VIEW v
-// and the per-light code (VISIBILITY, SHADE: a constant index each) folds to the lights that are
-// on, each of its kind. Without the defines (the generic variant, drawn while a specialised one
-// compiles) the same code runs on the uniforms.
+// so that each light's switch and kind are constants and the lights that are off cost nothing
+// (docs/performance.md, "Constants, not uniforms"). Without the defines (the generic variant, drawn
+// while a specialised one compiles) the same code runs on the uniforms.
 #include "common/lighting.glsl"
 #include "common/measure.glsl"
 
@@ -57,13 +56,26 @@ Light sceneLight(int i) {
   return l;
 }
 #else
-// Every light's index is a constant here too (VISIBILITY, SHADE), and so is the technique's sampler
-// for it: a sampler array indexed by a variable costs a software renderer dearly.
 #define LIGHTS MAX_LIGHTS
 #define LIGHT_IS_ON(i) (i < uLightCount)
 #define SCENE_VIEW uView
 Light sceneLight(int i) { return uLights[i]; }
 #endif
+
+// V_i of light i (1 for a light that is off), and the texel coordinates the measurement reads.
+float visibility(int i, vec3 N, out vec2 texelCoords) {
+  texelCoords = vec2(0.0);
+  if (i < LIGHTS && LIGHT_IS_ON(i)) return shadowVisibility(i, vWorldPos, N, texelCoords);
+  return 1.0;
+}
+
+// Light i's term of the sum: V_i f_att,i I_i [kd (N.L_i) + ks (N.H_i)^pow] (nothing for a light that is off).
+vec3 shade(int i, vec3 N, vec3 V, vec3 kd, float v) {
+  if (!(i < LIGHTS && LIGHT_IS_ON(i))) return vec3(0.0);
+  Light light = sceneLight(i);
+  return lightContribution(N, toLight(light, vWorldPos), V, incidentRadiance(light, vWorldPos), v, kd,
+                           uSpecular, uShininess, true);
+}
 
 void main() {
   vec3 N = normalize(vNormal);
@@ -71,16 +83,14 @@ void main() {
   if (uTwoSided && dot(N, V) < 0.0) N = -N;
   // V first, in uniform control flow: techniques take screen-space derivatives (receiver plane,
   // texel coordinates for the aliasing measurement) that a discard before them would spoil.
+  // One call per light, each index a literal, not a loop (docs/performance.md, "A constant light
+  // index"): a technique picks each light's map with a switch on the index, which then folds away.
   float vis[MAX_LIGHTS];
   vec2 texelCoords[MAX_LIGHTS];
-  for (int i = 0; i < MAX_LIGHTS; ++i) {
-    vis[i] = 1.0;
-    texelCoords[i] = vec2(0.0);
-  }
-  // Written out per light, so every index is a constant whether or not the compiler unrolls.
-  // (one line: GLSL ES-style validators reject a backslash line continuation)
-#define VISIBILITY(i) if (i < LIGHTS && LIGHT_IS_ON(i)) vis[i] = shadowVisibility(i, vWorldPos, N, texelCoords[i]);
-  VISIBILITY(0) VISIBILITY(1) VISIBILITY(2) VISIBILITY(3)
+  vis[0] = visibility(0, N, texelCoords[0]);
+  vis[1] = visibility(1, N, texelCoords[1]);
+  vis[2] = visibility(2, N, texelCoords[2]);
+  vis[3] = visibility(3, N, texelCoords[3]);
 #if defined(SHADOW_TEXEL_JACOBIAN) && defined(MEASURED_FRAME)
   vec3 dPdx = dFdx(vWorldPos), dPdy = dFdy(vWorldPos);  // before the discard below
 #endif
@@ -102,10 +112,9 @@ void main() {
   }
   vec3 kd = uAlbedo * texel.rgb;
   vec3 color = uAmbient * kd;
-  // Written out per light with a constant index, as VISIBILITY above: each light's switch and kind
-  // are then constants that fold away. The same as a loop with `continue` over the lights, which
-  // llvmpipe ran slower (lesson 03's default scene pass 57-69 -> 43-57 ms, the picture unchanged).
-#define SHADE(i) if (i < LIGHTS && LIGHT_IS_ON(i)) { Light light = sceneLight(i); color += lightContribution(N, toLight(light, vWorldPos), V, incidentRadiance(light, vWorldPos), vis[i], kd, uSpecular, uShininess, true); }
-  SHADE(0) SHADE(1) SHADE(2) SHADE(3)
+  color += shade(0, N, V, kd, vis[0]);  // a literal index each, as above
+  color += shade(1, N, V, kd, vis[1]);
+  color += shade(2, N, V, kd, vis[2]);
+  color += shade(3, N, V, kd, vis[3]);
   fragColor = vec4(toDisplay(color), 1.0);
 }
