@@ -24,6 +24,7 @@
 #include "app/god_view.hpp"
 #include "app/input.hpp"
 #include "app/lesson.hpp"
+#include "app/lesson_setup.hpp"
 #include "app/model_choice.hpp"
 #include "app/outputs.hpp"
 #include "app/ui.hpp"
@@ -43,33 +44,6 @@ namespace {
 double nowSeconds() {
   using namespace std::chrono;
   return duration<double>(steady_clock::now().time_since_epoch()).count();
-}
-
-std::string jsonEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  return out;
-}
-
-// Every program's error (shown in the header), or only those of programs in use (fatal headless).
-std::vector<std::string> shaderErrors(bool requiredOnly = false) {
-  std::vector<std::string> errors;
-  for (const gl::Program* p : gl::livePrograms())
-    if (!p->error().empty() && (!requiredOnly || p->required())) errors.push_back(p->error());
-  return errors;
-}
-
-bool programsReady() {
-  for (const gl::Program* p : gl::livePrograms())
-    if (p->required() && !p->valid() && !p->building()) return false;
-  return true;
 }
 
 using Exit = std::optional<int>;  // a process exit code, or nothing: go on
@@ -112,8 +86,8 @@ class Runner {
       ab_.declare(params_, presets_);
       params_.validate();  // the defaults, then every preset, pass the registry's checks
       presets_.validate(params_);
-      checkHotkeys();
-      if (Exit e = answerQueries(argv[0])) return e;
+      checkHotkeys(params_);
+      if (answerQuery(cl_, info_, params_, presets_, argv[0])) return 0;
       if (!cl_.preset.empty()) presets_.apply(cl_.preset, params_);
       if (!cl_.model.empty()) cl_.sets.insert(cl_.sets.begin(), modelSceneAssignment(params_, info_.name));
       params_.assignAll(cl_.sets);  // one change: checked once, whatever the order
@@ -145,34 +119,6 @@ class Runner {
 
   // A key bound twice (framework keys included) or on a kind it cannot drive: the lesson is wrong,
   // and a lecturer would find out in front of the class. Every lesson's tests run this.
-  void checkHotkeys() const {
-    const std::vector<std::string> problems = hotkeyProblems(params_);
-    if (problems.empty()) return;
-    std::string all;
-    for (const std::string& p : problems) all += (all.empty() ? "" : "; ") + p;
-    throw ParamError("hotkeys: " + all);
-  }
-
-  // --help, --info, --list-params, --list-presets, --list-hotkeys: print and exit 0.
-  Exit answerQueries(const char* program) {
-    if (cl_.help) {
-      std::cout << info_.number << " " << info_.title << ": " << info_.summary << "\n\n" << commandLineHelp(program);
-    } else if (cl_.info) {
-      std::cout << "{\"number\":\"" << info_.number << "\",\"name\":\"" << info_.name << "\",\"title\":\""
-                << jsonEscape(info_.title) << "\",\"summary\":\"" << jsonEscape(info_.summary)
-                << "\",\"difficulty\":" << info_.difficulty << "}\n";
-    } else if (cl_.listParams) {
-      std::cout << params_.describe();
-    } else if (cl_.listPresets) {
-      for (const auto& n : presets_.names()) std::cout << n << '\n';
-    } else if (cl_.listHotkeys) {
-      std::cout << describeHotkeys(params_);
-    } else {
-      return std::nullopt;
-    }
-    return 0;
-  }
-
   // ==== 2. open: the context, the lesson's GL resources, the files the run reads and writes ======
   Exit openContext() {
     try {
@@ -219,7 +165,7 @@ class Runner {
   Exit initLesson() {
     tryInit();
     if (!cl_.headless) return std::nullopt;
-    std::vector<std::string> errors = shaderErrors(/*requiredOnly=*/true);
+    std::vector<std::string> errors = gl::shaderErrors(/*requiredOnly=*/true);
     if (!initError_.empty()) errors.insert(errors.begin(), initError_);
     for (const auto& e : errors) std::cerr << info_.name << ": " << e << '\n';
     return errors.empty() ? Exit() : Exit(1);
@@ -452,7 +398,7 @@ class Runner {
   // view. A throw headless ends the run; a window keeps running and shows it until a reload.
   Exit drawFrame(FrameInfo& fi) {
     const unsigned frameFbo = fi.framebuffer;
-    const bool ready = initError_.empty() && programsReady();
+    const bool ready = initError_.empty() && gl::programsReady();
     glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
     glViewport(0, 0, fi.width, fi.height);
     if (ready) {
@@ -467,8 +413,8 @@ class Runner {
       }
       // Programs built on first use (specialised variants) report here: headless, a broken or
       // missing shader ends the run as it does at init.
-      if (cl_.headless && !shaderErrors(/*requiredOnly=*/true).empty()) {
-        for (const auto& e : shaderErrors(true)) std::cerr << info_.name << ": " << e << '\n';
+      if (cl_.headless && !gl::shaderErrors(/*requiredOnly=*/true).empty()) {
+        for (const auto& e : gl::shaderErrors(true)) std::cerr << info_.name << ": " << e << '\n';
         return 1;
       }
     }
@@ -515,7 +461,7 @@ class Runner {
     std::vector<Counter> shown = lesson_.counters;
     shown.push_back({"draw calls", std::to_string(drawCalls_)});
     for (auto& [name, value] : measurement_.summary()) shown.push_back({name, value});
-    std::vector<std::string> errors = shaderErrors();
+    std::vector<std::string> errors = gl::shaderErrors();
     if (!initError_.empty()) errors.insert(errors.begin(), initError_);
     std::vector<Legend> legends = lesson_.legends;
     if (const auto l = measurement_.legend()) legends.push_back(*l);
@@ -639,42 +585,6 @@ class Runner {
 };
 
 }  // namespace
-
-void declareCamera(ParamRegistry& params, OrbitCamera& c) {
-  params.add("camera.yaw", &c.yaw, -1000.0f, 1000.0f, "orbit angle around +y (radians)").hidden = true;
-  params.add("camera.pitch", &c.pitch, -1.57f, 1.57f, "angle above the horizon (radians)").hidden = true;
-  params.add("camera.distance", &c.distance, 0.01f, 10000.0f, "distance from the target").hidden = true;
-  params.add("camera.target", &c.target, -10000.0f, 10000.0f, "the point the camera orbits").hidden = true;
-  params.add("camera.fov", &c.fovY, 0.1f, 3.0f, "vertical field of view (radians)").hidden = true;
-  params.add("camera.near", &c.nearZ, 1e-4f, 100.0f, "near plane distance").hidden = true;
-  params.add("camera.far", &c.farZ, 0.1f, 1e7f, "far plane distance").hidden = true;
-  addCameraChecks(params, c);
-}
-
-void declareImpl(ParamRegistry& r, Impl* impl, const std::string& why) {
-  r.addChoice("impl", impl, {"reference", "student"}, why);
-}
-
-void declareLight(ParamRegistry& r, int index, Light& l) {
-  const std::string n = "light" + std::to_string(index) + ".";
-  r.add(n + "enabled", &l.enabled, "switch this light on or off").hotkey = std::to_string(index + 1);
-  r.addChoice(n + "kind", &l.kind, {"point", "spot", "directional"}, "point, spot (a cone) or directional (the sun)");
-  r.add(n + "position", &l.position, -50, 50, "where a point or spot light is");
-  r.add(n + "direction", &l.direction, -1, 1, "spot axis, or the direction sunlight travels");
-  r.addColor(n + "color", &l.color, "I_i: the light's colour");
-  r.add(n + "intensity", &l.intensity, 0, 20, "I_i: the light's strength");
-  r.add(n + "attenuation", &l.attenuation, 0, 10, "c0 c1 c2 of f_att = 1 / (c0 + c1 d + c2 d^2)");
-  r.add(n + "spot_inner", &l.spotInner, 0.01f, 1.5f, "half-angle of the spot's full-strength core (radians)");
-  r.add(n + "spot_outer", &l.spotOuter, 0.01f, 1.5f, "half-angle where the spot fades to zero (radians)");
-  // (AreaShape::Rectangle needs a size and a tangent as well; no lesson exposes it yet.)
-  r.addChoice(n + "area", &l.area, {"none", "sphere"}, "a spherical emitter: soft shadows, and the soft ground truth");
-  r.add(n + "radius", &l.radius, 0.0f, 10.0f, "the spherical emitter's radius");
-  addLightChecks(r, n, l);
-}
-
-void declareLights(ParamRegistry& r, std::span<Light> lights) {
-  for (std::size_t i = 0; i < lights.size(); ++i) declareLight(r, int(i), lights[i]);
-}
 
 int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, char** argv) {
   Runner runner(make());

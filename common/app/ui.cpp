@@ -339,8 +339,23 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   const float room = ImGui::GetContentRegionAvail().x;
   const float common = std::max(0.45f * room, room - longest - gap);
   ImGui::PushItemWidth(common);
+  float widest = presetRows(params, presets, status, room, changed);
+  ImGui::Separator();
+  widest = std::max(widest, parameterRows(params, status, room, common, changed));
+  ImGui::PopItemWidth();
+  recordWindow("Parameters");
+  // For the layout test: the widgets' right edge against the panel's visible content (a label
+  // past it is cut off).
+  const ImVec2 pos = ImGui::GetWindowPos();
+  const float x0 = pos.x + ImGui::GetWindowContentRegionMin().x, x1 = pos.x + ImGui::GetWindowContentRegionMax().x;
+  layout_.push_back({"Parameters content", x0, pos.y, x1 - x0, ImGui::GetWindowSize().y});
+  layout_.push_back({"Parameters widgets", x0, pos.y, widest - x0, ImGui::GetWindowSize().y});
+  ImGui::End();
+  return changed;
+}
 
-  // Presets: load one, or save the current state under a name.
+// Presets: load one, or save the current state under a name.
+float Ui::presetRows(ParamRegistry& params, PresetFile& presets, std::string& status, float room, bool& changed) {
   const auto names = presets.names();
   if (ImGui::BeginCombo(
           "preset", presetIndex_ >= 0 && presetIndex_ < int(names.size()) ? names[presetIndex_].c_str() : "(choose)")) {
@@ -380,9 +395,13 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
       changed = true;
     } catch (const ParamError& e) { status = e.what(); }
   }
-  widest = std::max(widest, ImGui::GetItemRectMax().x);
-  ImGui::Separator();
+  return std::max(widest, ImGui::GetItemRectMax().x);
+}
 
+// Every visible parameter, ungrouped first, then each group under its header (collapsible).
+float Ui::parameterRows(ParamRegistry& params, std::string& status, float room, float common, bool& changed) {
+  const float gap = ImGui::GetStyle().ItemInnerSpacing.x;
+  float widest = 0;
   std::string group;
   bool open = true;
   for (const Param* q : params.panelOrder()) {  // ungrouped first: none under another group's header
@@ -412,16 +431,7 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
     }
     ImGui::PopID();
   }
-  ImGui::PopItemWidth();
-  recordWindow("Parameters");
-  // For the layout test: the widgets' right edge against the panel's visible content (a label
-  // past it is cut off).
-  const ImVec2 pos = ImGui::GetWindowPos();
-  const float x0 = pos.x + ImGui::GetWindowContentRegionMin().x, x1 = pos.x + ImGui::GetWindowContentRegionMax().x;
-  layout_.push_back({"Parameters content", x0, pos.y, x1 - x0, ImGui::GetWindowSize().y});
-  layout_.push_back({"Parameters widgets", x0, pos.y, widest - x0, ImGui::GetWindowSize().y});
-  ImGui::End();
-  return changed;
+  return widest;
 }
 
 namespace {

@@ -64,6 +64,10 @@ class Ui {
 
  private:
   void recordWindow(const char* name);
+  // The panel's two parts: the preset row (pick, name, save, defaults) and the parameters by
+  // group. Each returns the right edge of its widgets; `changed` is set when a value changed.
+  float presetRows(ParamRegistry& params, PresetFile& presets, std::string& status, float room, bool& changed);
+  float parameterRows(ParamRegistry& params, std::string& status, float room, float common, bool& changed);
   bool initialised_ = false;
   bool headless_ = false;
   float scale_ = 1.0f;

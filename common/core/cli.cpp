@@ -84,6 +84,35 @@ std::vector<ScriptedKey> parseKeyScript(const std::string& list) {
   return keys;
 }
 
+namespace {
+
+// --drop FILE@N: N digits; a file name with an '@' of its own stays whole.
+void parseDrop(const std::string& value, CommandLine& cl) {
+  auto at = value.rfind('@');
+  if (at != std::string::npos &&
+      (at + 1 == value.size() || value.find_first_not_of("0123456789", at + 1) != std::string::npos))
+    at = std::string::npos;
+  cl.drop = value.substr(0, at);
+  if (at != std::string::npos) cl.dropFrame = toInt("--drop " + cl.drop, value.substr(at + 1), 0, 100000000);
+  if (cl.drop.empty()) throw CliError("--drop: '" + value + "' names no file: --drop FILE[@N]");
+}
+
+// What the flags say together: a step or a drop past the last frame would never happen, so say so
+// rather than run without it.
+void checkTogether(const CommandLine& cl) {
+  if (!cl.record.empty() && !cl.replay.empty()) throw CliError("--record and --replay exclude each other");
+  long keyFrames = 0;
+  for (const ScriptedKey& k : cl.keys) keyFrames += k.frames;
+  if (cl.frames > 0 && keyFrames > cl.frames)
+    throw CliError("--keys: the steps take " + std::to_string(keyFrames) + " frames, the run has " +
+                   std::to_string(cl.frames) + " (--frames N)");
+  if (!cl.drop.empty() && cl.frames > 0 && cl.dropFrame >= cl.frames)
+    throw CliError("--drop " + cl.drop + "@" + std::to_string(cl.dropFrame) + ": the run has frames 0 to " +
+                   std::to_string(cl.frames - 1) + " (--frames N)");
+}
+
+}  // namespace
+
 CommandLine parseCommandLine(const std::vector<std::string>& args) {
   CommandLine cl;
   bool framesGiven = false;
@@ -138,16 +167,8 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
     else if (flag == "--show-help") cl.showUi = cl.showHelp = true;
     else if (flag == "--ui-layout") cl.uiLayout = value;
     else if (flag == "--keys") cl.keys = parseKeyScript(value);
-    else if (flag == "--drop") {
-      // FILE@N where N is digits; a file name with an '@' of its own stays whole.
-      auto at = value.rfind('@');
-      if (at != std::string::npos &&
-          (at + 1 == value.size() || value.find_first_not_of("0123456789", at + 1) != std::string::npos))
-        at = std::string::npos;
-      cl.drop = value.substr(0, at);
-      if (at != std::string::npos) cl.dropFrame = toInt("--drop " + cl.drop, value.substr(at + 1), 0, 100000000);
-      if (cl.drop.empty()) throw CliError("--drop: '" + value + "' names no file: --drop FILE[@N]");
-    } else if (flag == "--fullscreen") cl.fullscreen = true;
+    else if (flag == "--drop") parseDrop(value, cl);
+    else if (flag == "--fullscreen") cl.fullscreen = true;
     else if (flag == "--strict-gl") cl.strictGl = true;
     else if (flag == "--list-params") cl.listParams = true;
     else if (flag == "--list-presets") cl.listPresets = true;
@@ -157,16 +178,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
     else if (flag == "--help") cl.help = true;
   }
   if (cl.headless && !framesGiven) cl.frames = 3;
-  if (!cl.record.empty() && !cl.replay.empty()) throw CliError("--record and --replay exclude each other");
-  // A step or a drop past the last frame would never happen: say so rather than run without it.
-  long keyFrames = 0;
-  for (const ScriptedKey& k : cl.keys) keyFrames += k.frames;
-  if (cl.frames > 0 && keyFrames > cl.frames)
-    throw CliError("--keys: the steps take " + std::to_string(keyFrames) + " frames, the run has " +
-                   std::to_string(cl.frames) + " (--frames N)");
-  if (!cl.drop.empty() && cl.frames > 0 && cl.dropFrame >= cl.frames)
-    throw CliError("--drop " + cl.drop + "@" + std::to_string(cl.dropFrame) + ": the run has frames 0 to " +
-                   std::to_string(cl.frames - 1) + " (--frames N)");
+  checkTogether(cl);
   return cl;
 }
 

@@ -65,6 +65,19 @@ std::string trimEnd(std::string s) {
 
 const std::vector<Program*>& livePrograms() { return registry(); }
 
+std::vector<std::string> shaderErrors(bool requiredOnly) {
+  std::vector<std::string> errors;
+  for (const Program* p : livePrograms())
+    if (!p->error().empty() && (!requiredOnly || p->required())) errors.push_back(p->error());
+  return errors;
+}
+
+bool programsReady() {
+  for (const Program* p : livePrograms())
+    if (p->required() && !p->valid() && !p->building()) return false;
+  return true;
+}
+
 namespace {
 bool g_async = false;
 }

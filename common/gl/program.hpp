@@ -129,5 +129,10 @@ bool asyncCompile();
 
 // Every live Program, so the framework can list shader errors in the header and reload all.
 const std::vector<Program*>& livePrograms();
+// Every live program's error (the header shows them), or only those of programs in use (fatal
+// headless).
+std::vector<std::string> shaderErrors(bool requiredOnly = false);
+// Every program in use is built (none still compiling, none failed).
+bool programsReady();
 
 }  // namespace shadowlab::gl

@@ -106,6 +106,37 @@ void checkLightKind(const Light& light, const char* where) {
     throw std::invalid_argument(std::string(where) + ": unknown light kind " + std::to_string(int(light.kind)));
 }
 
+// The alpha card of mesh `index` with its material's texture (`image`: nullptr when the texture
+// was not found): its uvs, triangles and alpha channel for the filter function. Throws for a
+// missing or malformed texture or uvs that do not match the positions, naming them.
+std::unique_ptr<AlphaCard> alphaCardOf(const Mesh& mesh, std::size_t index, const Material& material,
+                                       const Image8* image) {
+  if (!image)
+    throw std::invalid_argument("GroundTruth: texture '" + material.texture + "' of alpha-tested material '" +
+                                material.name + "' was not found");
+  if (image->width <= 0 || image->height <= 0 || image->channels < 1 ||
+      image->data.size() != std::size_t(image->width) * image->height * image->channels)
+    throw std::invalid_argument("GroundTruth: texture '" + material.texture + "' is malformed (" +
+                                std::to_string(image->width) + "x" + std::to_string(image->height) + "x" +
+                                std::to_string(image->channels) + ")");
+  if (mesh.uvs.size() != mesh.positions.size())
+    throw std::invalid_argument("GroundTruth: alpha-tested mesh " + std::to_string(index) + " has " +
+                                std::to_string(mesh.uvs.size()) + " uvs for " + std::to_string(mesh.positions.size()) +
+                                " positions");
+  auto card = std::make_unique<AlphaCard>();
+  card->uvs = mesh.uvs;
+  card->indices.assign(mesh.indices.begin(), mesh.indices.begin() + mesh.triangleCount() * 3);
+  card->width = image->width;
+  card->height = image->height;
+  card->cutoff = material.alphaCutoff;
+  int channel = image->channels == 4 ? 3 : image->channels == 2 ? 1 : 0;  // RGB: no alpha, use R
+  card->alpha.resize(std::size_t(image->width) * image->height);
+  for (int y = 0; y < image->height; ++y)
+    for (int x = 0; x < image->width; ++x)
+      card->alpha[std::size_t(y) * image->width + x] = image->at(x, y)[channel] / 255.0f;
+  return card;
+}
+
 }  // namespace
 
 struct GroundTruth::Impl {
@@ -258,30 +289,7 @@ void GroundTruth::rebuild(const Scene& scene) {
 
     const Material* material = object.material < scene.materials.size() ? &scene.materials[object.material] : nullptr;
     if (material && material->alphaCutoff > 0.0f && !material->texture.empty()) {
-      const Image8* image = textures_ ? textures_(material->texture) : nullptr;
-      if (!image)
-        throw std::invalid_argument("GroundTruth: texture '" + material->texture + "' of alpha-tested material '" +
-                                    material->name + "' was not found");
-      if (image->width <= 0 || image->height <= 0 || image->channels < 1 ||
-          image->data.size() != std::size_t(image->width) * image->height * image->channels)
-        throw std::invalid_argument("GroundTruth: texture '" + material->texture + "' is malformed (" +
-                                    std::to_string(image->width) + "x" + std::to_string(image->height) + "x" +
-                                    std::to_string(image->channels) + ")");
-      if (mesh.uvs.size() != mesh.positions.size())
-        throw std::invalid_argument("GroundTruth: alpha-tested mesh " + std::to_string(object.mesh) + " has " +
-                                    std::to_string(mesh.uvs.size()) + " uvs for " +
-                                    std::to_string(mesh.positions.size()) + " positions");
-      auto card = std::make_unique<AlphaCard>();
-      card->uvs = mesh.uvs;
-      card->indices.assign(mesh.indices.begin(), mesh.indices.begin() + mesh.triangleCount() * 3);
-      card->width = image->width;
-      card->height = image->height;
-      card->cutoff = material->alphaCutoff;
-      int channel = image->channels == 4 ? 3 : image->channels == 2 ? 1 : 0;  // RGB: no alpha, use R
-      card->alpha.resize(std::size_t(image->width) * image->height);
-      for (int y = 0; y < image->height; ++y)
-        for (int x = 0; x < image->width; ++x)
-          card->alpha[std::size_t(y) * image->width + x] = image->at(x, y)[channel] / 255.0f;
+      auto card = alphaCardOf(mesh, object.mesh, *material, textures_ ? textures_(material->texture) : nullptr);
       rtcSetGeometryUserData(geom, card.get());
       rtcSetGeometryIntersectFilterFunction(geom, alphaFilter);
       rtcSetGeometryOccludedFilterFunction(geom, alphaFilter);
@@ -382,9 +390,10 @@ ImageF GroundTruth::hardVisibility(const SurfaceBuffer& surface, const Light& li
   return out;
 }
 
-ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& light, int samples,
-                                   std::uint64_t seed) const {
-  surface.validate();
+namespace {
+
+// Throws for a light softVisibility cannot sample, naming why.
+void checkSoftLight(const Light& light, int samples) {
   checkLightKind(light, "softVisibility");
   if (samples <= 0) throw std::invalid_argument("softVisibility: samples " + std::to_string(samples) + " must be > 0");
   if (light.kind == LightKind::Directional)
@@ -398,6 +407,95 @@ ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& li
   if (light.area == AreaShape::Rectangle && !(light.size.x > 0.0f && light.size.y > 0.0f))
     throw std::invalid_argument("softVisibility: rectangle size " + std::to_string(light.size.x) + "x" +
                                 std::to_string(light.size.y) + " must be positive");
+}
+
+// Shadow rays from one surface point toward the light's area. A sphere: uniform directions in the
+// cone it subtends (a point inside it sees it all around); a rectangle: uniform points on it.
+struct AreaSampler {
+  const Light& light;
+  glm::vec3 origin, axis, rectU, rectV;
+  float cosMax = -1.0f;
+  glm::vec3 t{0.0f}, b{0.0f};
+
+  // The ray's direction and length (to the emitter's near surface) for (u, v) in [0, 1)^2.
+  void sample(float u, float v, glm::vec3& dir, float& tfar) const {
+    if (light.area == AreaShape::Sphere) {
+      if (cosMax <= -1.0f) {  // inside the emitter: the whole sphere of directions
+        float z = 1 - 2 * u, r = std::sqrt(std::max(0.0f, 1 - z * z)), phi = 2 * kPi * v;
+        dir = {r * std::cos(phi), r * std::sin(phi), z};
+        tfar = light.radius;  // conservative: stays inside the emitter
+      } else {
+        glm::vec2 d = concentricDisk(u, v);
+        float r2 = glm::dot(d, d);
+        float cosT = 1.0f - r2 * (1.0f - cosMax);
+        float sinT = std::sqrt(std::max(0.0f, 1.0f - cosT * cosT));
+        float scale = r2 > 0.0f ? sinT / std::sqrt(r2) : 0.0f;
+        dir = glm::normalize(cosT * axis + scale * (d.x * t + d.y * b));
+        // Distance to the sphere's near surface along dir (the ray must stop before the emitter).
+        glm::vec3 oc = origin - light.position;
+        float bq = glm::dot(oc, dir), cq = glm::dot(oc, oc) - light.radius * light.radius;
+        float disc = bq * bq - cq;
+        tfar = disc > 0.0f ? -bq - std::sqrt(disc) : -bq;
+      }
+    } else {
+      glm::vec3 q = light.position + (u - 0.5f) * light.size.x * rectU + (v - 0.5f) * light.size.y * rectV;
+      glm::vec3 d = q - origin;
+      float len = glm::length(d);
+      dir = len > 0.0f ? d / len : axis;
+      tfar = len;
+    }
+  }
+};
+
+// Occlusion rays to Embree 16 at a time from one origin (one packet shares origin and context):
+// about twice the throughput of single rays here. `visible` counts the rays that reached the light.
+struct OcclusionPacket16 {
+  alignas(64) RTCRay16 packet;
+  alignas(64) int valid[16];
+  int queued = 0;
+  int visible = 0;
+
+  void setLane(int q, const glm::vec3& origin, const glm::vec3& dir, float tfar, unsigned mask) {
+    packet.org_x[q] = origin.x;
+    packet.org_y[q] = origin.y;
+    packet.org_z[q] = origin.z;
+    packet.dir_x[q] = dir.x;
+    packet.dir_y[q] = dir.y;
+    packet.dir_z[q] = dir.z;
+    packet.tnear[q] = 0.0f;
+    packet.tfar[q] = tfar;
+    packet.time[q] = 0.0f;
+    packet.mask[q] = mask;
+    packet.id[q] = 0;
+    packet.flags[q] = 0;
+  }
+  void push(RTCScene scene, const glm::vec3& origin, const glm::vec3& dir, float tfar, const glm::vec3& n) {
+    setLane(queued, origin, dir, tfar, 0xFFFFFFFFu);
+    valid[queued] = -1;
+    if (++queued == 16) flush(scene, origin, n);
+  }
+  void flush(RTCScene scene, const glm::vec3& origin, const glm::vec3& n) {
+    // The lanes left out still hold finite rays: Embree's AVX2 kernels (two 8-wide halves of
+    // the packet) assert on ray.valid() over lanes that were never written, an abort that came
+    // and went with whatever the stack held (measure.ground_truth's 1x1 view, 4 samples).
+    for (int q = queued; q < 16; ++q) {
+      valid[q] = 0;
+      setLane(q, origin, n, 0.0f, 0u);
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcOccluded16(valid, scene, &context, &packet);
+    for (int q = 0; q < queued; ++q) visible += packet.tfar[q] >= 0.0f;
+    queued = 0;
+  }
+};
+
+}  // namespace
+
+ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& light, int samples,
+                                   std::uint64_t seed) const {
+  surface.validate();
+  checkSoftLight(light, samples);
   auto start = std::chrono::steady_clock::now();
   int sx = 1;
   for (int d = 1; d * d <= samples; ++d)
@@ -430,90 +528,27 @@ ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& li
         out.data[i] = kNotFacing;
         continue;
       }
-      const glm::vec3 origin = p + eps * n;
-
-      // Sphere: uniform directions in the cone it subtends (a point inside it sees it all around).
-      float cosMax = -1.0f;
-      glm::vec3 t, b;
+      AreaSampler area{light, p + eps * n, axis, rectU, rectV};
       if (light.area == AreaShape::Sphere) {
         float s = light.radius / centreDistance;
-        cosMax = s < 1.0f ? std::sqrt(std::max(0.0f, 1.0f - s * s)) : -1.0f;
-        orthonormalBasis(axis, t, b);
+        area.cosMax = s < 1.0f ? std::sqrt(std::max(0.0f, 1.0f - s * s)) : -1.0f;
+        orthonormalBasis(axis, area.t, area.b);
       }
       std::uint64_t state = seed ^ (std::uint64_t(i) * 0xD1B54A32D192ED03ull);
       splitmix(state);
-      int visible = 0;
-      // Rays go to Embree 16 at a time (one packet shares origin and context): about twice the
-      // throughput of single rays here.
-      alignas(64) RTCRay16 packet;
-      alignas(64) int valid[16];
-      int queued = 0;
-      auto setLane = [&](int q, const glm::vec3& dir, float tfar, unsigned mask) {
-        packet.org_x[q] = origin.x;
-        packet.org_y[q] = origin.y;
-        packet.org_z[q] = origin.z;
-        packet.dir_x[q] = dir.x;
-        packet.dir_y[q] = dir.y;
-        packet.dir_z[q] = dir.z;
-        packet.tnear[q] = 0.0f;
-        packet.tfar[q] = tfar;
-        packet.time[q] = 0.0f;
-        packet.mask[q] = mask;
-        packet.id[q] = 0;
-        packet.flags[q] = 0;
-      };
-      auto flush = [&] {
-        // The lanes left out still hold finite rays: Embree's AVX2 kernels (two 8-wide halves of
-        // the packet) assert on ray.valid() over lanes that were never written, an abort that came
-        // and went with whatever the stack held (measure.ground_truth's 1x1 view, 4 samples).
-        for (int q = queued; q < 16; ++q) {
-          valid[q] = 0;
-          setLane(q, n, 0.0f, 0u);
-        }
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        rtcOccluded16(valid, scene, &context, &packet);
-        for (int q = 0; q < queued; ++q) visible += packet.tfar[q] >= 0.0f;
-        queued = 0;
-      };
+      OcclusionPacket16 rays;
       for (int j = 0; j < sy; ++j)
         for (int k = 0; k < sx; ++k) {
           float u = (k + uniform01(state)) / sx, v = (j + uniform01(state)) / sy;
           glm::vec3 dir;
           float tfar;
-          if (light.area == AreaShape::Sphere) {
-            if (cosMax <= -1.0f) {  // inside the emitter: the whole sphere of directions
-              float z = 1 - 2 * u, r = std::sqrt(std::max(0.0f, 1 - z * z)), phi = 2 * kPi * v;
-              dir = {r * std::cos(phi), r * std::sin(phi), z};
-              tfar = light.radius;  // conservative: stays inside the emitter
-            } else {
-              glm::vec2 d = concentricDisk(u, v);
-              float r2 = glm::dot(d, d);
-              float cosT = 1.0f - r2 * (1.0f - cosMax);
-              float sinT = std::sqrt(std::max(0.0f, 1.0f - cosT * cosT));
-              float scale = r2 > 0.0f ? sinT / std::sqrt(r2) : 0.0f;
-              dir = glm::normalize(cosT * axis + scale * (d.x * t + d.y * b));
-              // Distance to the sphere's near surface along dir (the ray must stop before the emitter).
-              glm::vec3 oc = origin - light.position;
-              float bq = glm::dot(oc, dir), cq = glm::dot(oc, oc) - light.radius * light.radius;
-              float disc = bq * bq - cq;
-              tfar = disc > 0.0f ? -bq - std::sqrt(disc) : -bq;
-            }
-          } else {
-            glm::vec3 q = light.position + (u - 0.5f) * light.size.x * rectU + (v - 0.5f) * light.size.y * rectV;
-            glm::vec3 d = q - origin;
-            float len = glm::length(d);
-            dir = len > 0.0f ? d / len : axis;
-            tfar = len;
-          }
+          area.sample(u, v, dir, tfar);
           tfar -= eps;
           if (glm::dot(dir, n) <= 0.0f || tfar <= 0.0f) continue;  // below the horizon: hidden
-          setLane(queued, dir, tfar, 0xFFFFFFFFu);
-          valid[queued] = -1;
-          if (++queued == 16) flush();
+          rays.push(scene, area.origin, dir, tfar, n);
         }
-      if (queued) flush();
-      out.data[i] = float(visible) / float(samples);
+      if (rays.queued) rays.flush(scene, area.origin, n);
+      out.data[i] = float(rays.visible) / float(samples);
     }
   });
   lastQueryMs_ = msSince(start);

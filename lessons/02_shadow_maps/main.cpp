@@ -165,16 +165,7 @@ class ShadowMapLesson : public Lesson {
       glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer);
       glViewport(0, 0, f.width, f.height);
     }
-    counters = {{"shadow triangles", std::to_string(mapReused_ ? 0 : shadowTriangles_)},
-                {"shadow texels", std::to_string(mapReused_ ? 0 : std::uint64_t(map_.size) * std::uint64_t(map_.size))},
-                {"culled casters", "0"},
-                {"maps reused", mapReused_ ? "1" : "0"},
-                {"shadow map", std::to_string(map_.size) + "^2 " + gl::depthFormatName(map_.format)},
-                {"comparison", p_.compare == Compare::Hardware ? "sampler2DShadow"
-                               : p_.compare == Compare::Manual ? "in the shader"
-                               : p_.compare == Compare::CpuVertex
-                                   ? (student ? "CPU per vertex, student code" : "CPU per vertex")
-                                   : "off"}};
+    counters = mapCounters(student);
 
     // ==== 1b. CPU lookup per vertex (compare=cpu_vertex: the exercises' lookup on a read-back) =====
     if (p_.compare == Compare::CpuVertex && !f.godView) {
@@ -222,6 +213,21 @@ class ShadowMapLesson : public Lesson {
   }
 
  private:
+  // The header's figures of the shadow pass: what it drew (nothing when the map was reused), the
+  // map, and where the comparison runs.
+  std::vector<Counter> mapCounters(bool student) const {
+    return {{"shadow triangles", std::to_string(mapReused_ ? 0 : shadowTriangles_)},
+            {"shadow texels", std::to_string(mapReused_ ? 0 : std::uint64_t(map_.size) * std::uint64_t(map_.size))},
+            {"culled casters", "0"},
+            {"maps reused", mapReused_ ? "1" : "0"},
+            {"shadow map", std::to_string(map_.size) + "^2 " + gl::depthFormatName(map_.format)},
+            {"comparison", p_.compare == Compare::Hardware ? "sampler2DShadow"
+                           : p_.compare == Compare::Manual ? "in the shader"
+                           : p_.compare == Compare::CpuVertex
+                               ? (student ? "CPU per vertex, student code" : "CPU per vertex")
+                               : "off"}};
+  }
+
   void drawScene(const FrameInfo& f, const glm::mat4& textureMatrix, bool afterPrepass) {
     // Compiled for the comparison, the view and the pre-pass in use (constants in that variant).
     std::vector<std::string> defines = {"COMPARE " + std::to_string(int(p_.compare)),

@@ -270,6 +270,67 @@ ConeFit coneOverAll(const glm::dvec3& apex, std::span<const glm::dvec3> points, 
   return f;
 }
 
+// Every stride-th direction of the points into core (raw, coreSetBall normalises them); false,
+// with the index in bad, at the first direction too short or not finite.
+bool sampleCore(const glm::dvec3& apex, std::span<const glm::dvec3> points, std::size_t stride,
+                std::vector<glm::dvec3>& core, std::size_t& bad) {
+  core.clear();
+  for (std::size_t i = 0; i < points.size(); i += stride) {
+    const glm::dvec3 d = points[i] - apex;
+    if (badDirection(d)) {
+      bad = i;
+      return false;
+    }
+    core.push_back(d);
+  }
+  return true;
+}
+
+// Keeps only the directions new to the core past `before` (Welzl on pairs of equal points grew
+// the cap): both parts sorted, the new part without its repeats and without what the core holds.
+void keepNewDirections(std::vector<glm::dvec3>& core, std::size_t before) {
+  auto less = [](const glm::dvec3& p, const glm::dvec3& q) {
+    return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : p.z < q.z);
+  };
+  const auto old = core.begin() + std::ptrdiff_t(before);
+  std::sort(core.begin(), old, less);
+  std::sort(old, core.end(), less);
+  auto kept = old;
+  for (auto it = old; it != core.end(); ++it)
+    if ((kept == old || *(kept - 1) != *it) && !std::binary_search(core.begin(), old, *it, less)) *kept++ = *it;
+  core.erase(kept, core.end());
+}
+
+// The widest of the core's unit directions around axis a (their tan^2 measured on the core's own
+// points, all inside the ball: exact digits); false when one is not in front of the apex.
+bool capOfCore(const glm::dvec3& a, std::span<const glm::dvec3> core, Widest& capped) {
+  bool front = true;
+  for (const glm::dvec3& u : core) {
+    const double along = glm::dot(a, u);
+    front = front && along > 0.0;
+    const glm::dvec3 c = glm::cross(a, u);
+    capped.take(u, along, glm::dot(c, c));
+  }
+  return front;
+}
+
+// The cone around axis a through its widest direction, and the points' extent [lo, hi] along a.
+ConeFit coneThrough(const glm::dvec3& a, const glm::dvec3& widest, double lo, double hi) {
+  ConeFit f;
+  f.cone.axis = a;
+  f.cone.halfAngle = std::atan2(glm::length(glm::cross(a, widest)), glm::dot(a, widest));
+  f.cone.valid = f.cone.halfAngle < std::numbers::pi / 2.0 - 1e-9;
+  f.minAlong = lo;
+  f.maxAlong = hi;
+  return f;
+}
+
+ConeFit badAt(std::size_t k) {
+  ConeFit f;
+  f.bad = k;
+  return f;
+}
+
 }  // namespace
 
 // Many points: the cone of a sample (every stride-th direction, normalised) is grown by the
@@ -285,32 +346,14 @@ ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> po
   if (n == 0) return ConeFit{};
   std::uint64_t s = 0x9E3779B97F4A7C15ull ^ n;
   if (n < 4 * kSample) return coneOverAll(apex, points, core, s);
-  core.clear();
-  const std::size_t stride = n / kSample;
-  for (std::size_t i = 0; i < n; i += stride) {
-    const glm::dvec3 d = points[i] - apex;
-    if (badDirection(d)) {
-      ConeFit f;
-      f.bad = i;
-      return f;
-    }
-    core.push_back(d);
-  }
+  if (std::size_t bad = 0; !sampleCore(apex, points, n / kSample, core, bad)) return badAt(bad);
   Ball b = coreSetBall(core, s);  // normalises the sample
   for (int round = 0; round < kRounds; ++round) {
     const double cl = glm::length(b.c);
     if (!(cl > 1e-9)) break;
     const glm::dvec3 a = b.c / cl;
-    // The cap's tan^2 measured on the core's own points (all inside the ball): exact digits.
     Widest capped;
-    bool front = true;
-    for (const glm::dvec3& u : core) {
-      const double along = glm::dot(a, u);
-      front = front && along > 0.0;
-      const glm::dvec3 c = glm::cross(a, u);
-      capped.take(u, along, glm::dot(c, c));
-    }
-    if (!front) break;  // the core's ball reaches past a hemisphere: Welzl over every direction
+    if (!capOfCore(a, core, capped)) break;  // the core's ball reaches past a hemisphere: Welzl over every direction
     const double limit = capped.ratio * (1.0 + 1e-10) + 1e-30;
     const std::size_t before = core.size();
     Widest widest;
@@ -351,11 +394,6 @@ ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> po
       return (along > zero) & (across2 <= (splat(limit) * along) * along) &
              (across2 <= (splat(widest.ratio) * along) * along);
     };
-    auto badAt = [](std::size_t k) {
-      ConeFit f;
-      f.bad = k;
-      return f;
-    };
     V2 lo2 = splat(lo), hi2 = splat(hi);
     std::size_t i = 0;
     for (; i + 3 < n; i += 4) {
@@ -374,27 +412,8 @@ ConeFit enclosingConeFrom(const glm::dvec3& apex, std::span<const glm::dvec3> po
       if (!scan(i)) return badAt(i);
     lo = std::min({lo, lo2[0], lo2[1]});
     hi = std::max({hi, hi2[0], hi2[1]});
-    // Keep only the directions new to the core (Welzl on pairs of equal points grew the cap): both
-    // parts sorted, the new part without its repeats and without what the core holds.
-    auto less = [](const glm::dvec3& p, const glm::dvec3& q) {
-      return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : p.z < q.z);
-    };
-    const auto old = core.begin() + std::ptrdiff_t(before);
-    std::sort(core.begin(), old, less);
-    std::sort(old, core.end(), less);
-    auto kept = old;
-    for (auto it = old; it != core.end(); ++it)
-      if ((kept == old || *(kept - 1) != *it) && !std::binary_search(core.begin(), old, *it, less)) *kept++ = *it;
-    core.erase(kept, core.end());
-    if (core.size() == before) {
-      ConeFit f;
-      f.cone.axis = a;
-      f.cone.halfAngle = std::atan2(glm::length(glm::cross(a, widest.at)), glm::dot(a, widest.at));
-      f.cone.valid = f.cone.halfAngle < std::numbers::pi / 2.0 - 1e-9;
-      f.minAlong = lo;
-      f.maxAlong = hi;
-      return f;
-    }
+    keepNewDirections(core, before);
+    if (core.size() == before) return coneThrough(a, widest.at, lo, hi);
     shuffleFrom(core, 0, s);  // Welzl's expected linear time over the core
     b = welzl(core);
   }

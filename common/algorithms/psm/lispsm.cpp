@@ -18,6 +18,47 @@ double lispsmOptimalN(double zn, double zf, double gamma) {
   return (zn + std::sqrt(zn * zf)) / s;
 }
 
+namespace {
+
+// Swizzle after the perspective: map x = x, map y = frame z, depth grows along the light (-y).
+glm::dmat4 lispsmSwizzle() {
+  glm::dmat4 swz(0.0);
+  swz[0][0] = 1.0;
+  swz[2][1] = 1.0;
+  swz[1][2] = -1.0;
+  swz[3][3] = 1.0;
+  return swz;
+}
+
+// The orthographic box [lo, hi] (padded by pad) of the light's frame onto [-1, 1]^3: the uniform
+// map LiSPSM falls back on.
+glm::dmat4 frameBox(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& pad) {
+  glm::dmat4 o(1.0);
+  o[0][0] = 2.0 / (hi.x - lo.x + 2 * pad.x);
+  o[3][0] = -(hi.x + lo.x) / (hi.x - lo.x + 2 * pad.x);
+  o[1][1] = 2.0 / (hi.y - lo.y + 2 * pad.y);
+  o[3][1] = -(hi.y + lo.y) / (hi.y - lo.y + 2 * pad.y);
+  o[2][2] = 2.0 / (hi.z - lo.z + 2 * pad.z);
+  o[3][2] = -(hi.z + lo.z) / (hi.z - lo.z + 2 * pad.z);
+  return o;
+}
+
+// The perspective looking down -z over the screen box [sMin, sMax], depth from nearD to farD.
+glm::dmat4 warpPerspective(const glm::dvec2& sMin, const glm::dvec2& sMax, double nearD, double farD) {
+  glm::dmat4 p(0.0);
+  p[0][0] = 2.0 / (sMax.x - sMin.x);
+  p[2][0] = (sMax.x + sMin.x) / (sMax.x - sMin.x);
+  p[1][1] = 2.0 / (sMax.y - sMin.y);
+  p[2][1] = (sMax.y + sMin.y) / (sMax.y - sMin.y);
+  const double zn = nearD * (1.0 - 1e-9), zf = farD * (1.0 + 1e-9);
+  p[2][2] = -(zf + zn) / (zf - zn);
+  p[3][2] = -2.0 * zf * zn / (zf - zn);
+  p[2][3] = -1.0;
+  return p;
+}
+
+}  // namespace
+
 LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirection, std::span<const glm::dvec3> pts,
                        DepthRange range, double nOverride,
                        const std::function<double(double, double, double)>& optimalN) {
@@ -63,12 +104,7 @@ LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirec
                    : optimalN      ? optimalN(z0, z1, out.gamma)
                                    : lispsmOptimalN(z0, z1, out.gamma);
   const glm::dmat4 remap = depthRangeRemap(range);
-  // Swizzle after the perspective: map x = x, map y = frame z, depth grows along the light (-y).
-  glm::dmat4 swz(0.0);
-  swz[0][0] = 1.0;
-  swz[2][1] = 1.0;
-  swz[1][2] = -1.0;
-  swz[3][3] = 1.0;
+  const glm::dmat4 swz = lispsmSwizzle();
   glm::dmat4 frame(1.0);
   for (int c = 0; c < 3; ++c) {
     frame[c][0] = xAxis[c];
@@ -77,16 +113,9 @@ LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirec
   }
   const glm::dvec3 pad = glm::max(hi - lo, glm::dvec3(1e-12)) * 1e-7 + 1e-12;
   if (degenerate || !(n > 0.0) || !std::isfinite(n) || n > 1e6 * depth) {
-    // Uniform fallback: orthographic box over the body in the frame.
-    glm::dmat4 o(1.0);
-    o[0][0] = 2.0 / (hi.x - lo.x + 2 * pad.x);
-    o[3][0] = -(hi.x + lo.x) / (hi.x - lo.x + 2 * pad.x);
-    o[1][1] = 2.0 / (hi.y - lo.y + 2 * pad.y);
-    o[3][1] = -(hi.y + lo.y) / (hi.y - lo.y + 2 * pad.y);
-    o[2][2] = 2.0 / (hi.z - lo.z + 2 * pad.z);
-    o[3][2] = -(hi.z + lo.z) / (hi.z - lo.z + 2 * pad.z);
-    // o maps frame z to [-1,1] increasing with z; the map's y comes from it via the swizzle.
-    out.worldToClip = remap * swz * o * frame;
+    // Uniform fallback: orthographic box over the body in the frame; it maps frame z to [-1,1]
+    // increasing with z, and the map's y comes from it via the swizzle.
+    out.worldToClip = remap * swz * frameBox(lo, hi, pad) * frame;
     out.n = std::numeric_limits<double>::infinity();
     out.perspective = false;
     return out;
@@ -107,17 +136,8 @@ LispsmCamera fitLispsm(const CameraFrustum& camera, const glm::dvec3& lightDirec
   sMax += sp;
   glm::dmat4 shift(1.0);
   shift[3][2] = -zEye;
-  glm::dmat4 p(0.0);
-  p[0][0] = 2.0 / (sMax.x - sMin.x);
-  p[2][0] = (sMax.x + sMin.x) / (sMax.x - sMin.x);
-  p[1][1] = 2.0 / (sMax.y - sMin.y);
-  p[2][1] = (sMax.y + sMin.y) / (sMax.y - sMin.y);
-  const double zn = nearD * (1.0 - 1e-9), zf = farD * (1.0 + 1e-9);
-  p[2][2] = -(zf + zn) / (zf - zn);
-  p[3][2] = -2.0 * zf * zn / (zf - zn);
-  p[2][3] = -1.0;
-  // After p the map's y is p's NDC z (along the projected view), depth is p's NDC y (the light).
-  out.worldToClip = remap * swz * p * shift * frame;
+  // After the warp the map's y is its NDC z (along the projected view), depth its NDC y (the light).
+  out.worldToClip = remap * swz * warpPerspective(sMin, sMax, nearD, farD) * shift * frame;
   out.n = n;
   out.perspective = true;
   return out;
