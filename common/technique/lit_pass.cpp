@@ -9,7 +9,7 @@ namespace shadowlab::tech {
 
 std::vector<std::string> LitPass::lightDefines(std::span<const Light> lights, int view) {
   std::string on, kinds;
-  for (std::size_t i = 0; i < 4; ++i) {  // MAX_LIGHTS entries, the ones past the lesson's off
+  for (std::size_t i = 0; i < std::size_t(kMaxLights); ++i) {  // MAX_LIGHTS entries, the ones past the lesson's off
     const bool used = i < lights.size() && lights[i].enabled;
     on += std::string(i ? ", " : "") + (used ? "true" : "false");
     kinds += std::string(i ? ", " : "") + std::to_string(used ? int(lights[i].kind) : 0);

@@ -133,8 +133,9 @@ void PostProjectiveView::drawLines(const ShadowContext& c, const ShadowTechnique
   glBindVertexArray(0);
 }
 
-std::optional<Inset> PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, int light) {
-  if (mode_ == Mode::Off || c.frame.godView || c.lights.empty()) return std::nullopt;
+void PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, std::vector<Inset>& insets, int light) {
+  if (mode_ == Mode::Off || c.frame.godView || c.lights.empty()) return;
+  auto timer = gl::TimerScope(c.timers, "post-projective view");
   if (light < 0) light = std::min(light_, int(c.lights.size()) - 1);
   const Inset corner = inset(c.frame.width, c.frame.height).value_or(Inset{"", 0, 0, c.frame.width, c.frame.height});
   const int w = corner.width, h = corner.height;
@@ -154,7 +155,7 @@ std::optional<Inset> PostProjectiveView::draw(const ShadowContext& c, const Shad
   drawLines(c, t, light, camera, view);
   glDisable(GL_CLIP_DISTANCE0);
   composite(c, corner.x, corner.y, w, h);
-  return inset(c.frame.width, c.frame.height);
+  if (const auto i = inset(c.frame.width, c.frame.height)) insets.push_back(*i);
 }
 
 std::optional<Inset> PostProjectiveView::inset(int frameWidth, int frameHeight) const {

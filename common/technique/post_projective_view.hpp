@@ -49,9 +49,10 @@ class PostProjectiveView {
   bool enabled() const { return mode_ != Mode::Off; }
   Mode mode() const { return mode_; }
   // Draws technique t's view of light `light` (-1: the one the view's parameter names) into
-  // c.frame's framebuffer, after the lit frame. Nothing in a god-view frame. Returns the inset it
-  // drew (inset mode), for the lesson to report in Lesson::insets so the UI keeps clear of it.
-  std::optional<Inset> draw(const ShadowContext& c, const ShadowTechnique& t, int light = -1);
+  // c.frame's framebuffer, after the lit frame, timed as "post-projective view"; nothing when the
+  // view is off or in a god-view frame. In inset mode the inset goes into `insets` (the lesson's
+  // Lesson::insets), so the UI keeps clear of it.
+  void draw(const ShadowContext& c, const ShadowTechnique& t, std::vector<Inset>& insets, int light = -1);
   // In inset mode, where the inset goes in a frameWidth x frameHeight frame (bottom-left, GL
   // pixels): lessons report it in Lesson::insets so the UI stays clear of it.
   std::optional<Inset> inset(int frameWidth, int frameHeight) const;

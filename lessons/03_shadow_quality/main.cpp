@@ -20,13 +20,12 @@
 // culling test, the orthographic fit; in GLSL (shaders/03_shadow_quality/exercises.glsl) the
 // N x N PCF kernel.
 #include "app/lesson.hpp"
+#include "technique/shadow_lesson.hpp"
 #include "core/light_rig.hpp"
 #include "core/scene_gen.hpp"
 #include "exercises.hpp"
-#include "technique/lit_pass.hpp"
 #include "technique/map_view.hpp"
 #include "technique/no_shadows.hpp"
-#include "technique/scene_cache.hpp"
 #include "04_shadow_volumes/stencil_volumes.hpp"
 #include "uniform_maps.hpp"
 
@@ -64,8 +63,10 @@ T: stencil volumes on the same scene. M: error and aliasing heatmaps; O: god vie
 
 // The lesson holds two techniques and draws with the one `technique` picks; the uniform maps'
 // parameters keep their bare names, the volumes' get the prefix volumes.
-class ShadowQualityLesson : public Lesson {
+class ShadowQualityLesson : public tech::ShadowLesson {
  public:
+  ShadowQualityLesson() : ShadowLesson("03") {}
+
   void declare(ParamRegistry& r) override {
     camera.aim({0, 2, 0}, 45.0f, 0.5f);  // a city block from above: long shadows across streets
     tech::SceneCache::declare(r, &p_.scene, "procedural scene", "scene size: what the shadow passes draw");
@@ -106,10 +107,6 @@ class ShadowQualityLesson : public Lesson {
     mapView_.build();
   }
 
-  MeasureSource measureSource() override {
-    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}};
-  }
-
   void update(const FrameInfo& f) override {
     scene_.update(p_.scene);
     if (p_.drift) camera.target.x += float(f.dt) * 0.37f;
@@ -120,32 +117,20 @@ class ShadowQualityLesson : public Lesson {
   }
 
   void render(const FrameInfo& f) override {
-    const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
+    const tech::ShadowContext c = context(f);
     tech::ShadowTechnique* const techniques[] = {&maps_, &volumes_, &none_};
     tech::ShadowTechnique& technique = *techniques[int(p_.technique)];
 
-    if (p_.technique == Technique::Uniform && !f.godView) {
+    shadowPasses(c, technique, p_.technique == Technique::Uniform, [&] {  // (else 04's volumes or none)
       // ==== 1. the light cameras: fit, cull casters, skip cube faces (algorithms/light_cameras) ===
       maps_.fitLights(c);
       // ==== 2. shadow passes: polygon offset; one map per directional or spot light, six faces ====
       //         per point light (uniform_maps.cpp, renderDepth)
       maps_.renderDepth(c);
-      maps_.pushShapes(c);  // the light frusta, for the god view
-    } else {
-      technique.renderShadows(c);  // lesson 04's volumes, or none; the god view: the shapes only
-    }
-    if (!f.godView) counters = technique.stats().counters();
+    });
 
     // ==== 3. the scene from the eye, every light with its map ====================================
-    const tech::LitSettings lit{glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0};
-    if (technique.ownsLitPass()) {
-      technique.renderLit(c, lit);
-    } else {
-      auto t = scope("scene");
-      glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      lit_.draw(c, technique, lit);
-    }
+    drawLit(c, technique, {glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0});
 
     // ==== 4. light 0's map as an image (view=sun_map) =============================================
     if (p_.view == View::SunMap && maps_.map2D(0) && technique.name() == "uniform") {
@@ -156,12 +141,11 @@ class ShadowQualityLesson : public Lesson {
   }
 
  private:
+  std::span<Light> lights() override { return p_.lights; }
   Params p_;
-  tech::SceneCache scene_{"03 scene"};
   tech::UniformShadowMaps maps_;
   tech::StencilVolumes volumes_;
   tech::NoShadows none_;
-  tech::LitPass lit_{"03 scene"};
   tech::DepthMapView mapView_;
 };
 

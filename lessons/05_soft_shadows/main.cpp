@@ -21,10 +21,9 @@
 #include <imgui.h>
 
 #include "app/lesson.hpp"
+#include "technique/shadow_lesson.hpp"
 #include "core/light_rig.hpp"
 #include "exercises.hpp"
-#include "technique/lit_pass.hpp"
-#include "technique/scene_cache.hpp"
 #include "pcss.hpp"
 #include "soft_techniques.hpp"
 #include "soft_theory.hpp"
@@ -65,8 +64,10 @@ V: the visibility alone. M: error against the sphere-light reference; O: god vie
 // The lesson holds every soft technique and draws with the one `technique` picks; each declares its
 // parameters under its own name (many.samples, pcss.filter_taps, ...), so the showdown can hold
 // them the same way.
-class SoftShadowsLesson : public Lesson {
+class SoftShadowsLesson : public tech::ShadowLesson {
  public:
+  SoftShadowsLesson() : ShadowLesson("05", /*pathMovesLight=*/true) {}
+
   void declare(ParamRegistry& r) override {
     camera.aim({-3.5f, 0.0f, -0.5f}, 15.0f, 0.9f);  // from above: the box's long shadow, the knot's far one
     camera.yaw = -0.3f;
@@ -101,22 +102,13 @@ class SoftShadowsLesson : public Lesson {
     edgeLines_.build();
   }
 
-  MeasureSource measureSource() override {
-    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}};
-  }
-
-  void applyPathLight(const glm::vec3& position, const glm::vec3& direction) override {
-    p_.lights[0].position = position;
-    p_.lights[0].direction = direction;
-  }
-
   void update(const FrameInfo&) override {
     scene_.update(p_.scene);
     techniques_.get<tech::PcssShadows>("pcss").student.glslSearch = p_.impl == Impl::Student;  // 05.6
   }
 
   void render(const FrameInfo& f) override {
-    const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
+    const tech::ShadowContext c = context(f);
     tech::ShadowTechnique& technique = techniques_[p_.technique];
 
     // ==== 1. the light cameras: at the sphere's centre, or at each of N points on it =============
@@ -128,12 +120,7 @@ class SoftShadowsLesson : public Lesson {
     }
 
     // ==== 3. the scene from the eye, V from the technique ========================================
-    {
-      auto t = scope("scene");
-      glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      lit_.draw(c, technique, {glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0});
-    }
+    drawLit(c, technique, {glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0});
 
     // ==== 4. the theory over it: the predicted penumbra of the picked edge =======================
     if (p_.showEdge) {
@@ -153,6 +140,7 @@ class SoftShadowsLesson : public Lesson {
   }
 
  private:
+  std::span<Light> lights() override { return p_.lights; }
   // The box's edge the overlay follows, and a point inside the box (its shadow is the umbra side).
   std::array<glm::vec3, 2> pickedEdge() const {
     for (const SceneObject& o : scene_.scene().objects)
@@ -193,9 +181,7 @@ class SoftShadowsLesson : public Lesson {
   }
 
   Params p_;
-  tech::SceneCache scene_{"05 scene"};
   tech::TechniqueSet techniques_{tech::softTechniques()};
-  tech::LitPass lit_{"05 scene"};
   LineRenderer edgeLines_{"05 penumbra edges"};
 };
 

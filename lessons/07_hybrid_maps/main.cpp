@@ -20,11 +20,10 @@
 #include <cstdio>
 
 #include "app/lesson.hpp"
+#include "technique/shadow_lesson.hpp"
 #include "core/light_rig.hpp"
 #include "exercises.hpp"
 #include "hybrid_maps.hpp"
-#include "technique/lit_pass.hpp"
-#include "technique/scene_cache.hpp"
 #include "03_shadow_quality/uniform_maps.hpp"
 
 using namespace shadowlab;
@@ -69,8 +68,10 @@ hybrid::MergeGrid studentSweep(const hybrid::MergeGrid& children, const hybrid::
 
 // The lesson holds the hybrid maps (its subject: bare parameter names) and lesson 03's uniform
 // maps (prefix uniform.) to compare with, and tells the hybrid map's passes one by one.
-class HybridMapsLesson : public Lesson {
+class HybridMapsLesson : public tech::ShadowLesson {
  public:
+  HybridMapsLesson() : ShadowLesson("07") {}
+
   void declare(ParamRegistry& r) override {
     camera.aim({0, 2, 0}, 45.0f, 0.5f);  // the city from above: long shadows across the streets
     tech::SceneCache::declare(r, &p_.scene, "procedural scene", "scene size: what the depth pass draws");
@@ -108,7 +109,9 @@ class HybridMapsLesson : public Lesson {
   }
 
   MeasureSource measureSource() override {
-    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}, edgeBand()};
+    MeasureSource m = ShadowLesson::measureSource();
+    m.edgeBand = edgeBand();
+    return m;
   }
 
   void update(const FrameInfo&) override {
@@ -120,12 +123,12 @@ class HybridMapsLesson : public Lesson {
   }
 
   void render(const FrameInfo& f) override {
-    const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
+    const tech::ShadowContext c = context(f);
     if (f.measureLight >= 0 && f.measureLight < kLights) measured_ = f.measureLight;
     tech::ShadowTechnique& technique = p_.technique == Technique::Standard
                                            ? static_cast<tech::ShadowTechnique&>(standard_)
                                            : static_cast<tech::ShadowTechnique&>(hybrid_);
-    if (p_.technique == Technique::Hybrid && !f.godView) {
+    shadowPasses(c, technique, p_.technique == Technique::Hybrid, [&] {  // (else lesson 03's passes)
       // ==== 1. the light camera: fitted to the view as lesson 03 fits its sun ====================
       hybrid_.fitLights(c);
       // ==== 2. the full-resolution depth map: what a standard map of map_size renders ============
@@ -133,11 +136,7 @@ class HybridMapsLesson : public Lesson {
       // ==== 3. the merge sweep: 2x2 blocks whose depths agree become one texel, level by level ==
       // ==== 4. the index: the root grid and a record of four words for every kept texel =========
       hybrid_.buildMaps(c);
-      hybrid_.pushShapes(c);  // its frusta, for the god view
-    } else {
-      technique.renderShadows(c);  // lesson 03's passes at uniform.map_size; the god view: the shapes only
-    }
-    if (!f.godView) counters = technique.stats().counters();
+    });
 
     // ==== 5. the scene from the eye: each lookup descends the index to the finest stored texel ====
     auto t = scope("scene");
@@ -159,6 +158,7 @@ class HybridMapsLesson : public Lesson {
   }
 
  private:
+  std::span<Light> lights() override { return p_.lights; }
   // "Near an edge" for the measurement: edge_band.texels texels of the band's map, across the measured
   // light, from whichever technique's light camera: a width in world units (the sun's orthographic
   // map) or at unit distance (a spot's perspective one).
@@ -188,10 +188,8 @@ class HybridMapsLesson : public Lesson {
 
   Params p_;
   int measured_ = 0;  // the light the measurement judges (the last frame that measured)
-  tech::SceneCache scene_{"07 scene"};
   tech::HybridShadowMaps hybrid_{hybridDefaults()};
   tech::UniformShadowMaps standard_{standardDefaults()};
-  tech::LitPass lit_{"07 scene"};
 };
 
 int main(int argc, char** argv) { return runLesson<HybridMapsLesson>(argc, argv); }

@@ -20,12 +20,11 @@
 #include <algorithm>
 
 #include "app/lesson.hpp"
+#include "technique/shadow_lesson.hpp"
 #include "core/light_rig.hpp"
 #include "exercises.hpp"
-#include "technique/lit_pass.hpp"
 #include "technique/post_projective_view.hpp"
 #include "psm.hpp"
-#include "technique/scene_cache.hpp"
 #include "03_shadow_quality/uniform_maps.hpp"
 
 using namespace shadowlab;
@@ -87,8 +86,10 @@ double studentShift(const psm::CameraFrustum& camera, std::span<const Aabb> cast
 
 }  // namespace
 
-class OriginalPsmLesson : public Lesson {
+class OriginalPsmLesson : public tech::ShadowLesson {
  public:
+  OriginalPsmLesson() : ShadowLesson("08", /*pathMovesLight=*/true) {}
+
   void declare(ParamRegistry& r) override {
     camera.aim({0, 2, 0}, 45.0f, 0.45f);  // a city block from above: shadows near and far
     camera.nearZ = 1.0f;                  // Zf/Zn = 200: the post-projective cube is not all far face
@@ -120,15 +121,6 @@ class OriginalPsmLesson : public Lesson {
     postView_.init();
   }
 
-  MeasureSource measureSource() override {
-    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}};
-  }
-
-  void applyPathLight(const glm::vec3& position, const glm::vec3& direction) override {
-    p_.lights[0].position = position;
-    p_.lights[0].direction = direction;
-  }
-
   void update(const FrameInfo& f) override {
     scene_.update(p_.scene);
     if (p_.turn) camera.yaw += float(f.dt) * p_.turnSpeed;
@@ -144,29 +136,20 @@ class OriginalPsmLesson : public Lesson {
   }
 
   void render(const FrameInfo& f) override {
-    const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
+    const tech::ShadowContext c = context(f);
     tech::ShadowTechnique& technique = p_.technique == Technique::Psm ? static_cast<tech::ShadowTechnique&>(psm_)
                                                                       : static_cast<tech::ShadowTechnique&>(uniform_);
 
-    if (p_.technique == Technique::Psm && !f.godView) {
+    shadowPasses(c, technique, p_.technique == Technique::Psm, [&] {  // (else lesson 03's uniform map)
       // ==== 1. the light in post-projective space; behind the camera: the virtual camera's slide ===
       //         (psm.cpp, planLights; the maths in algorithms/psm/psm_plan and psm_camera)
       psm_.planLights(c);
       // ==== 2. the light camera on every object in the (virtual) frustum; its depth pass ===========
       psm_.renderDepth(c);
-      psm_.pushShapes(c);  // the slide and the light frustum, for the god view
-    } else {
-      technique.renderShadows(c);  // lesson 03's uniform map; the god view: the shapes only
-    }
-    if (!f.godView) counters = technique.stats().counters();
+    });
 
     // ==== 3. the scene from the eye: each point looked up in the post-projective map ===============
-    {
-      auto t = scope("scene");
-      glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      lit_.draw(c, technique, {glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0});
-    }
+    drawLit(c, technique, {glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0});
 
     // ==== 4. light 0's map (view=map) ===============================================================
     if (p_.view == View::Map && p_.technique == Technique::Psm && !f.godView) {
@@ -177,18 +160,14 @@ class OriginalPsmLesson : public Lesson {
     }
 
     // ==== 5. the post-projective view: the unit cube, the squashed scene, the light, the slide =====
-    if (postView_.enabled()) {
-      auto t = scope("post-projective view");
-      if (auto i = postView_.draw(c, technique)) insets.push_back(*i);
-    }
+    postView_.draw(c, technique, insets);
   }
 
  private:
+  std::span<Light> lights() override { return p_.lights; }
   Params p_;
-  tech::SceneCache scene_{"08 scene"};
   tech::PerspectiveShadowMaps psm_{tech::PsmParams::original()};
   tech::UniformShadowMaps uniform_;
-  tech::LitPass lit_{"08 scene"};
   tech::PostProjectiveView postView_;
 };
 

@@ -24,13 +24,12 @@
 
 #include "algorithms/psm/post_shapes.hpp"
 #include "app/lesson.hpp"
+#include "technique/shadow_lesson.hpp"
 #include "core/light_rig.hpp"
 #include "exercises.hpp"
 #include "lispsm.hpp"
-#include "technique/lit_pass.hpp"
 #include "technique/post_projective_view.hpp"
 #include "08_psm/psm.hpp"
-#include "technique/scene_cache.hpp"
 #include "03_shadow_quality/uniform_maps.hpp"
 
 using namespace shadowlab;
@@ -79,8 +78,10 @@ bool studentFaceVisible(int face, const psm::PostProjectiveLight& l) {
 
 }  // namespace
 
-class PsmFixesLesson : public Lesson {
+class PsmFixesLesson : public tech::ShadowLesson {
  public:
+  PsmFixesLesson() : ShadowLesson("09", /*pathMovesLight=*/true) {}
+
   void declare(ParamRegistry& r) override {
     camera.aim({0, 2, 0}, 45.0f, 0.5f);  // a city block from above, the sun behind the camera
     camera.nearZ = 1.0f;                 // Zf/Zn = 200: the post-projective cube is not all far face
@@ -121,15 +122,6 @@ class PsmFixesLesson : public Lesson {
     postView_.init();
   }
 
-  MeasureSource measureSource() override {
-    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}};
-  }
-
-  void applyPathLight(const glm::vec3& position, const glm::vec3& direction) override {
-    p_.lights[0].position = position;
-    p_.lights[0].direction = direction;
-  }
-
   void update(const FrameInfo&) override {
     scene_.update(p_.scene);
     if (p_.equalTexels) {  // the same budget: one square map of map_size per light, or its faces
@@ -152,11 +144,11 @@ class PsmFixesLesson : public Lesson {
   }
 
   void render(const FrameInfo& f) override {
-    const tech::ShadowContext c{f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
+    const tech::ShadowContext c = context(f);
     tech::ShadowTechnique* const techniques[] = {&psm_, &lispsm_, &uniform_};
     tech::ShadowTechnique& technique = *techniques[int(p_.technique)];
 
-    if (p_.technique == Technique::Psm && !f.godView) {
+    shadowPasses(c, technique, p_.technique == Technique::Psm, [&] {  // (else LiSPSM or lesson 03's map)
       // ==== 1. the plan: the light in post-projective space, receivers' key points, cone or faces ==
       //   fix 1 the inverse projection (algorithms/psm/psm_camera), fix 2 the key points and the
       //   smallest cone (psm/receivers, psm/clipping, psm/enclosing_cone), fix 3 the unit cube's
@@ -165,19 +157,10 @@ class PsmFixesLesson : public Lesson {
       // ==== 2. shadow passes: one map, or one per hidden face; casters moved by the world bias =====
       //   fix 4, a + b L_texel per caster vertex (psm/bias, shaders/common/depth_psm.vert)
       psm_.renderDepth(c);
-      psm_.pushShapes(c);  // volumes, key points, frusta, for the god view
-    } else {
-      technique.renderShadows(c);  // LiSPSM or lesson 03's uniform map; the god view: the shapes only
-    }
-    if (!f.godView) counters = technique.stats().counters();
+    });
 
     // ==== 3. the scene from the eye, every light with its map ======================================
-    {
-      auto t = scope("scene");
-      glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      lit_.draw(c, technique, {glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0});
-    }
+    drawLit(c, technique, {glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0});
 
     // ==== 4. light 0's maps side by side (view=maps) ===============================================
     if (p_.view == View::Maps && !f.godView) {
@@ -191,19 +174,15 @@ class PsmFixesLesson : public Lesson {
     }
 
     // ==== 5. the post-projective view: the unit cube, the light there, its cone, maps, key points ==
-    if (postView_.enabled()) {
-      auto t = scope("post-projective view");
-      if (auto i = postView_.draw(c, technique)) insets.push_back(*i);
-    }
+    postView_.draw(c, technique, insets);
   }
 
  private:
+  std::span<Light> lights() override { return p_.lights; }
   Params p_;
-  tech::SceneCache scene_{"09 scene"};
   tech::PerspectiveShadowMaps psm_;
   tech::LightSpacePsm lispsm_;
   tech::UniformShadowMaps uniform_;
-  tech::LitPass lit_{"09 scene"};
   tech::PostProjectiveView postView_;
 };
 

@@ -26,6 +26,7 @@
 #include <imgui.h>
 
 #include "app/lesson.hpp"
+#include "technique/shadow_lesson.hpp"
 #include "exercises.hpp"
 #include "core/light_rig.hpp"
 #include "gl/gl.hpp"
@@ -35,9 +36,7 @@
 #include "09_psm_fixes/lispsm.hpp"
 #include "cascades.hpp"
 #include "showdown_techniques.hpp"
-#include "technique/lit_pass.hpp"
 #include "technique/post_projective_view.hpp"
-#include "technique/scene_cache.hpp"
 
 using namespace shadowlab;
 
@@ -80,8 +79,10 @@ struct Quarter {
 
 // The lesson holds every technique under its own prefix (uniform.map_size, csm.cascades, ...) and
 // draws with the selected one, or with four of them side by side.
-class ShowdownLesson : public Lesson {
+class ShowdownLesson : public tech::ShadowLesson {
  public:
+  ShowdownLesson() : ShadowLesson("10", /*pathMovesLight=*/true) {}
+
   void declare(ParamRegistry& r) override {
     camera.aim({0, 2, 0}, 45.0f, 0.5f);  // the city from above (lesson 09's view): near and far shadows
     camera.nearZ = 1.0f;                 // Zf/Zn = 200, as lesson 09 (PSM's unit cube is not all far face)
@@ -121,15 +122,6 @@ class ShowdownLesson : public Lesson {
     postView_.init();
   }
 
-  MeasureSource measureSource() override {
-    return {&scene_.scene(), scene_.revision(), {p_.lights, p_.lights + kLights}};
-  }
-
-  void applyPathLight(const glm::vec3& position, const glm::vec3& direction) override {
-    p_.lights[0].position = position;
-    p_.lights[0].direction = direction;
-  }
-
   void update(const FrameInfo&) override {
     scene_.update(p_.scene);
     if (p_.equalTexels) equaliseTexels();
@@ -150,13 +142,10 @@ class ShowdownLesson : public Lesson {
     technique.renderShadows(c);
     if (!f.godView) counters = technique.stats().counters();
     // ==== 2. the scene from the eye, V from the technique ==========================================
-    drawLit(c, technique);
+    drawLit(c, technique, litSettings());
     // ==== 3. light 0's maps (view=maps), the post-projective view ==================================
     if (p_.view == View::Maps && !f.godView) drawMaps(f);
-    if (postView_.enabled()) {
-      auto t = scope("post-projective view");
-      if (auto i = postView_.draw(c, technique)) insets.push_back(*i);
-    }
+    postView_.draw(c, technique, insets);
   }
 
   void gui() override {
@@ -177,21 +166,8 @@ class ShowdownLesson : public Lesson {
   }
 
  private:
-  tech::ShadowContext context(const FrameInfo& f) {
-    return {f, camera, scene_, {p_.lights, p_.lights + kLights}, timers, debug};
-  }
-
-  void drawLit(const tech::ShadowContext& c, tech::ShadowTechnique& technique) {
-    const tech::LitSettings lit{glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0};
-    if (technique.ownsLitPass()) {
-      technique.renderLit(c, lit);
-      return;
-    }
-    auto t = scope("scene");
-    glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    lit_.draw(c, technique, lit);
-  }
+  std::span<Light> lights() override { return p_.lights; }
+  tech::LitSettings litSettings() const { return {glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0}; }
 
   // The same budget for every map technique: one map of texels^2, or the faces / cascades sharing it.
   void equaliseTexels() {
@@ -244,7 +220,7 @@ class ShowdownLesson : public Lesson {
       const auto start = std::chrono::steady_clock::now();
       const tech::ShadowContext c = context(fq);
       t.renderShadows(c);
-      drawLit(c, t);
+      drawLit(c, t, litSettings());
       glFinish();
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       timers.setEnabled(timed);
@@ -273,7 +249,6 @@ class ShowdownLesson : public Lesson {
   }
 
   Params p_;
-  tech::SceneCache scene_{"10 scene"};
   tech::TechniqueSet techniques_{tech::showdownTechniques()};
   // What only some of them have: equal texels, the maps views, the cascades' student hooks.
   tech::UniformShadowMaps& uniform_ = techniques_.get<tech::UniformShadowMaps>("uniform");
@@ -281,7 +256,6 @@ class ShowdownLesson : public Lesson {
   tech::LightSpacePsm& lispsm_ = techniques_.get<tech::LightSpacePsm>("lispsm");
   tech::CascadedShadowMaps& csm_ = techniques_.get<tech::CascadedShadowMaps>("csm");
   tech::HybridShadowMaps& hybrid_ = techniques_.get<tech::HybridShadowMaps>("hybrid");
-  tech::LitPass lit_{"10 scene"};
   tech::PostProjectiveView postView_;
   std::array<Quarter, 4> quarters_;
 };
