@@ -1,6 +1,6 @@
 #pragma once
 // The maths of soft shadows (lesson 05), GL-free so it is unit-tested and graded without a GPU.
-// The shaders in shaders/common/shadow_{many,pcss,single_sample,light_mesh,filterable}.frag and
+// The shaders in shaders/05_soft_shadows/shadow_{many,pcss,single_sample,light_mesh,filterable}.frag and
 // soft_maps.glsl mirror these functions; keep the two in step.
 //
 // The emitter is a sphere of radius R (Light::area = Sphere, Light::radius). From a point that sees
