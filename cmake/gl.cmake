@@ -15,8 +15,8 @@ target_compile_definitions(shadowlab_app PUBLIC GLFW_INCLUDE_NONE)  # GL comes f
 target_link_libraries(shadowlab_app PUBLIC shadowlab_gl shadowlab_measure shadowlab_grading PkgConfig::EGL PkgConfig::IMGUI glfw ${CMAKE_DL_LIBS})
 
 # The technique layer (common/technique): the contract every shadow technique keeps (technique.hpp)
-# and the passes they share (scene cache, caster pass, lit pass, map settings, the projective map
-# set). The techniques themselves live in the lesson that teaches them (cmake/lessons.cmake).
+# and the passes they share (scene cache, caster pass, lit pass, map settings). The techniques
+# themselves live in the lesson that teaches them (cmake/lessons.cmake).
 file(GLOB TECHNIQUE_SOURCES CONFIGURE_DEPENDS common/technique/*.cpp)
 add_library(shadowlab_technique STATIC ${TECHNIQUE_SOURCES})
 target_link_libraries(shadowlab_technique PUBLIC shadowlab_app)

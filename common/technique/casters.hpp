@@ -54,7 +54,7 @@ struct CasterOptions {
 class CasterPass {
  public:
   // `vertexShader` and its view-projection uniform: the light's depth pass (a technique may move
-  // its casters there, e.g. the world-space bias of perspective shadow maps, common/depth_psm.vert),
+  // its casters there, e.g. the world-space bias of perspective shadow maps, 08_psm/depth_psm.vert),
   // or (common/scene.vert, uViewProj) for a pre-pass whose depth a lit pass with the same vertex
   // shader tests EQUAL against. `fragmentShader`: a filterable map (VSM, ESM) writes its moments
   // from one of its own, with the same alpha test.

@@ -20,7 +20,7 @@
 
 #include "algorithms/psm/psm_plan.hpp"
 #include "technique/post_projective_view.hpp"
-#include "technique/projective_maps.hpp"
+#include "projective_maps.hpp"
 #include "technique/technique.hpp"
 
 namespace shadowlab::tech {
@@ -64,7 +64,7 @@ class PerspectiveShadowMaps : public ShadowTechnique, public PostProjectiveSubje
   //    the light camera(s); the casters that can shade the view.
   void planLights(const ShadowContext& c);
   // 2. The depth passes: one per map (or face), each caster's vertices through the plan's
-  //    world -> map matrix, moved by the world-space bias (fix 4) in shaders/common/depth_psm.vert.
+  //    world -> map matrix, moved by the world-space bias (fix 4) in shaders/08_psm/depth_psm.vert.
   void renderDepth(const ShadowContext& c);
 
   PsmParams& params() { return p_; }

@@ -12,7 +12,7 @@
 
 #include "algorithms/psm/lispsm.hpp"
 #include "technique/post_projective_view.hpp"
-#include "technique/projective_maps.hpp"
+#include "08_psm/projective_maps.hpp"
 #include "technique/technique.hpp"
 
 namespace shadowlab::tech {

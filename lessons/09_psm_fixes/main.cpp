@@ -1,7 +1,9 @@
 // Lesson 09: Perspective Shadow Maps with every fix of Kozlov et al., "Perspective Shadow Maps: Care
-// and Feeding" (GPU Gems 1 ch. 14; the same paper in Russian from IAE SB RAS), each a switch of the
-// PSM technique (lessons/08_psm/psm.cpp, shaders/08_psm/shadow_psm.frag), and LiSPSM and the
-// uniform map beside it at equal texels:
+// and Feeding" (GPU Gems 1 ch. 14; the same paper in Russian from IAE SB RAS), each a switch of
+// lesson 08's PSM technique (lessons/08_psm/psm.cpp; its maps, one per cube face with fix 3, and
+// their depth pass with fix 4's bias in lessons/08_psm/projective_maps.cpp and
+// shaders/08_psm/depth_psm.vert; the lookup in shaders/08_psm/shadow_psm.frag), and LiSPSM
+// (lispsm.cpp, here) and the uniform map beside it at equal texels:
 //   fix.inverse  §3    a light behind the camera gets the inverse projection (Zn = -a, Zf = +a):
 //                      a light ray is ordered through infinity, no virtual camera slides back
 //   format             16, 24 or 32F bits of depth (the paper: 24 suffice)
@@ -155,7 +157,7 @@ class PsmFixesLesson : public tech::ShadowLesson {
       //   faces the light cannot see (psm/cube_faces); the whole plan: psm/psm_plan
       psm_.planLights(c);
       // ==== 2. shadow passes: one map, or one per hidden face; casters moved by the world bias =====
-      //   fix 4, a + b L_texel per caster vertex (psm/bias, shaders/common/depth_psm.vert)
+      //   fix 4, a + b L_texel per caster vertex (psm/bias, shaders/08_psm/depth_psm.vert)
       psm_.renderDepth(c);
     });
 

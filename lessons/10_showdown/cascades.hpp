@@ -7,7 +7,7 @@
 // A blend band at each cascade's far end mixes it into the next, so the switch leaves no seam. The
 // cascades of a light share its texel budget (map_size squared: four cascades of half the side).
 // GL-free fit: algorithms/cascades; storage, depth pass, bias and lookup: the projective
-// maps (technique/projective_maps, shaders/08_psm/projective_maps.glsl); the GLSL that picks the
+// maps (08_psm/projective_maps, shaders/08_psm/projective_maps.glsl); the GLSL that picks the
 // cascade: shaders/10_showdown/shadow_cascades.frag. view=cascades (the `colours` switch) draws the
 // cascade-colouring view instead of the lit frame. warp puts a LiSPSM warp inside each cascade
 // (Lloyd et al. 2006's warping plus z-partitioning: shadow::warpCascades). Directional lights only: a spot or point
@@ -17,7 +17,7 @@
 #include "algorithms/cascades.hpp"
 #include "technique/lit_pass.hpp"
 #include "technique/post_projective_view.hpp"
-#include "technique/projective_maps.hpp"
+#include "08_psm/projective_maps.hpp"
 #include "technique/technique.hpp"
 
 namespace shadowlab::tech {

@@ -1,10 +1,10 @@
-// The maps of common/technique/projective_maps as the lit shader reads them (the perspective
+// The maps of lessons/08_psm/projective_maps as the lit shader reads them (the perspective
 // shadow maps and LiSPSM, shaders/08_psm/shadow_psm.frag; the cascades, shadow_cascades.frag): per
 // light up to six maps, the layers of one array texture, each with the matrix that takes a world
 // point to its clip space in one projective step, and the lookup with the receiver's normal offset.
 #include "common/light.glsl"
 
-const int PSM_LIGHTS = 2;  // kPsmLights in common/technique/projective_maps.hpp
+const int PSM_LIGHTS = 2;  // kPsmLights in lessons/08_psm/projective_maps.hpp
 const int PSM_MAPS = 6;
 
 uniform int uPsmLayers[PSM_LIGHTS];  // 0: no map this frame (light off, nothing in view): lit

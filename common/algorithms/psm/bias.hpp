@@ -21,7 +21,7 @@ glm::dmat4 texelOffsetMatrix(const glm::dmat4& worldToClip, const glm::dvec2& ma
 
 // K is rank one: (C - I) M P = (2/Sx, 2/Sy, 0, 0) w_clip(P), so K (P, 1) = u (r . (P, 1)) with
 // u = M^-1 (2/Sx, 2/Sy, 0, 0) and r = M's last row. The depth pass's vertex shader uses these two
-// vectors (shaders/common/depth_psm.vert): one dot product instead of a matrix, and no product of
+// vectors (shaders/08_psm/depth_psm.vert): one dot product instead of a matrix, and no product of
 // M^-1 and M rounded in float.
 struct TexelStep {
   glm::dvec4 u{0.0};  // homogeneous world offset per unit of clip w

@@ -1,6 +1,6 @@
 #version 410 core
 // The depth pass of the techniques that warp space first (perspective shadow maps, LiSPSM;
-// common/technique/projective_maps): depth.vert, plus the world-space texel-size bias of Kozlov et
+// lessons/08_psm/projective_maps): depth.vert, plus the world-space texel-size bias of Kozlov et
 // al., "Perspective Shadow Maps: Care and Feeding" §5 (fix 4), on every caster vertex:
 //   P_biased = P + L min(a + b L_texel, maxOffset)
 // L: the unit direction from the light; L_texel: the world size of one map texel at P, measured by

@@ -1,4 +1,4 @@
-#include "technique/projective_maps.hpp"
+#include "projective_maps.hpp"
 
 #include <string>
 

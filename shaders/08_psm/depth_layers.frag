@@ -1,5 +1,5 @@
 #version 410 core
-// The layers of a projective map set side by side (common/technique/projective_maps, view=map):
+// The layers of a projective map set side by side (lessons/08_psm/projective_maps, view=map):
 // raw window depth, stretched so that the far end of a perspective map is not all white.
 #include "common/measure.glsl"
 

@@ -7,7 +7,7 @@
 // it visible to the rasteriser (Kozlov et al., "Perspective Shadow Maps: Care and Feeding", §3).
 // The shared controls: the TOTAL texels of a light (a face set splits them), the depth format,
 // the filter, and the bias: a constant in depth, or the paper's world-space texel-size bias (§5,
-// fix 4) applied to every caster vertex in the depth pass (shaders/common/depth_psm.vert).
+// fix 4) applied to every caster vertex in the depth pass (shaders/08_psm/depth_psm.vert).
 // shaders/08_psm/shadow_psm.frag reads them.
 #include <array>
 #include <functional>
@@ -141,11 +141,11 @@ class ProjectiveMapSet {
 
   ProjectiveMapParams p_;
   std::array<PerLight, kPsmLights> lights_;
-  CasterPass casters_{"projective maps: depth pass", "common/depth_psm.vert"};
+  CasterPass casters_{"projective maps: depth pass", "08_psm/depth_psm.vert"};
   CasterPass plainCasters_{"projective maps: depth pass (CPU-biased vertices)"};
   gl::Sampler compareNearest_, compareLinear_, raw_;
   gl::Texture dummy_;
-  gl::Program layersView_{"projective maps: layers", {"common/fullscreen.vert", "common/depth_layers.frag"}};
+  gl::Program layersView_{"projective maps: layers", {"common/fullscreen.vert", "08_psm/depth_layers.frag"}};
   gl::VertexArray emptyVao_;
   gl::Buffer studentVertices_;
   std::vector<glm::vec3> studentScratch_;
