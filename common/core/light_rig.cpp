@@ -65,39 +65,28 @@ Light secondSphereSpot() {
   return l;
 }
 
-Light forestSpot() {
-  Light l{LightKind::Spot, {14.0f, 26.0f, 10.0f}};
-  l.direction = glm::normalize(glm::vec3(-14.0f, -26.0f, -10.0f));
-  l.color = {1.0f, 0.95f, 0.85f};
-  l.intensity = 1.6f;
-  l.attenuation = {1.0f, 0.0f, 0.0f};
-  l.spotInner = 0.45f;
-  l.spotOuter = 0.6f;
+namespace {
+// A spot at `position` aimed at the origin, attenuated by 1 + c2 d^2, its cone's core and edge
+// half-angles `inner` and `outer` (radians).
+Light spotAtOrigin(const glm::vec3& position, const glm::vec3& color, float intensity, float c2, float inner,
+                   float outer) {
+  Light l{LightKind::Spot, position};
+  l.direction = glm::normalize(-position);
+  l.color = color;
+  l.intensity = intensity;
+  l.attenuation = {1.0f, 0.0f, c2};
+  l.spotInner = inner;
+  l.spotOuter = outer;
   return l;
 }
+}  // namespace
 
-Light citySpot() {
-  Light l{LightKind::Spot, {-12.0f, 16.0f, 10.0f}};
-  l.direction = glm::normalize(glm::vec3(12.0f, -16.0f, -10.0f));
-  l.color = {0.5f, 0.7f, 1.0f};
-  l.intensity = 2.0f;
-  l.attenuation = {1.0f, 0.0f, 0.002f};
-  l.spotInner = 0.35f;
-  l.spotOuter = 0.5f;
-  l.enabled = false;
-  return l;
-}
+Light forestSpot() { return spotAtOrigin({14.0f, 26.0f, 10.0f}, {1.0f, 0.95f, 0.85f}, 1.6f, 0.0f, 0.45f, 0.6f); }
+
+Light citySpot() { return off(spotAtOrigin({-12.0f, 16.0f, 10.0f}, {0.5f, 0.7f, 1.0f}, 2.0f, 0.002f, 0.35f, 0.5f)); }
 
 Light cityHighSpot() {
-  Light l{LightKind::Spot, {-14.0f, 18.0f, 12.0f}};
-  l.direction = glm::normalize(glm::vec3(14.0f, -18.0f, -12.0f));
-  l.color = {0.6f, 0.75f, 1.0f};
-  l.intensity = 2.5f;
-  l.attenuation = {1.0f, 0.0f, 0.0015f};
-  l.spotInner = 0.4f;
-  l.spotOuter = 0.55f;
-  l.enabled = false;
-  return l;
+  return off(spotAtOrigin({-14.0f, 18.0f, 12.0f}, {0.6f, 0.75f, 1.0f}, 2.5f, 0.0015f, 0.4f, 0.55f));
 }
 
 }  // namespace shadowlab
