@@ -21,7 +21,7 @@ bool facesLight(vec3 a, vec3 b, vec3 c) {
   return dot(cross(b - a, c - a), uLight.xyz - a * uLight.w) > 0.0;
 }
 // The extrusion, extrudeToInfinity(p, light): exercise 04.5 (GLSL). The student's with
-// impl=student in lesson 04 (StencilVolumes::studentExtrusion builds this shader with
+// impl=student in lesson 04 (StencilVolumes::student.glslExtrusion builds this shader with
 // SHADOWLAB_STUDENT_GLSL), else the reference (sealed in the student handout).
 #ifdef SHADOWLAB_STUDENT_GLSL
 #include "04_shadow_volumes/exercises.glsl"
