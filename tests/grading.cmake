@@ -101,3 +101,14 @@ foreach(stub IN LISTS EXERCISE_STUBS)
     message(STATUS "${stub_rel} was edited: validity.ex${nn}.stubs left out (it runs on a clean checkout in CI)")
   endif()
 endforeach()
+
+# `make grade` is the student's whole loop: under an exercise that fails (and is not a stub) the
+# report prints its first failing public case, name and why, and never a hidden case's output.
+if(TARGET grade_report)
+  add_test(NAME grading.report_first_failure
+           COMMAND grade_report --out ${CMAKE_CURRENT_BINARY_DIR}/report_first_failure
+                   ${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/one_failing.json)
+  set_tests_properties(grading.report_first_failure PROPERTIES LABELS unit
+    PASS_REGULAR_EXPRESSION "exercise 01\\.1: [0-9.]+ / 10 points, 1 of 3 cases \\(1 hidden\\)\n    first failing case: ex01\\.1: grazing light\n    \\| tests/grading/ex01_tests\\.cpp:20: CHECK\\( diffuse == 0\\.5 \\) is NOT correct!\n    \\|   values: CHECK\\( 0\\.25 == 0\\.5 \\)\n    \\|   logged: N = \\(0, 1, 0\\), L = \\(0\\.7, 0\\.7, 0\\)\nexercise 01\\.2: 0 / 10 points, 0 of 1 cases \\(0 hidden\\), still a stub\nscore"
+    FAIL_REGULAR_EXPRESSION "SECRET")
+endif()

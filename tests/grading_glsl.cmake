@@ -97,6 +97,7 @@ endforeach()
 
 # The exercises panel and the stub banner, through the lessons (label gpu): --exercises reports
 # each exercise's state from the public cases (stubs here; the reference C++ in the grading build),
+# the file and line to write it at, and the one command that grades the lesson;
 # and impl=student on the stubs prints the banner headless (lesson 04's stubbed projection leaves
 # the frame black: the banner says so). Lesson 07 has no banner run: on the stubs its sweep stops
 # the lesson with a clear error instead (gpu.hybrid.student).
@@ -105,7 +106,7 @@ foreach(lesson IN ITEMS 01_lighting 02_shadow_maps 03_shadow_quality 04_shadow_v
   if(TARGET lesson_${lesson})
     string(SUBSTRING ${lesson} 0 2 nn)
     add_test(NAME gpu.${lesson}.exercises_panel COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_${lesson}>
-             "-DEXPECT=${nn}\\.1 +stub .*\\(0 of [1-9][0-9]* public cases pass\\)"
+             "-DEXPECT=${nn}\\.1 +stub [^\n]*\\(0 of [1-9][0-9]* public cases pass\\)\n      write [A-Za-z0-9_]+ in (lessons|shaders)/${lesson}/exercises\\.(cpp|glsl):[1-9][0-9]*\n.*\nGrade them \\(this builds what changed first\\): make grade LESSON=${nn}\nSee yours live: --set [a-z_.]+=student\n"
              -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_exercises.cmake)
     set_tests_properties(gpu.${lesson}.exercises_panel PROPERTIES LABELS gpu)
     if(lesson STREQUAL 07_hybrid_maps)

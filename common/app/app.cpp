@@ -87,7 +87,7 @@ class Runner {
       params_.validate();  // the defaults, then every preset, pass the registry's checks
       presets_.validate(params_);
       checkHotkeys(params_);
-      if (answerQuery(cl_, info_, params_, presets_, argv[0])) return 0;
+      if (answerQuery(cl_, info_, params_, presets_, lesson_.exercises, argv[0])) return 0;
       if (!cl_.preset.empty()) presets_.apply(cl_.preset, params_);
       if (!cl_.model.empty()) cl_.sets.insert(cl_.sets.begin(), modelSceneAssignment(params_, info_.name));
       params_.assignAll(cl_.sets);  // one change: checked once, whatever the order

@@ -1,7 +1,9 @@
 #include "app/exercises.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <fstream>
 
 #include "app/glsl_cases.hpp"
 #include "core/paths.hpp"
@@ -13,6 +15,26 @@ std::filesystem::file_time_type glslStampOf(const std::string& lesson) {
   return std::filesystem::last_write_time(shaderRoot() + "/" + lesson + "/exercises.glsl", ec);
 }
 }  // namespace
+
+std::string Exercise::function() const { return title.substr(0, title.find_first_of(": ")); }
+
+ExerciseLocation exerciseLocation(const std::string& lesson, const Exercise& e) {
+  ExerciseLocation at{(e.glsl ? "shaders/" : "lessons/") + lesson + (e.glsl ? "/exercises.glsl" : "/exercises.cpp")};
+  std::ifstream in(sourceRoot() + "/" + at.file);
+  const std::string tag = "EXERCISE " + e.id;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    const std::size_t i = line.find(tag);
+    if (i == std::string::npos) continue;
+    const std::size_t end = i + tag.size();
+    if (end < line.size() && std::isdigit(static_cast<unsigned char>(line[end]))) continue;  // 03.1 is not 03.10
+    at.line = n;
+    break;
+  }
+  return at;
+}
+
+std::string gradeCommand(const std::string& lesson) { return "make grade LESSON=" + lesson.substr(0, 2); }
 
 const char* exerciseStateName(ExerciseState s) {
   switch (s) {
@@ -80,8 +102,19 @@ std::string Exercises::report() const {
                   exerciseStateName(e.state), e.title.c_str(), e.glsl ? " [GLSL]" : "", e.passed, e.cases,
                   e.markerLeft ? "; delete its SHADOWLAB_STUB line" : "");
     s += line;
+    s += "      write " + e.function() + " in " + exerciseLocation(lesson_, e).text() + "\n";
+    if (e.state != ExerciseState::Failing) continue;
+    std::string failure = e.firstFailure;  // indented under the exercise, at most 6 lines
+    std::size_t at = 0;
+    for (int n = 0; n < 6 && at < failure.size(); ++n) {
+      const std::size_t end = std::min(failure.find('\n', at), failure.size());
+      s += "      | " + failure.substr(at, end - at) + "\n";
+      at = end + 1;
+    }
   }
-  return s;
+  if (list_.empty()) return s;
+  return s + "Grade them (this builds what changed first): " + gradeCommand(lesson_) + "\nSee yours live: --set " +
+         param_ + "=" + studentValue_ + "\n";
 }
 
 std::string Exercises::stubBanner(double blackShare) const {

@@ -31,7 +31,22 @@ struct Exercise {
   int passed = 0, cases = 0;
   bool markerLeft = false;   // passing, but the SHADOWLAB_STUB line is still there
   std::string firstFailure;  // the first failing case's name and output
+
+  // The function to write: the title up to its first ':' or space ("slopeScaledBias").
+  std::string function() const;
 };
+
+// Where a student writes exercise `e` of `lesson` ("03_shadow_quality"): the repository-relative
+// file (lessons/NN_name/exercises.cpp or shaders/NN_name/exercises.glsl) and the line of its
+// "EXERCISE NN.k" tag in the source tree (0 when the tag is not found).
+struct ExerciseLocation {
+  std::string file;
+  int line = 0;
+  std::string text() const { return line > 0 ? file + ":" + std::to_string(line) : file; }
+};
+ExerciseLocation exerciseLocation(const std::string& lesson, const Exercise& e);
+// The one command that builds what changed and grades lesson `lesson`'s exercises.
+std::string gradeCommand(const std::string& lesson);
 
 class Exercises {
  public:
@@ -48,7 +63,9 @@ class Exercises {
   // GLSL ones); glslChanged() is true when exercises.glsl was saved since.
   void evaluate(const std::string& lesson);
   bool glslChanged() const;
-  // One line per exercise: "01.1  stub     lightContribution: ... (0 of 5 public cases)".
+  // Per exercise its state line ("01.1  stub     lightContribution: ... (0 of 5 public cases
+  // pass)"), then where to write it (file:line, function) and, when it fails, its first failing
+  // case; last, the command that grades the lesson and the switch that shows the student's code.
   std::string report() const;
   // The banner while the student's code is in use: empty when no exercise is a stub.
   std::string stubBanner(double blackShare) const;

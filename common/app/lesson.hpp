@@ -31,6 +31,8 @@ struct LessonInfo {
   int difficulty = 1;       // 1 (intro) to 5
   std::string help;         // F1 overlay: controls and what to try (several lines)
   bool measurable = false;  // computes V_i: gets the ground-truth overlay and --measure (measureSource())
+  int minutes = 0;          // time in class (the lesson README's "Time and prerequisites")
+  std::vector<std::string> prerequisites;  // lesson numbers a student should have done first ({"02"})
 };
 
 struct FrameInfo {

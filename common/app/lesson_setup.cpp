@@ -70,14 +70,27 @@ void checkHotkeys(const ParamRegistry& params) {
   throw ParamError("hotkeys: " + all);
 }
 
+std::string infoJson(const LessonInfo& info, const Exercises& exercises) {
+  std::string prerequisites, list;
+  for (const std::string& p : info.prerequisites) prerequisites += (prerequisites.empty() ? "\"" : ",\"") + p + "\"";
+  for (const Exercise& e : exercises.list()) {
+    const ExerciseLocation at = exerciseLocation(info.name, e);
+    list += std::string(list.empty() ? "" : ",") + "{\"id\":\"" + e.id + "\",\"function\":\"" + jsonEscape(e.function()) +
+            "\",\"title\":\"" + jsonEscape(e.title) + "\",\"glsl\":" + (e.glsl ? "true" : "false") +
+            ",\"file\":\"" + at.file + "\",\"line\":" + std::to_string(at.line) + "}";
+  }
+  return "{\"number\":\"" + info.number + "\",\"name\":\"" + info.name + "\",\"title\":\"" + jsonEscape(info.title) +
+         "\",\"summary\":\"" + jsonEscape(info.summary) + "\",\"difficulty\":" + std::to_string(info.difficulty) +
+         ",\"minutes\":" + std::to_string(info.minutes) + ",\"prerequisites\":[" + prerequisites + "],\"exercises\":[" +
+         list + "],\"grade\":\"" + (exercises.empty() ? std::string() : gradeCommand(info.name)) + "\"}";
+}
+
 bool answerQuery(const CommandLine& cl, const LessonInfo& info, const ParamRegistry& params, const PresetFile& presets,
-                 const char* program) {
+                 const Exercises& exercises, const char* program) {
   if (cl.help) {
     std::cout << info.number << " " << info.title << ": " << info.summary << "\n\n" << commandLineHelp(program);
   } else if (cl.info) {
-    std::cout << "{\"number\":\"" << info.number << "\",\"name\":\"" << info.name << "\",\"title\":\""
-              << jsonEscape(info.title) << "\",\"summary\":\"" << jsonEscape(info.summary)
-              << "\",\"difficulty\":" << info.difficulty << "}\n";
+    std::cout << infoJson(info, exercises) << "\n";
   } else if (cl.listParams) {
     std::cout << params.describe();
   } else if (cl.listPresets) {

@@ -1,6 +1,6 @@
 #pragma once
 // Lesson 01 exercises. Write them in exercises.cpp; grade with
-//   ctest --test-dir build/default -L ex01 --output-on-failure
+//   make grade LESSON=01   (it builds what changed first)
 // and see yours live with  lesson_01_lighting --set impl=student
 // (the lesson then shades every vertex on the CPU with YOUR functions).
 #include <glm/glm.hpp>

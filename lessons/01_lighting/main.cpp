@@ -89,7 +89,7 @@ class LightingLesson : public Lesson {
     declareLights(r, p_.lights);
   }
 
-  LessonInfo info() const override { return {"01", "01_lighting", "Lighting", kSummary, 1, kHelp, true}; }
+  LessonInfo info() const override { return {"01", "01_lighting", "Lighting", kSummary, 1, kHelp, true, 60, {}}; }
 
   void init() override {
     unlit_.build();

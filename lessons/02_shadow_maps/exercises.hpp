@@ -1,6 +1,6 @@
 #pragma once
 // Lesson 02 exercises. Write them in exercises.cpp; grade with
-//   ctest --test-dir build/default -L ex02 --output-on-failure
+//   make grade LESSON=02   (it builds what changed first)
 // and see yours live with  lesson_02_shadow_maps --set impl=student --set compare=cpu_vertex
 // (the texture matrix of the GPU lookup is yours, and every vertex's V comes from YOUR lookup on a
 // read-back of the shadow map).

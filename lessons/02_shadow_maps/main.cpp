@@ -111,7 +111,7 @@ class ShadowMapLesson : public Lesson {
     declareLight(r, 0, p_.light);  // light0.*: position, direction, spot_outer (the frustum's fov is twice it)
   }
 
-  LessonInfo info() const override { return {"02", "02_shadow_maps", "Shadow maps", kSummary, 2, kHelp, true}; }
+  LessonInfo info() const override { return {"02", "02_shadow_maps", "Shadow maps", kSummary, 2, kHelp, true, 90, {"01"}}; }
 
   void init() override {
     casters_.build();

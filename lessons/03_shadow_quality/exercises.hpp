@@ -1,6 +1,6 @@
 #pragma once
 // Lesson 03 exercises. Write them in exercises.cpp; grade with
-//   ctest --test-dir build/default -L ex03 --output-on-failure
+//   make grade LESSON=03   (it builds what changed first)
 // and see yours live with  lesson_03_shadow_quality --set impl=student
 // (your caster-culling test and your orthographic fit then drive the sun's shadow pass).
 #include <span>

@@ -98,7 +98,7 @@ class ShadowQualityLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {"03", "03_shadow_quality", "Shadow-map quality", kSummary, 3, kHelp, true};
+    return {"03", "03_shadow_quality", "Shadow-map quality", kSummary, 3, kHelp, true, 120, {"02"}};
   }
 
   void init() override {

@@ -1,6 +1,6 @@
 #pragma once
 // Lesson 04 exercises. Write them in exercises.cpp; grade with
-//   ctest --test-dir build/default -L ex04 --output-on-failure
+//   make grade LESSON=04   (it builds what changed first)
 // and see yours live with  lesson_04_shadow_volumes --set impl=student
 // (silhouettes, the projection, the stencil operations and the z-fail choice then come from YOUR
 // functions). Lights are homogeneous: (position, 1) for a point light, (-direction, 0) for the sun.

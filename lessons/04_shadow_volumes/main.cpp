@@ -88,7 +88,7 @@ class ShadowVolumeLesson : public Lesson {
     declareLights(r, p_.lights);
   }
 
-  LessonInfo info() const override { return {"04", "04_shadow_volumes", "Shadow volumes", kSummary, 3, kHelp, true}; }
+  LessonInfo info() const override { return {"04", "04_shadow_volumes", "Shadow volumes", kSummary, 3, kHelp, true, 90, {"02"}}; }
 
   void init() override {
     applyImpl();  // a broken exercises.glsl stops a headless run at once

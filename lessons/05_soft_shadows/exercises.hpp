@@ -1,6 +1,6 @@
 #pragma once
 // Lesson 05 exercises. Write them in exercises.cpp; grade with
-//   ctest --test-dir build/default -L ex05 --output-on-failure
+//   make grade LESSON=05   (it builds what changed first)
 // and see yours live with  lesson_05_soft_shadows --set impl=student
 // (your half-width draws the predicted penumbra edges, your A_frac and its linear approximation
 // the plot).

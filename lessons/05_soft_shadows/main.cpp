@@ -95,7 +95,7 @@ class SoftShadowsLesson : public tech::ShadowLesson {
     declareLights(r, p_.lights);
   }
 
-  LessonInfo info() const override { return {"05", "05_soft_shadows", "Soft shadows", kSummary, 4, kHelp, true}; }
+  LessonInfo info() const override { return {"05", "05_soft_shadows", "Soft shadows", kSummary, 4, kHelp, true, 120, {"03"}}; }
 
   void init() override {
     techniques_.init();

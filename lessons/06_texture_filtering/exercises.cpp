@@ -1,5 +1,5 @@
 // Lesson 06: YOUR implementations. Each stub compiles and returns a neutral value; replace the
-// body, then grade with  ctest --test-dir build/default -L ex06 --output-on-failure
+// body, then grade with  make grade LESSON=06   (it builds what changed first)
 #include "exercises.hpp"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // Lesson 06 exercises: texture filtering. Write them in exercises.cpp; grade with
-//   ctest --test-dir build/default -L ex06 --output-on-failure
+//   make grade LESSON=06   (it builds what changed first)
 // and see yours live with  lesson_06_texture_filtering --set impl=student --set view=cpu_reference
 // (the CPU reference view then samples every pixel with YOUR functions).
 //

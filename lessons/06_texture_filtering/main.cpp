@@ -145,7 +145,7 @@ class TextureFilteringLesson : public Lesson {
     r.add("diff_gain", &p_.diffGain, 1.0f, 64.0f, "difference view: |GPU - CPU| times this");
   }
 
-  LessonInfo info() const override { return {"06", "06_texture_filtering", "Texture filtering", kSummary, 2, kHelp}; }
+  LessonInfo info() const override { return {"06", "06_texture_filtering", "Texture filtering", kSummary, 2, kHelp, false, 90, {"01"}}; }
 
   void init() override {
     program_.build();

@@ -1,6 +1,6 @@
 #pragma once
 // Lesson 07 exercises. Write them in exercises.cpp; grade with
-//   ctest --test-dir build/default -L ex07 --output-on-failure
+//   make grade LESSON=07   (it builds what changed first)
 // and see yours live with  lesson_07_hybrid_maps --set impl=student
 // (your sweep, 07.1 and 07.2, then builds the sun's map on the CPU: read back, swept, uploaded).
 #include <array>

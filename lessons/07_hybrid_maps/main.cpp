@@ -100,7 +100,7 @@ class HybridMapsLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {"07", "07_hybrid_maps", "Hybrid-resolution shadow maps", kSummary, 4, kHelp, true};
+    return {"07", "07_hybrid_maps", "Hybrid-resolution shadow maps", kSummary, 4, kHelp, true, 90, {"03"}};
   }
 
   void init() override {

@@ -1,4 +1,5 @@
-// Lesson 08: your solutions. Each function says what to return in exercises.hpp.
+// Lesson 08: your solutions. Each function says what to return in exercises.hpp; grade with
+//   make grade LESSON=08   (it builds what changed first)
 #include "exercises.hpp"
 
 namespace shadowlab::ex08 {

@@ -1,7 +1,7 @@
 #pragma once
 // Lesson 08 exercises: Perspective Shadow Maps ([Kozlov2004] §2-3). Pure functions; GLM column
 // vectors; right-handed view space looking down -z; camera clip depth in [-1,1] (OpenGL).
-// Grade with: ctest -L ex08
+// Grade with: make grade LESSON=08  (it builds what changed first)
 #include <vector>
 
 #include <glm/glm.hpp>

@@ -113,7 +113,7 @@ class OriginalPsmLesson : public tech::ShadowLesson {
     declareLights(r, p_.lights);
   }
 
-  LessonInfo info() const override { return {"08", "08_psm", "Perspective shadow maps", kSummary, 4, kHelp, true}; }
+  LessonInfo info() const override { return {"08", "08_psm", "Perspective shadow maps", kSummary, 4, kHelp, true, 120, {"03"}}; }
 
   void init() override {
     psm_.init();

@@ -1,4 +1,5 @@
-// Lesson 09: your solutions. Each function says what to return in exercises.hpp.
+// Lesson 09: your solutions. Each function says what to return in exercises.hpp; grade with
+//   make grade LESSON=09   (it builds what changed first)
 #include "exercises.hpp"
 
 namespace shadowlab::ex09 {

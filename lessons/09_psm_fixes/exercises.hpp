@@ -3,7 +3,7 @@
 // vectors; right-handed view spaces looking down -z; clip depth in [-1,1] (OpenGL).
 // Post-projective light encoding as in exercise 08.1: (p, +1) finite in front, (p, -1) finite
 // behind the camera, (D, 0) a direction (light at infinity toward +D, rays travel along -D).
-// Grade with: ctest -L ex09
+// Grade with: make grade LESSON=09  (it builds what changed first)
 #include <vector>
 
 #include <glm/glm.hpp>

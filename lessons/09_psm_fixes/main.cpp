@@ -114,7 +114,7 @@ class PsmFixesLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {"09", "09_psm_fixes", "PSM with the paper's fixes", kSummary, 5, kHelp, true};
+    return {"09", "09_psm_fixes", "PSM with the paper's fixes", kSummary, 5, kHelp, true, 120, {"08"}};
   }
 
   void init() override {

@@ -1,5 +1,5 @@
 // Lesson 10: YOUR implementations. Each stub compiles and returns a neutral value; replace the
-// body, then grade with  ctest --test-dir build/default -L ex10 --output-on-failure
+// body, then grade with  make grade LESSON=10   (it builds what changed first)
 #include "exercises.hpp"
 
 namespace shadowlab::ex10 {

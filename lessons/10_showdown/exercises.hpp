@@ -1,7 +1,7 @@
 #pragma once
 // Lesson 10 exercises: the maths of cascaded shadow maps (technique=csm), GL-free. Write them in
 // exercises.cpp; grade with
-//   ctest --test-dir build/default -L ex10 --output-on-failure
+//   make grade LESSON=10   (it builds what changed first)
 // and see yours live with  lesson_10_showdown --set impl=student  (technique=csm runs your split
 // scheme, 10.1, and your texel snapping, 10.2; 10.3 is what shaders/10_showdown/shadow_cascades.frag does
 // for every pixel, written here in C++).

@@ -114,7 +114,7 @@ class ShowdownLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {"10", "10_showdown", "The showdown: every technique, time against error", kSummary, 5, kHelp, true};
+    return {"10", "10_showdown", "The showdown: every technique, time against error", kSummary, 5, kHelp, true, 90, {"04", "05", "07", "09"}};
   }
 
   void init() override {

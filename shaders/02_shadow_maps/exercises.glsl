@@ -2,7 +2,7 @@
 // compare=manual, scene.frag calls these functions for every pixel:
 //   lesson_02_shadow_maps --set impl=student --set compare=manual
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
-// Grade: ctest --test-dir build/default -L ex02 (the GLSL cases run on the GPU, headless, and the
+// Grade: make grade LESSON=02 (it builds what changed first; the GLSL cases run on the GPU, headless, and the
 // lesson renders with your shader against the reference). Each stub compiles and returns a
 // neutral value; delete its SHADOWLAB_STUB line when you write it.
 

@@ -3,7 +3,7 @@
 // every 2D map lookup with this function:
 //   lesson_03_shadow_quality --set impl=student --set filter=pcf_nxn --set pcf.size=5
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
-// Grade: ctest --test-dir build/default -L ex03 (the GLSL cases run on the GPU, headless, and the
+// Grade: make grade LESSON=03 (it builds what changed first; the GLSL cases run on the GPU, headless, and the
 // lesson renders with your shader against the reference). The stub compiles and returns a neutral
 // value; delete its SHADOWLAB_STUB line when you write it.
 //

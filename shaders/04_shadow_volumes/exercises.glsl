@@ -4,7 +4,7 @@
 // quads and the far caps of z-fail:
 //   lesson_04_shadow_volumes --set impl=student --preset silhouettes_gpu
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
-// Grade: ctest --test-dir build/default -L ex04 (the GLSL cases run on the GPU, headless, and the
+// Grade: make grade LESSON=04 (it builds what changed first; the GLSL cases run on the GPU, headless, and the
 // lesson renders with your shader against the reference). The stub compiles and returns the point
 // itself: the volumes have no length and nothing is shadowed. Delete its SHADOWLAB_STUB line when
 // you write it.

@@ -3,7 +3,7 @@
 // the blockers of every pixel with this function:
 //   lesson_05_soft_shadows --set impl=student --preset contact_hardening
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
-// Grade: ctest --test-dir build/default -L ex05 (the GLSL cases run on the GPU, headless, and the
+// Grade: make grade LESSON=05 (it builds what changed first; the GLSL cases run on the GPU, headless, and the
 // lesson renders with your shader against the reference). The stub compiles and returns a neutral
 // value; delete its SHADOWLAB_STUB line when you write it.
 //

@@ -2,7 +2,7 @@
 // sampling=rip_map, scene.frag filters every pixel with these functions:
 //   lesson_06_texture_filtering --set impl=student --preset rip_vs_mip
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
-// Grade: ctest --test-dir build/default -L ex06 (the GLSL cases run on the GPU, headless, and the
+// Grade: make grade LESSON=06 (it builds what changed first; the GLSL cases run on the GPU, headless, and the
 // lesson renders with your shader against the reference). Each stub compiles and returns a
 // neutral value; delete its SHADOWLAB_STUB line when you write it.
 //

@@ -3,7 +3,7 @@
 // every shadow-map tap of every pixel with this function:
 //   lesson_07_hybrid_maps --set impl=student
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
-// Grade: ctest --test-dir build/default -L ex07 (the GLSL cases run on the GPU, headless, and the
+// Grade: make grade LESSON=07 (it builds what changed first; the GLSL cases run on the GPU, headless, and the
 // lesson renders with your shader against the reference). The stub compiles and returns depth 1.0
 // (the far plane) at the root: every pixel is lit, no shadows. Delete its SHADOWLAB_STUB line when
 // you write it.

@@ -3,7 +3,7 @@
 // shadow_psm.frag) finds every pixel's place in its map with this function:
 //   lesson_08_psm --set impl=student --preset behind
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
-// Grade: ctest --test-dir build/default -L ex08 (the GLSL cases run on the GPU, headless, and the
+// Grade: make grade LESSON=08 (it builds what changed first; the GLSL cases run on the GPU, headless, and the
 // lesson renders with your shader against the reference). The stub compiles and returns a neutral
 // value; delete its SHADOWLAB_STUB line when you write it.
 

@@ -3,7 +3,7 @@
 // technique (shaders/08_psm/shadow_psm.frag) picks every pixel's map with this function:
 //   lesson_09_psm_fixes --set impl=student --preset faces_always
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
-// Grade: ctest --test-dir build/default -L ex09 (the GLSL cases run on the GPU, headless, and the
+// Grade: make grade LESSON=09 (it builds what changed first; the GLSL cases run on the GPU, headless, and the
 // lesson renders with your shader against the reference). The stub compiles and returns a neutral
 // value; delete its SHADOWLAB_STUB line when you write it.
 

@@ -3,7 +3,7 @@
 // cascade, and the blend band's mix, with this function:
 //   lesson_10_showdown --set impl=student --set csm.colours=on
 // (the file reloads by itself when you save it; a compile error shows in the header, file:line).
-// Grade: ctest --test-dir build/default -L ex10 (the GLSL cases run on the GPU, headless, and the
+// Grade: make grade LESSON=10 (it builds what changed first; the GLSL cases run on the GPU, headless, and the
 // lesson renders with your shader against the reference). The stub compiles and returns a neutral
 // value; delete its SHADOWLAB_STUB line when you write it.
 

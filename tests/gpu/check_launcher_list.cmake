@@ -1,5 +1,7 @@
-# `shadowlab --list` tells a lecturer, for every lesson, where to start: its presets, its README
-# (which must exist) and its slide deck, and the state of its exercises.
+# `shadowlab --list` tells a lecturer, for every lesson, where to start: its time in class and
+# prerequisites, its presets, its README (which must exist) and its slide deck, and the state of
+# its exercises (on the untouched stubs every exercise counted is a stub: a summary that counted
+# the other lines of `--exercises`, where to write each one and how to grade, would not add up).
 # Run: cmake -DLAUNCHER=... -DROOT=<source dir> -DLESSONS="01_lighting;02_shadow_maps;..." -P this
 execute_process(COMMAND ${LAUNCHER} --list RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
@@ -21,6 +23,17 @@ foreach(name IN LISTS LESSONS)
     message(FATAL_ERROR "${name}: no exercise status line:\n${rest}")
   endif()
   string(SUBSTRING "${rest}" 0 ${end} block)
+  string(SUBSTRING "${rest}" ${end} 200 status)
+  if(NOT block MATCHES "^\\(${name}, difficulty [1-5], [1-9][0-9]* minutes in class, (no prerequisites|after [0-9][0-9](, [0-9][0-9])*)\\)\n")
+    message(FATAL_ERROR "${name}: no time in class or prerequisites:\n${block}")
+  endif()
+  if(status MATCHES "^\n    exercises: ([0-9]+) of ([0-9]+) pass, ([0-9]+) still stubs\n")
+    if(NOT CMAKE_MATCH_1 EQUAL 0 OR NOT CMAKE_MATCH_2 EQUAL CMAKE_MATCH_3)
+      message(FATAL_ERROR "${name}: the stubs' summary does not add up:${status}")
+    endif()
+  elseif(NOT status MATCHES "^\n    exercises: none in this lesson\n")
+    message(FATAL_ERROR "${name}: the exercise status is not the untouched stubs':${status}")
+  endif()
   if(NOT block MATCHES "\n    presets: [a-z0-9_]+")
     message(FATAL_ERROR "${name}: no presets listed:\n${block}")
   endif()

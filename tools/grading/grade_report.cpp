@@ -7,6 +7,7 @@
 // seeds), DIR/junit.xml and DIR/results.json, the file Gradescope's autograder reads. Prints one line per exercise.
 // Exit 0 when written (whatever the score), 1 on an unreadable or malformed results file, 2 on
 // bad usage.
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -28,6 +29,23 @@ void failAll(RunResult& run, const std::string& logPath) {
     c.stub = false;
     c.output = "your exercises.cpp does not compile, so no case could run:\n" + text;
   }
+}
+
+// Under a failing exercise that is not a stub: its first failing public case, the name and the
+// first lines of why (inputs, expected, actual), so `make grade` alone shows what to fix.
+void printFirstFailure(const std::vector<RunResult>& runs, const std::string& id) {
+  for (const RunResult& run : runs)
+    for (const CaseResult& c : run.cases) {
+      if (c.exercise != id || c.passed || c.hidden) continue;
+      std::cout << "    first failing case: " << c.name << "\n";
+      std::size_t at = 0;
+      for (int n = 0; n < 8 && at < c.output.size(); ++n) {
+        const std::size_t end = std::min(c.output.find('\n', at), c.output.size());
+        std::cout << "    | " << c.output.substr(at, end - at) << "\n";
+        at = end + 1;
+      }
+      return;
+    }
 }
 }  // namespace
 
@@ -73,10 +91,12 @@ int main(int argc, char** argv) {
   }
   if (!writeReports({"", out + "/score.json", out + "/junit.xml", out + "/results.json"}, runs, std::cerr)) return 1;
   const Grade g = grade(runs);
-  for (const ExerciseGrade& e : g.exercises)
+  for (const ExerciseGrade& e : g.exercises) {
     std::cout << "exercise " << e.id << ": " << e.points << " / " << e.maxPoints << " points, "
               << e.passed + e.hiddenPassed << " of " << e.cases() << " cases (" << e.hiddenPassed + e.hiddenFailed
               << " hidden)" << (e.stub ? ", still a stub" : "") << "\n";
+    if (!e.stub && e.failed > 0) printFirstFailure(runs, e.id);
+  }
   std::cout << "score " << g.points << " / " << g.maxPoints << "; " << out
             << "/{score.json, junit.xml, results.json}\n";
   return 0;

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <atomic>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -43,6 +44,8 @@ struct LessonEntry {
   std::string program;  // full path
   std::string number, name, title, summary;
   int difficulty = 1;
+  int minutes = 0;            // time in class
+  std::string prerequisites;  // "02, 03", or "none"
   std::vector<std::string> presets;
   std::string readme, deck;  // lessons/NN_name/README.md; the deck NN_name.html (make slides)
   std::string exercises;     // `lesson --exercises`: one line per exercise, or why there is none
@@ -72,7 +75,9 @@ std::string summariseExercises(const std::string& report) {
   std::string line;
   while (std::getline(lines, line)) {
     const auto gap = line.find(' ');
-    if (line.empty() || gap == std::string::npos) continue;
+    // State lines start with the exercise's id; the lines under them say where to write it, the
+    // last ones how to grade.
+    if (line.empty() || !std::isdigit(static_cast<unsigned char>(line[0])) || gap == std::string::npos) continue;
     const std::string state = line.substr(line.find_first_not_of(' ', gap));
     ++total;
     if (state.rfind("passing", 0) == 0) ++passing;
@@ -119,6 +124,10 @@ std::vector<LessonEntry> discoverLessons(const fs::path& binDir) {
     e.title = j.at("title");
     e.summary = j.at("summary");
     e.difficulty = j.at("difficulty");
+    e.minutes = j.at("minutes");
+    for (const auto& p : j.at("prerequisites"))
+      e.prerequisites += (e.prerequisites.empty() ? "" : ", ") + p.get<std::string>();
+    if (e.prerequisites.empty()) e.prerequisites = "none";
     std::string line;
     std::istringstream presets(capture("'" + e.program + "' --list-presets", status));
     while (std::getline(presets, line))
@@ -158,7 +167,9 @@ std::string openDocument(const std::string& path, const std::string& missingHint
 int list(std::vector<LessonEntry>& lessons) {
   for (auto& l : lessons) {
     checkExercises(l);
-    std::cout << l.number << "  " << l.title << "  (" << l.name << ", difficulty " << l.difficulty << ")\n";
+    std::cout << l.number << "  " << l.title << "  (" << l.name << ", difficulty " << l.difficulty << ", "
+              << l.minutes << " minutes in class, "
+              << (l.prerequisites == "none" ? "no prerequisites" : "after " + l.prerequisites) << ")\n";
     std::string presets;
     for (const auto& p : l.presets) presets += (presets.empty() ? "" : ", ") + p;
     std::cout << "    presets: " << (presets.empty() ? "none" : presets) << "\n"
@@ -190,7 +201,8 @@ int tour(const std::vector<LessonEntry>& lessons, const fs::path& dir) {
           "<h1>shadowlab: every lesson at its defaults and presets</h1>\n";
   int failures = 0, images = 0;
   for (const auto& l : lessons) {
-    html << "<h2>" << htmlEscape(l.number + " " + l.title) << "</h2><p>" << htmlEscape(l.summary) << "</p>\n";
+    html << "<h2>" << htmlEscape(l.number + " " + l.title) << "</h2><p>" << htmlEscape(l.summary) << "</p><p>"
+         << l.minutes << " minutes in class; after lessons: " << htmlEscape(l.prerequisites) << "</p>\n";
     std::vector<std::string> shots = {""};
     shots.insert(shots.end(), l.presets.begin(), l.presets.end());
     for (const auto& preset : shots) {
@@ -230,6 +242,8 @@ void lessonRow(LessonEntry& l, std::string& status, bool exercisesKnown) {
   if (exercisesKnown && !l.exercises.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", l.exercises.c_str());
   ImGui::TableNextColumn();
   ImGui::Text("%s", std::string(std::size_t(l.difficulty), '*').c_str());
+  ImGui::TextDisabled("%d min", l.minutes);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%d minutes in class; after lessons: %s", l.minutes, l.prerequisites.c_str());
   ImGui::TableNextColumn();
   ImGui::PushID(l.name.c_str());
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10);

@@ -13,7 +13,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
-import { DeckError, escapeHtml, makeMarkdown, parseDeck } from './deck.mjs';
+import { DeckError, escapeHtml, expandGenerated, makeMarkdown, parseDeck, passesOf, usesGenerated } from './deck.mjs';
 import { webPackageDir } from './deps.mjs';
 import { FigureError, FigureRenderer, parseFigureUrl } from './figures.mjs';
 
@@ -144,6 +144,13 @@ async function buildDeck(file, opts, figures, usedFigures) {
   const deck = parseDeck(fs.readFileSync(file, 'utf8'), rel);
   if (deckName !== deck.meta.lesson && !opts.only.length) {
     throw new DeckError(rel, 1, `deck file name ${deckName}.md does not match its lesson "${deck.meta.lesson}"`);
+  }
+  if (usesGenerated(deck.slides)) {
+    const mainCpp = path.join(ROOT, 'lessons', deck.meta.lesson, 'main.cpp');
+    const passes = fs.existsSync(mainCpp) ? passesOf(fs.readFileSync(mainCpp, 'utf8')) : [];
+    let info = null;
+    try { info = (await figures.lesson(deck.meta.lesson)).info; } catch (e) { throw new DeckError(rel, 0, e.message); }
+    expandGenerated(deck.slides, { passes, info }, rel);
   }
   const md = makeMarkdown();
   const lexed = deck.slides.map((s) => ({ ...s, ...md.lex(s.markdown) }));

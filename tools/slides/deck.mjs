@@ -160,3 +160,53 @@ export function makeMarkdown() {
     },
   };
 }
+
+// Generated slide content, so a deck cannot drift from its lesson. A line that is exactly
+//   {{passes}}     becomes the numbered passes of the lesson's main.cpp (its `// ==== N. title` banners)
+//   {{exercises}}  becomes the table of the lesson's exercises (`lesson --info`: id, function, file)
+//                  and the command that grades them
+// Any other {{...}} line is an error naming it and the valid ones.
+export const GENERATED = ['passes', 'exercises'];
+const DIRECTIVE = /^\{\{\s*([a-z_]*)\s*\}\}[ \t]*$/;
+
+export function usesGenerated(slides) {
+  return slides.some((s) => s.markdown.split('\n').some((l) => DIRECTIVE.test(l)));
+}
+
+// The banners of a lesson's main.cpp: [{ label: '1b', title: '...' }], in source order.
+export function passesOf(mainSource) {
+  const out = [];
+  for (const line of mainSource.split('\n')) {
+    const m = /^\s*\/\/ ==== (\d+[a-z]?)\. (.*?)\s*=*\s*$/.exec(line);
+    if (m) out.push({ label: m[1], title: m[2] });
+  }
+  return out;
+}
+
+function passesMarkdown(passes) {
+  // A sub-pass ("1b") is a nested item under its pass.
+  return passes.map((p) => (/^\d+$/.test(p.label) ? `${p.label}. ${p.title}` : `    - **${p.label}.** ${p.title}`)).join('\n');
+}
+
+function exercisesMarkdown(info) {
+  const rows = info.exercises.map((e) => `| ${e.id} | \`${e.function}\` | \`${e.file}\` |`);
+  return ['| exercise | function | write it in |', '|---|---|---|', ...rows, '', `Grade: \`${info.grade}\``].join('\n');
+}
+
+export function expandGenerated(slides, { passes, info }, file) {
+  for (const s of slides) {
+    s.markdown = s.markdown.split('\n').map((line, k) => {
+      const m = DIRECTIVE.exec(line);
+      if (!m) return line;
+      if (m[1] === 'passes') {
+        if (!passes.length) throw new DeckError(file, s.line + k, '{{passes}}: the lesson\'s main.cpp has no "// ==== N. title" banners');
+        return passesMarkdown(passes);
+      }
+      if (m[1] === 'exercises') {
+        if (!info?.exercises?.length) throw new DeckError(file, s.line + k, '{{exercises}}: the lesson has no exercises (--info)');
+        return exercisesMarkdown(info);
+      }
+      throw new DeckError(file, s.line + k, `unknown generated block {{${m[1]}}}; valid: ${GENERATED.map((g) => `{{${g}}}`).join(', ')}`);
+    }).join('\n');
+  }
+}

@@ -110,7 +110,21 @@ const tall = deck('overflow', `# Too long\n\n${Array.from({ length: 30 }, (_, i)
 const tallCheck = node(CHECK, [tall.html, '--expect-slides', '1']);
 expect('check-page fails on a slide that overflows', tallCheck.code === 1 && /slide 1 overflows/.test(tallCheck.output), tallCheck.output);
 
-// 10. The builder's own output (HTML, CSS, vendor files) refers to nothing on the network.
+// 10. Generated blocks: {{passes}} and {{exercises}} come from the lesson (its main.cpp banners and
+// `--info`); an unknown block is an error naming it and the valid ones.
+const generated = deck('generated', `# Generated\n\n{{passes}}\n\n---\n## Exercises\n\n{{exercises}}\n`);
+const genHtml = fs.existsSync(generated.html) ? fs.readFileSync(generated.html, 'utf8') : '';
+const info = JSON.parse(spawnSync(binary, ['--info'], { encoding: 'utf8' }).stdout);
+expect('{{passes}} and {{exercises}} become the lesson\'s passes and exercises',
+  generated.build.code === 0 && /<ol>\s*<li>/.test(genHtml) && info.exercises.length > 0 &&
+  info.exercises.every((e) => genHtml.includes(`<code>${e.function}</code>`) && genHtml.includes(e.file)) &&
+  genHtml.includes(info.grade), generated.build.output);
+const unknown = deck('bad_generated', `# Bad\n\n{{presets}}\n`);
+expect('an unknown {{block}} fails the build, naming the valid ones',
+  unknown.build.code === 1 && /:7: unknown generated block \{\{presets\}\}; valid: \{\{passes\}\}, \{\{exercises\}\}/.test(unknown.build.output),
+  unknown.build.output);
+
+// 11. The builder's own output (HTML, CSS, vendor files) refers to nothing on the network.
 const offenders = [];
 (function scan(dir) {
   for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
