@@ -1,14 +1,14 @@
 # shadowlab: two commands do everything (each installs what is missing first).
 #   make run    the course: a launcher window, or without a display every lesson rendered into out/tour/
 #   make test   every test through ctest, headless
-# Also: make build, make slides, make grade LESSON=01, make bench, make soak, make fuzz, make stub-hashes, make format, make clean;
+# Also: make build, make slides, make docs, make grade LESSON=01, make bench, make soak, make fuzz, make stub-hashes, make format, make clean;
 # instructors: make handout (the student tree), make grade-submission SUBMISSION=DIR (public + hidden cases).
 PRESET ?= default
 BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: run test build deps configure web slides grade bench soak fuzz fuzz-build stub-hashes clean tour format handout grade-submission
+.PHONY: run test build deps configure web slides docs grade bench soak fuzz fuzz-build stub-hashes clean tour format handout grade-submission
 
 deps:
 	@bash tools/install-deps.sh
@@ -49,6 +49,11 @@ fuzz: fuzz-build
 
 slides: web build
 	@node tools/slides/build.mjs --bin $(BUILD)/bin --out out/slides
+
+# The generated parts of the READMEs (each lesson's hotkeys and presets, the top README's lessons
+# table) from the lessons themselves; `make test` checks them (docs.lesson_readmes).
+docs: build
+	@node tools/docs/lesson_docs.mjs --bin $(BUILD)/bin --write
 
 LESSON ?= 01
 # Grades lesson LESSON's exercises.cpp (and exercises.glsl, where the lesson has GLSL exercises):

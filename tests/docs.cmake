@@ -12,3 +12,24 @@ add_test(NAME docs.citations_detects COMMAND ${CMAKE_COMMAND} -DROOT=${CMAKE_SOU
          -P ${CMAKE_CURRENT_SOURCE_DIR}/support/check_citations.cmake)
 set_tests_properties(docs.citations_detects PROPERTIES LABELS unit
   PASS_REGULAR_EXPRESSION "citations_bad.txt:2: cites an internal name.*citations_bad.txt:3: cites an internal name.*citations_bad.txt:4: \\[Nobody1999\\] is not an entry")
+
+# Every lesson README in one order, true to its lesson (label docs; needs the lesson binaries and
+# node): tools/docs/lesson_docs.mjs --check. The sections, 3-5 outcomes, the time and prerequisites
+# the lesson states (--info), one item per main.cpp banner, the generated hotkeys and presets
+# blocks and the top README's lessons table as `make docs` writes them, "What to try" items each
+# from a preset that exists, every exercise and `make grade LESSON=NN`, no ctest grading command
+# and no dated diary.
+find_program(DOCS_NODE node)
+if(TARGET lesson_10_showdown AND DOCS_NODE)
+  add_test(NAME docs.lesson_readmes
+           COMMAND ${DOCS_NODE} ${CMAKE_SOURCE_DIR}/tools/docs/lesson_docs.mjs --bin $<TARGET_FILE_DIR:lesson_01_lighting>
+                   --root ${CMAKE_SOURCE_DIR} --check)
+  set_tests_properties(docs.lesson_readmes PROPERTIES LABELS docs)
+  # ...and the check can fail: a fixture that breaks each rule, each reported on its line.
+  add_test(NAME docs.lesson_readmes_detects
+           COMMAND ${DOCS_NODE} ${CMAKE_SOURCE_DIR}/tools/docs/lesson_docs.mjs --bin $<TARGET_FILE_DIR:lesson_01_lighting>
+                   --root ${CMAKE_SOURCE_DIR} --check --lesson 03_shadow_quality
+                   --readme ${CMAKE_CURRENT_SOURCE_DIR}/support/readme_bad.md)
+  set_tests_properties(docs.lesson_readmes_detects PROPERTIES LABELS docs
+    PASS_REGULAR_EXPRESSION "readme_bad.md:3: the ## sections are \\[What you will learn, Time and prerequisites, Theory, The passes, What to try, Exercises, Measured\\].*readme_bad.md:3: \"What you will learn\" has 2 outcomes.*readme_bad.md:7: time in class says 45 minutes; the lesson \\(--info\\) says 120.*readme_bad.md:7: prerequisites name lessons \\[05\\]; the lesson \\(--info\\) says \\[02\\].*readme_bad.md:14: the passes are numbered \\[1, 3\\]; main.cpp's banners are \\[1, 2, 3, 4\\].*no generated hotkeys block.*no generated presets block.*readme_bad.md:19: a \"What to try\" item starts with `--preset NAME`.*readme_bad.md:12: \"3 December 2026\": a dated figure.*readme_bad.md:20: --preset no_such_preset_xyz: no such preset.*readme_bad.md:24: grade with \"make grade LESSON=03\".*readme_bad.md:23: exercise 03.6 \\(pcfKernel\\) is not in \"Exercises\".*readme_bad.md:23: \"Exercises\" does not give the command that grades them: make grade LESSON=03")
+endif()

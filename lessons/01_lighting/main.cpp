@@ -6,8 +6,8 @@
 // attenuation, texture modulate, light gizmos. V_i is fixed at 1 here: every pixel that faces a
 // light is lit, which is exactly what the rest of the course sets out to correct.
 //
-// Controls: left drag orbit, right drag pan, wheel zoom; V cycles the view, B toggles Blinn,
-// T textures, G gizmos, A animates the point light; F1 help.
+// Controls: left drag orbit, right drag pan, wheel zoom; each hotkey is declared with its parameter
+// below (F1, --list-hotkeys and the README's Controls list them); F1 help.
 // Exercises (exercises.hpp): the lighting term, the NDC-to-texture matrix, attenuation, the spot
 // cone. `--set impl=student` shades every vertex on the CPU with your functions.
 #include <glm/gtc/matrix_inverse.hpp>

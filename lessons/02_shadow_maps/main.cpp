@@ -9,9 +9,8 @@
 // the shader, glPolygonOffset(factor, units) as sliders, and alpha-tested casters (leaf cards, a
 // fence) whose holes must be discarded in the depth pass too.
 //
-// Controls: left drag orbit, right drag pan, wheel zoom; V cycles the view, C the comparison,
-// F the depth format, T the depth pass's alpha test, I the map inset, A animates the light, M the
-// ground-truth overlays (error, aliasing), O the god view with the light's frustum; F1 help.
+// Controls: left drag orbit, right drag pan, wheel zoom; each hotkey is declared with its parameter
+// below (F1, --list-hotkeys and the README's Controls list them); F1 help.
 // Exercises (exercises.hpp): the texture matrix, the depth comparison, a CPU shadow-map lookup.
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -111,7 +110,9 @@ class ShadowMapLesson : public Lesson {
     declareLight(r, 0, p_.light);  // light0.*: position, direction, spot_outer (the frustum's fov is twice it)
   }
 
-  LessonInfo info() const override { return {"02", "02_shadow_maps", "Shadow maps", kSummary, 2, kHelp, true, 90, {"01"}}; }
+  LessonInfo info() const override {
+    return {"02", "02_shadow_maps", "Shadow maps", kSummary, 2, kHelp, true, 90, {"01"}};
+  }
 
   void init() override {
     casters_.build();

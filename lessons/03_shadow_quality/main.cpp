@@ -13,9 +13,8 @@
 //   against   technique=volumes: lesson 04's stencil shadow volumes on the same scene (the A/B
 //             split shows one on each side, each with its ground-truth figures)
 //
-// Controls: left drag orbit, right drag pan, wheel zoom; P cycles the filter, B front-face culling,
-// N normal offset, R receiver plane, S snapping, K caster culling, F the fit, D camera drift, 1 2 3
-// the lights, T the technique, V the view, M the ground-truth overlays, O the god view; F1 help.
+// Controls: left drag orbit, right drag pan, wheel zoom; each hotkey is declared with its parameter
+// below (F1, --list-hotkeys and the README's Controls list them); F1 help.
 // Exercises (exercises.hpp): slope-scaled bias, PCF weights, cube face selection, the caster
 // culling test, the orthographic fit; in GLSL (shaders/03_shadow_quality/exercises.glsl) the
 // N x N PCF kernel.

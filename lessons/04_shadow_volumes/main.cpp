@@ -14,9 +14,8 @@
 // (triangles_adjacency). An infinite far plane (or GL_DEPTH_CLAMP) keeps the far caps unclipped.
 // Open meshes are found when the adjacency is built and skipped or drawn z-pass only, on screen.
 //
-// Controls: orbit/pan/zoom with the mouse; V cycles the view (lit, volumes, wireframe, stencil
-// heatmap, silhouettes), Z the method (auto, z-pass, z-fail), S CPU/GPU silhouettes, T two-sided
-// stencil, A animates the point light, M the ground-truth error overlay; F1 help.
+// Controls: left drag orbit, right drag pan, wheel zoom; each hotkey is declared with its parameter
+// below (F1, --list-hotkeys and the README's Controls list them); F1 help.
 // Exercises (exercises.hpp): silhouettes, the infinite projection, the stencil ops, the near-plane
 // test; in GLSL (shaders/04_shadow_volumes/exercises.glsl) the extrusion to infinity.
 // `--set impl=student` runs YOUR versions in the lesson.
@@ -88,7 +87,9 @@ class ShadowVolumeLesson : public Lesson {
     declareLights(r, p_.lights);
   }
 
-  LessonInfo info() const override { return {"04", "04_shadow_volumes", "Shadow volumes", kSummary, 3, kHelp, true, 90, {"02"}}; }
+  LessonInfo info() const override {
+    return {"04", "04_shadow_volumes", "Shadow volumes", kSummary, 3, kHelp, true, 90, {"02"}};
+  }
 
   void init() override {
     applyImpl();  // a broken exercises.glsl stops a headless run at once

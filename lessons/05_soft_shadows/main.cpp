@@ -13,9 +13,8 @@
 // and the theory drawn live (soft_theory.cpp): the predicted inner and outer penumbra edges
 // r = d / (n.L) * R / D of a caster edge the lecturer picks (E), A_frac against (1 + a/R) / 2.
 //
-// Controls: left drag orbit, right drag pan, wheel zoom; T cycles the technique, V the view,
-// E the caster edge, G its predicted penumbra, A the A_frac plot, L Parker's profile (exact or
-// linear; haines.profile likewise), 1 2 the lights, M the ground-truth overlays, O the god view; F1 help.
+// Controls: left drag orbit, right drag pan, wheel zoom; each hotkey is declared with its parameter
+// below (F1, --list-hotkeys and the README's Controls list them); F1 help.
 // Exercises (exercises.hpp): the half-width, A_frac and its line, the PCSS radius, tap
 // rotation, the light mesh's trilinear average.
 #include <imgui.h>
@@ -95,7 +94,9 @@ class SoftShadowsLesson : public tech::ShadowLesson {
     declareLights(r, p_.lights);
   }
 
-  LessonInfo info() const override { return {"05", "05_soft_shadows", "Soft shadows", kSummary, 4, kHelp, true, 120, {"03"}}; }
+  LessonInfo info() const override {
+    return {"05", "05_soft_shadows", "Soft shadows", kSummary, 4, kHelp, true, 120, {"03"}};
+  }
 
   void init() override {
     techniques_.init();

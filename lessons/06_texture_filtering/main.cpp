@@ -7,8 +7,8 @@
 // headless): the footprint, lambda and the anisotropic probes, from the CPU and from the shader.
 // A CPU reference sampler (algorithms/texture_sampling) renders the same footprints for a difference view.
 //
-// Controls: left drag orbit, right drag pan, wheel zoom; F filter preset cycle (filter.mip), M mag,
-// V view, N normal map, L light animation, P camera path; F1 help.
+// Controls: left drag orbit, right drag pan, wheel zoom; each hotkey is declared with its parameter
+// below (F1, --list-hotkeys and the README's Controls list them); F1 help.
 // Exercises (exercises.hpp): mip count and memory, LOD, bilinear, trilinear, anisotropic probes,
 // box downsample. `--set impl=student --set view=cpu_reference` samples with your code.
 #include <algorithm>
@@ -145,7 +145,9 @@ class TextureFilteringLesson : public Lesson {
     r.add("diff_gain", &p_.diffGain, 1.0f, 64.0f, "difference view: |GPU - CPU| times this");
   }
 
-  LessonInfo info() const override { return {"06", "06_texture_filtering", "Texture filtering", kSummary, 2, kHelp, false, 90, {"01"}}; }
+  LessonInfo info() const override {
+    return {"06", "06_texture_filtering", "Texture filtering", kSummary, 2, kHelp, false, 90, {"01"}};
+  }
 
   void init() override {
     program_.build();

@@ -13,8 +13,8 @@
 //   views      the map coloured by level over the light's view, the merge mask on the scene, the
 //              steps each lookup took, and the memory against the full map in the header
 //
-// Controls: left drag orbit, right drag pan, wheel zoom; L levels, C criterion, T technique,
-// P filter, G GPU or CPU build, V the view, 1 2 the lights, M ground truth, O god view; F1 help.
+// Controls: left drag orbit, right drag pan, wheel zoom; each hotkey is declared with its parameter
+// below (F1, --list-hotkeys and the README's Controls list them); F1 help.
 // Exercises (exercises.hpp): the merge criterion, one level of the sweep, the index descent,
 // linear depth.
 #include <cstdio>

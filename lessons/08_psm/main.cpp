@@ -13,10 +13,10 @@
 // the light where it lands, its light camera and the virtual camera's slide. Against it, lesson
 // 03's uniform map at the same texels (technique=uniform, A/B preset versus_uniform).
 //
-// Controls: orbit/pan/zoom with the mouse; T the technique, V the view, P the post-projective view,
-// O the god view, M ground truth, Y turns the camera (turn.speed); F1 help. Exercises (exercises.hpp):
-// the post-projective light, the virtual camera's slide; in GLSL (shaders/08_psm/exercises.glsl)
-// the lookup in the map; `--set impl=student` runs yours.
+// Controls: left drag orbit, right drag pan, wheel zoom; each hotkey is declared with its parameter
+// below (F1, --list-hotkeys and the README's Controls list them); F1 help.
+// Exercises (exercises.hpp): the post-projective light, the virtual camera's slide; in GLSL
+// (shaders/08_psm/exercises.glsl) the lookup in the map; `--set impl=student` runs yours.
 #include <algorithm>
 
 #include "app/lesson.hpp"
@@ -113,7 +113,9 @@ class OriginalPsmLesson : public tech::ShadowLesson {
     declareLights(r, p_.lights);
   }
 
-  LessonInfo info() const override { return {"08", "08_psm", "Perspective shadow maps", kSummary, 4, kHelp, true, 120, {"03"}}; }
+  LessonInfo info() const override {
+    return {"08", "08_psm", "Perspective shadow maps", kSummary, 4, kHelp, true, 120, {"03"}};
+  }
 
   void init() override {
     psm_.init();

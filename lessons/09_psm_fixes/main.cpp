@@ -17,9 +17,9 @@
 // Views: the post-projective view (P: inset, full) with the light, its cone, key points and maps;
 // the god view (O) with the receiver volumes, key points and light frusta; view=maps.
 //
-// Controls: orbit/pan/zoom with the mouse; I fix 1, C fix 2, F cycles fix 3, B the bias, T the
-// technique, V the view, P the post-projective view, O the god view, M ground truth, 1 2 the
-// lights; F1 help. Exercises (exercises.hpp): the inverse projection, the smallest cone, the face
+// Controls: left drag orbit, right drag pan, wheel zoom; each hotkey is declared with its parameter
+// below (F1, --list-hotkeys and the README's Controls list them); F1 help.
+// Exercises (exercises.hpp): the inverse projection, the smallest cone, the face
 // test, the texel-size bias, LiSPSM's n_opt; in GLSL (shaders/09_psm_fixes/exercises.glsl) the
 // face map a point is looked up in; `--set impl=student` runs yours in the lesson.
 #include <numbers>

@@ -14,9 +14,8 @@
 // tools/showdown_bench.sh measures them all over camera paths and light directions: time against
 // error per scene, the Pareto front, and the "which technique when" summary (README).
 //
-// Controls: left drag orbit, right drag pan, wheel zoom; T cycles the technique, V the view (lit,
-// visibility, maps, four-up), C the cascade colours, U equal texels, X the A/B split, O the god
-// view, P the post-projective view, M the ground-truth overlays, 1 2 the lights; F1 help.
+// Controls: left drag orbit, right drag pan, wheel zoom; each hotkey is declared with its parameter
+// below (F1, --list-hotkeys and the README's Controls list them); F1 help.
 // Exercises (exercises.hpp): the practical split scheme, texel snapping, the cascade for a depth
 // with its blend band; in GLSL (shaders/10_showdown/exercises.glsl) the same choice in the shader;
 // `--set impl=student` runs your split scheme, snapping and shader choice in technique=csm.
@@ -114,7 +113,9 @@ class ShowdownLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {"10", "10_showdown", "The showdown: every technique, time against error", kSummary, 5, kHelp, true, 90, {"04", "05", "07", "09"}};
+    return {
+        "10", "10_showdown",           "The showdown: every technique, time against error", kSummary, 5, kHelp, true,
+        90,   {"04", "05", "07", "09"}};
   }
 
   void init() override {

@@ -1,0 +1,236 @@
+#!/usr/bin/env node
+// The lesson READMEs and the top README's lessons table, kept true to the lessons.
+//
+//   node tools/docs/lesson_docs.mjs --bin build/default/bin --write   fill the generated blocks
+//   node tools/docs/lesson_docs.mjs --bin build/default/bin --check   check them and the structure
+//        [--root DIR] [--lesson NN_name --readme FILE]   (one README, e.g. a test fixture)
+//
+// Generated blocks (between `<!-- NAME: ... -->` and `<!-- /NAME -->`), from the lesson itself:
+//   hotkeys  the lesson's own keys (`lesson --list-hotkeys`), in each lesson README's Controls
+//   presets  every preset and the comment above it in presets.txt, in Controls
+//   lessons  the top README's table: number, title, summary, time in class, prerequisites (`--info`)
+// The structure every lesson README keeps (docs/teaching.md says why), checked with --check:
+//   the `##` sections in this order: What you will learn (3-5 bullets), Time and prerequisites
+//   (`**Time in class:** N minutes` and `**Prerequisites:**` naming exactly the lessons --info
+//   names), Theory, The passes (one item per `// ==== N. title` banner of main.cpp, in order),
+//   Controls, What to try (each bullet starts with an existing `--preset NAME`), Exercises (every
+//   exercise's id and `make grade LESSON=NN`), Measured, and optionally References; every
+//   `--preset NAME` anywhere names a preset the lesson has; no ctest grading command (ctest does
+//   not rebuild) and no dated diary (a month and a year: the history lives in git).
+// Exit 0 when all is well (or written), 1 with one `file:line: problem` per finding, 2 on bad usage.
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const HERE = path.dirname(fileURLToPath(import.meta.url));
+
+export const SECTIONS = ['What you will learn', 'Time and prerequisites', 'Theory', 'The passes', 'Controls',
+  'What to try', 'Exercises', 'Measured'];
+const OPTIONAL_LAST = 'References';
+const MONTHS = 'January|February|March|April|May|June|July|August|September|October|November|December';
+
+function usage(message) {
+  console.error(`lesson_docs: ${message}\nusage: lesson_docs.mjs --bin DIR (--write | --check) [--root DIR] [--lesson NN_name --readme FILE]`);
+  process.exit(2);
+}
+
+function parseArgs(argv) {
+  const o = { root: path.resolve(HERE, '../..'), bin: null, mode: null, lesson: null, readme: null };
+  for (let i = 0; i < argv.length; i++) {
+    const a = argv[i];
+    const value = () => (argv[i + 1] === undefined ? usage(`${a} needs a value`) : argv[++i]);
+    if (a === '--bin') o.bin = path.resolve(value());
+    else if (a === '--root') o.root = path.resolve(value());
+    else if (a === '--lesson') o.lesson = value();
+    else if (a === '--readme') o.readme = path.resolve(value());
+    else if (a === '--write' || a === '--check') o.mode = a.slice(2);
+    else usage(`unknown argument '${a}'`);
+  }
+  if (!o.bin || !o.mode) usage('--bin and one of --write, --check are required');
+  if (!!o.lesson !== !!o.readme) usage('--lesson and --readme go together');
+  return o;
+}
+
+function run(binary, args) {
+  const r = spawnSync(binary, args, { encoding: 'utf8' });
+  if (r.status !== 0) throw new Error(`${binary} ${args.join(' ')} failed (exit ${r.status}): ${r.error?.message ?? r.stderr}`);
+  return r.stdout;
+}
+
+// What a lesson says about itself, and what its folder holds.
+function lessonFacts(root, bin, name) {
+  const binary = path.join(bin, `lesson_${name}`);
+  const info = JSON.parse(run(binary, ['--info']).trim().split('\n').pop());
+  const presets = run(binary, ['--list-presets']).split('\n').map((s) => s.trim()).filter(Boolean);
+  const hotkeys = run(binary, ['--list-hotkeys']).split('\n').filter((l) => l.trim() && !l.includes('(framework)'))
+    .map((l) => l.trim().split(/\s{2,}/));
+  const main = fs.readFileSync(path.join(root, 'lessons', name, 'main.cpp'), 'utf8');
+  const passes = [...main.matchAll(/^\s*\/\/ ==== (\d+[a-z]?)\. /gm)].map((m) => m[1]);
+  const comments = presetComments(fs.readFileSync(path.join(root, 'lessons', name, 'presets.txt'), 'utf8'));
+  return { name, info, presets, hotkeys, passes, comments };
+}
+
+// presets.txt: each [name] and the comment lines under it, joined.
+function presetComments(text) {
+  const out = new Map();
+  let current = null;
+  for (const line of text.split('\n')) {
+    const m = /^\[([^\]]+)\]/.exec(line);
+    if (m) { current = m[1]; out.set(current, ''); continue; }
+    if (current && line.startsWith('#')) out.set(current, `${out.get(current)} ${line.slice(1).trim()}`.trim());
+  }
+  return out;
+}
+
+const cell = (s) => s.replace(/\|/g, '\\|');
+
+function hotkeysBlock(f) {
+  const rows = f.hotkeys.map(([key, param, action]) => `| \`${key}\` | \`${param}\` | ${cell(action ?? '')} |`);
+  return ['| key | parameter | does |', '|---|---|---|', ...rows].join('\n');
+}
+
+function presetsBlock(f) {
+  const rows = f.presets.map((p) => `| \`${p}\` | ${cell(f.comments.get(p) || (p === 'default' ? "the lesson's defaults" : ''))} |`);
+  return ['| preset | shows |', '|---|---|', ...rows].join('\n');
+}
+
+function lessonsBlock(all) {
+  const rows = all.map(({ name, info }) => {
+    const after = info.prerequisites.length ? info.prerequisites.join(', ') : '-';
+    return `| ${info.number} | [${cell(info.title)}](lessons/${name}/README.md) | ${cell(info.summary)} | ${info.minutes} min | ${after} |`;
+  });
+  return ['| # | lesson | what it teaches | time in class | after |', '|---|---|---|---|---|', ...rows].join('\n');
+}
+
+// The text between <!-- NAME: ... --> and <!-- /NAME -->, and where it starts.
+function blockRange(text, name) {
+  const open = new RegExp(`<!-- ${name}: [^\\n]*-->\\n`).exec(text);
+  if (!open) return null;
+  const start = open.index + open[0].length;
+  const end = text.indexOf(`<!-- /${name} -->`, start);
+  return end < 0 ? null : { start, end };
+}
+
+function fillBlock(text, name, body) {
+  const r = blockRange(text, name);
+  return r ? text.slice(0, r.start) + body + '\n' + text.slice(r.end) : text;
+}
+
+function lineOf(text, index) { return text.slice(0, index).split('\n').length; }
+
+// The `##` sections of a README: [{ title, line, body }].
+function sections(text) {
+  const out = [];
+  const lines = text.split('\n');
+  let fence = false;
+  lines.forEach((l, i) => {
+    if (/^\s*(```|~~~)/.test(l)) fence = !fence;
+    const m = fence ? null : /^## (.*?)\s*$/.exec(l);
+    if (m) out.push({ title: m[1], line: i + 1, lines: [] });
+    else if (out.length) out[out.length - 1].lines.push(l);
+  });
+  for (const s of out) s.body = s.lines.join('\n');
+  return out;
+}
+
+export function checkReadme(file, text, f) {
+  const problems = [];
+  const at = (line, message) => problems.push(`${file}:${line}: ${message}`);
+  const secs = sections(text);
+  const titles = secs.map((s) => s.title);
+  const expected = titles[titles.length - 1] === OPTIONAL_LAST ? [...SECTIONS, OPTIONAL_LAST] : SECTIONS;
+  if (titles.join('|') !== expected.join('|')) {
+    at(secs[0]?.line ?? 1, `the ## sections are [${titles.join(', ')}]; a lesson README has, in this order: ${SECTIONS.join(', ')} (then optionally ${OPTIONAL_LAST})`);
+  }
+  const sec = (t) => secs.find((s) => s.title === t);
+
+  const learn = sec('What you will learn');
+  if (learn) {
+    const n = learn.lines.filter((l) => /^[-*] /.test(l)).length;
+    if (n < 3 || n > 5) at(learn.line, `"What you will learn" has ${n} outcomes; write 3 to 5 bullets`);
+  }
+  const time = sec('Time and prerequisites');
+  if (time) {
+    const m = /\*\*Time in class:\*\*\s*(\d+) minutes/.exec(time.body);
+    if (!m) at(time.line, 'no "**Time in class:** N minutes" line');
+    else if (Number(m[1]) !== f.info.minutes) at(time.line, `time in class says ${m[1]} minutes; the lesson (--info) says ${f.info.minutes}`);
+    const p = /\*\*Prerequisites:\*\*([^\n]*)/.exec(time.body);
+    if (!p) at(time.line, 'no "**Prerequisites:**" line');
+    else {
+      const named = [...new Set(p[1].match(/\b\d\d\b/g) ?? [])].sort();
+      const want = [...f.info.prerequisites].sort();
+      if (named.join(',') !== want.join(',')) {
+        at(time.line, `prerequisites name lessons [${named.join(', ')}]; the lesson (--info) says [${want.join(', ')}]`);
+      }
+      if (!want.length && !/\bnone\b/i.test(p[1])) at(time.line, 'no prerequisites: the line should say "none"');
+    }
+  }
+  const passes = sec('The passes');
+  if (passes) {
+    const labels = passes.lines.map((l) => /^(\d+)\. |^\s+- \*\*(\d+[a-z])\.\*\*/.exec(l)).filter(Boolean).map((m) => m[1] ?? m[2]);
+    if (labels.join(',') !== f.passes.join(',')) {
+      at(passes.line, `the passes are numbered [${labels.join(', ')}]; main.cpp's banners are [${f.passes.join(', ')}] (one item each, "N. " or "   - **Nb.**")`);
+    }
+  }
+  const controls = sec('Controls');
+  for (const [name, make] of [['hotkeys', hotkeysBlock], ['presets', presetsBlock]]) {
+    const r = blockRange(text, name);
+    if (!r) { at(controls?.line ?? 1, `no generated ${name} block (<!-- ${name}: ... --> ... <!-- /${name} -->)`); continue; }
+    if (text.slice(r.start, r.end) !== make(f) + '\n') at(lineOf(text, r.start), `the ${name} block is not what the lesson says now: run make docs`);
+  }
+  const tryIt = sec('What to try');
+  if (tryIt) {
+    const bullets = tryIt.lines.map((l, i) => ({ l, line: tryIt.line + 1 + i })).filter(({ l }) => /^[-*] /.test(l));
+    if (bullets.length < 3) at(tryIt.line, `"What to try" has ${bullets.length} items; write at least 3, each from a preset`);
+    for (const b of bullets) if (!/^[-*] `--preset [a-z0-9_]+`/.test(b.l)) at(b.line, 'a "What to try" item starts with `--preset NAME`');
+  }
+  text.split('\n').forEach((l, i) => {
+    for (const m of l.matchAll(/--preset[ =]([A-Za-z0-9_]+)/g)) {
+      if (m[1] !== 'NAME' && !f.presets.includes(m[1])) at(i + 1, `--preset ${m[1]}: no such preset; valid: ${f.presets.join(', ')}`);
+    }
+    if (/ctest\b[^\n]*-L ex\d\d/.test(l)) at(i + 1, `grade with "make grade LESSON=${f.info.number}" (it builds first; ctest does not)`);
+    const date = new RegExp(`\\b(\\d{1,2} )?(${MONTHS}) \\d{4}\\b`).exec(l);
+    if (date) at(i + 1, `"${date[0]}": a dated figure or diary; the README states current facts (history lives in git)`);
+  });
+  const ex = sec('Exercises');
+  if (ex) {
+    for (const e of f.info.exercises) if (!ex.body.includes(e.id)) at(ex.line, `exercise ${e.id} (${e.function}) is not in "Exercises"`);
+    if (f.info.exercises.length && !ex.body.includes(f.info.grade)) at(ex.line, `"Exercises" does not give the command that grades them: ${f.info.grade}`);
+  }
+  return problems;
+}
+
+function main() {
+  const o = parseArgs(process.argv.slice(2));
+  const names = o.lesson ? [o.lesson]
+    : fs.readdirSync(path.join(o.root, 'lessons')).filter((d) => /^\d\d_/.test(d)).sort();
+  let facts;
+  try { facts = names.map((n) => lessonFacts(o.root, o.bin, n)); } catch (e) { console.error(`lesson_docs: ${e.message}`); process.exit(1); }
+  const problems = [];
+  const files = facts.map((f) => ({ f, file: o.readme ?? path.join(o.root, 'lessons', f.name, 'README.md') }));
+  if (!o.lesson) files.push({ top: true, file: path.join(o.root, 'README.md') });
+  for (const { f, file, top } of files) {
+    const rel = path.relative(process.cwd(), file) || file;
+    const text = fs.readFileSync(file, 'utf8');
+    let want = text;
+    if (top) want = fillBlock(text, 'lessons', lessonsBlock(facts));
+    else for (const [name, make] of [['hotkeys', hotkeysBlock], ['presets', presetsBlock]]) want = fillBlock(want, name, make(f));
+    if (o.mode === 'write') {
+      if (want !== text) { fs.writeFileSync(file, want); console.log(`lesson_docs: wrote ${rel}`); }
+      continue;
+    }
+    if (top) {
+      const r = blockRange(text, 'lessons');
+      if (!r) problems.push(`${rel}:1: no generated lessons block (<!-- lessons: ... --> ... <!-- /lessons -->)`);
+      else if (want !== text) problems.push(`${rel}:${lineOf(text, r.start)}: the lessons table is not what the lessons say now: run make docs`);
+    } else {
+      problems.push(...checkReadme(rel, text, f));
+    }
+  }
+  for (const p of problems) console.log(p);
+  if (o.mode === 'check') console.log(problems.length ? `lesson_docs: ${problems.length} problem(s)` : `lesson_docs: ${files.length} README(s) in order`);
+  process.exit(problems.length ? 1 : 0);
+}
+
+main();
