@@ -87,4 +87,4 @@ target_link_libraries(shadowlab_bench PRIVATE shadowlab_measure nlohmann_json::n
 
 # Every lesson's frame time against its floor (tools/frame_bench; `make bench` runs it).
 add_executable(frame_bench ${CMAKE_SOURCE_DIR}/tools/frame_bench/main.cpp)
-target_link_libraries(frame_bench PRIVATE shadowlab_core)
+target_link_libraries(frame_bench PRIVATE shadowlab_core shadowlab_app)  # app: a headless context names the renderer
