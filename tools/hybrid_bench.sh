@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Lesson 07's measurements against the paper's claims (README "What we found"): hybrid maps against
+# Lesson 07's measurements against the paper's claims (its README: Theory, "The paper's claims, measured"): hybrid maps against
 # standard maps of the same source resolution and of equal memory, on the city, the forest and a
 # 1M-triangle showcase, at 1024^2, 2048^2 and 4096^2, along the committed camera path
 # bench/paths/walk.path. Usage:

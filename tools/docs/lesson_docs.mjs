@@ -9,6 +9,10 @@
 //   hotkeys  the lesson's own keys (`lesson --list-hotkeys`), in each lesson README's Controls
 //   presets  every preset and the comment above it in presets.txt, in Controls
 //   lessons  the top README's table: number, title, summary, time in class, prerequisites (`--info`)
+//   assignments  docs/teaching.md's table: each lesson's exercises (id, function, C++ or GLSL) and
+//            the command that grades them (`--info`)
+// docs/teaching.md's term plan names presets in table rows whose second cell is a lesson number:
+// each `--preset NAME` of such a row must be a preset of a lesson that row names.
 // The structure every lesson README keeps (docs/teaching.md says why), checked with --check:
 //   the `##` sections in this order: What you will learn (3-5 bullets), Time and prerequisites
 //   (`**Time in class:** N minutes` and `**Prerequisites:**` naming exactly the lessons --info
@@ -101,6 +105,32 @@ function lessonsBlock(all) {
     return `| ${info.number} | [${cell(info.title)}](lessons/${name}/README.md) | ${cell(info.summary)} | ${info.minutes} min | ${after} |`;
   });
   return ['| # | lesson | what it teaches | time in class | after |', '|---|---|---|---|---|', ...rows].join('\n');
+}
+
+function assignmentsBlock(all) {
+  const rows = all.map(({ info }) => {
+    const list = info.exercises.map((e) => `${e.id} \`${e.function}\`${e.glsl ? ' (GLSL)' : ''}`).join(', ');
+    return `| ${info.number} | ${cell(info.title)} | ${list || 'none'} | ${info.grade ? `\`${info.grade}\`` : ''} |`;
+  });
+  return ['| lesson | title | exercises | grade with |', '|---|---|---|---|', ...rows].join('\n');
+}
+
+// docs/teaching.md: every `--preset NAME` in a table row whose second cell names lessons must be a
+// preset of one of them.
+function checkTeachingPresets(file, text, facts) {
+  const problems = [];
+  text.split('\n').forEach((l, i) => {
+    const cells = l.split('|').map((c) => c.trim());
+    if (cells.length < 4 || !/^\d\d\b/.test(cells[2] ?? '')) return;
+    const lessons = facts.filter((f) => (cells[2].match(/\b\d\d\b/g) ?? []).includes(f.info.number));
+    if (!lessons.length) { problems.push(`${file}:${i + 1}: no lesson ${cells[2]}`); return; }
+    for (const m of l.matchAll(/--preset[ =]([A-Za-z0-9_]+)/g)) {
+      if (!lessons.some((f) => f.presets.includes(m[1]))) {
+        problems.push(`${file}:${i + 1}: --preset ${m[1]}: not a preset of lesson ${lessons.map((f) => f.info.number).join(' or ')}`);
+      }
+    }
+  });
+  return problems;
 }
 
 // The text between <!-- NAME: ... --> and <!-- /NAME -->, and where it starts.
@@ -209,21 +239,25 @@ function main() {
   try { facts = names.map((n) => lessonFacts(o.root, o.bin, n)); } catch (e) { console.error(`lesson_docs: ${e.message}`); process.exit(1); }
   const problems = [];
   const files = facts.map((f) => ({ f, file: o.readme ?? path.join(o.root, 'lessons', f.name, 'README.md') }));
-  if (!o.lesson) files.push({ top: true, file: path.join(o.root, 'README.md') });
+  if (!o.lesson) {
+    files.push({ top: 'lessons', file: path.join(o.root, 'README.md') });
+    files.push({ top: 'assignments', file: path.join(o.root, 'docs', 'teaching.md') });
+  }
   for (const { f, file, top } of files) {
     const rel = path.relative(process.cwd(), file) || file;
     const text = fs.readFileSync(file, 'utf8');
     let want = text;
-    if (top) want = fillBlock(text, 'lessons', lessonsBlock(facts));
+    if (top) want = fillBlock(text, top, (top === 'lessons' ? lessonsBlock : assignmentsBlock)(facts));
     else for (const [name, make] of [['hotkeys', hotkeysBlock], ['presets', presetsBlock]]) want = fillBlock(want, name, make(f));
     if (o.mode === 'write') {
       if (want !== text) { fs.writeFileSync(file, want); console.log(`lesson_docs: wrote ${rel}`); }
       continue;
     }
     if (top) {
-      const r = blockRange(text, 'lessons');
-      if (!r) problems.push(`${rel}:1: no generated lessons block (<!-- lessons: ... --> ... <!-- /lessons -->)`);
-      else if (want !== text) problems.push(`${rel}:${lineOf(text, r.start)}: the lessons table is not what the lessons say now: run make docs`);
+      const r = blockRange(text, top);
+      if (!r) problems.push(`${rel}:1: no generated ${top} block (<!-- ${top}: ... --> ... <!-- /${top} -->)`);
+      else if (want !== text) problems.push(`${rel}:${lineOf(text, r.start)}: the ${top} table is not what the lessons say now: run make docs`);
+      if (top === 'assignments') problems.push(...checkTeachingPresets(rel, text, facts));
     } else {
       problems.push(...checkReadme(rel, text, f));
     }
