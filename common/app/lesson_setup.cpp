@@ -75,9 +75,10 @@ std::string infoJson(const LessonInfo& info, const Exercises& exercises) {
   for (const std::string& p : info.prerequisites) prerequisites += (prerequisites.empty() ? "\"" : ",\"") + p + "\"";
   for (const Exercise& e : exercises.list()) {
     const ExerciseLocation at = exerciseLocation(info.name, e);
-    list += std::string(list.empty() ? "" : ",") + "{\"id\":\"" + e.id + "\",\"function\":\"" + jsonEscape(e.function()) +
-            "\",\"title\":\"" + jsonEscape(e.title) + "\",\"glsl\":" + (e.glsl ? "true" : "false") +
-            ",\"file\":\"" + at.file + "\",\"line\":" + std::to_string(at.line) + "}";
+    list += std::string(list.empty() ? "" : ",") + "{\"id\":\"" + e.id + "\",\"function\":\"" +
+            jsonEscape(e.function()) + "\",\"title\":\"" + jsonEscape(e.title) +
+            "\",\"glsl\":" + (e.glsl ? "true" : "false") + ",\"file\":\"" + at.file +
+            "\",\"line\":" + std::to_string(at.line) + "}";
   }
   return "{\"number\":\"" + info.number + "\",\"name\":\"" + info.name + "\",\"title\":\"" + jsonEscape(info.title) +
          "\",\"summary\":\"" + jsonEscape(info.summary) + "\",\"difficulty\":" + std::to_string(info.difficulty) +

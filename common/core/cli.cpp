@@ -39,7 +39,8 @@ constexpr Flag kFlags[] = {
     {"--list-params", nullptr, "list every parameter with its range, default and purpose"},
     {"--list-presets", nullptr, "list the presets, one per line"},
     {"--list-hotkeys", nullptr, "list every key: the framework's and the lesson's, with what each does"},
-    {"--info", nullptr, "print the lesson's number, title, summary, difficulty, time in class, prerequisites and exercises as JSON"},
+    {"--info", nullptr,
+     "print the lesson's number, title, summary, difficulty, time in class, prerequisites and exercises as JSON"},
     {"--exercises", nullptr, "run the lesson's public exercise cases and print each exercise's state (offscreen)"},
     {"--help", nullptr, "this text"},
 };

@@ -167,9 +167,9 @@ std::string openDocument(const std::string& path, const std::string& missingHint
 int list(std::vector<LessonEntry>& lessons) {
   for (auto& l : lessons) {
     checkExercises(l);
-    std::cout << l.number << "  " << l.title << "  (" << l.name << ", difficulty " << l.difficulty << ", "
-              << l.minutes << " minutes in class, "
-              << (l.prerequisites == "none" ? "no prerequisites" : "after " + l.prerequisites) << ")\n";
+    std::cout << l.number << "  " << l.title << "  (" << l.name << ", difficulty " << l.difficulty << ", " << l.minutes
+              << " minutes in class, " << (l.prerequisites == "none" ? "no prerequisites" : "after " + l.prerequisites)
+              << ")\n";
     std::string presets;
     for (const auto& p : l.presets) presets += (presets.empty() ? "" : ", ") + p;
     std::cout << "    presets: " << (presets.empty() ? "none" : presets) << "\n"
@@ -243,7 +243,8 @@ void lessonRow(LessonEntry& l, std::string& status, bool exercisesKnown) {
   ImGui::TableNextColumn();
   ImGui::Text("%s", std::string(std::size_t(l.difficulty), '*').c_str());
   ImGui::TextDisabled("%d min", l.minutes);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%d minutes in class; after lessons: %s", l.minutes, l.prerequisites.c_str());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("%d minutes in class; after lessons: %s", l.minutes, l.prerequisites.c_str());
   ImGui::TableNextColumn();
   ImGui::PushID(l.name.c_str());
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10);
