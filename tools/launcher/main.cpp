@@ -242,9 +242,8 @@ void lessonRow(LessonEntry& l, std::string& status, bool exercisesKnown) {
   if (exercisesKnown && !l.exercises.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", l.exercises.c_str());
   ImGui::TableNextColumn();
   ImGui::Text("%s", std::string(std::size_t(l.difficulty), '*').c_str());
-  ImGui::TextDisabled("%d min", l.minutes);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("%d minutes in class; after lessons: %s", l.minutes, l.prerequisites.c_str());
+  ImGui::TextDisabled("%d min", l.minutes);  // in class
+  if (l.prerequisites != "none") ImGui::TextDisabled("after %s", l.prerequisites.c_str());
   ImGui::TableNextColumn();
   ImGui::PushID(l.name.c_str());
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10);
@@ -305,7 +304,7 @@ int launcherWindow(std::vector<LessonEntry>& lessons, int frames, const std::str
       ImGui::TableSetupScrollFreeze(0, 1);
       ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed);
       ImGui::TableSetupColumn("lesson");
-      ImGui::TableSetupColumn("difficulty", ImGuiTableColumnFlags_WidthFixed);
+      ImGui::TableSetupColumn("level, time", ImGuiTableColumnFlags_WidthFixed);
       ImGui::TableSetupColumn("start from", ImGuiTableColumnFlags_WidthFixed);
       ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed);
       ImGui::TableHeadersRow();
