@@ -147,3 +147,14 @@ if(TARGET shadowlab)
            -DROOT=${CMAKE_SOURCE_DIR} "-DLESSONS=${launcher_lessons}" -P ${CMAKE_CURRENT_LIST_DIR}/gpu/check_launcher_list.cmake)
   set_tests_properties(gpu.launcher.list PROPERTIES LABELS gpu)
 endif()
+
+# The picture first: every lesson's UI, as it starts, leaves at least 75 % of the window to the 3D
+# view at 1280x720 and 1920x1080, UI scales 1 and 2 (check_ui_coverage.cmake).
+foreach(name 01_lighting 02_shadow_maps 03_shadow_quality 04_shadow_volumes 05_soft_shadows 06_texture_filtering
+             07_hybrid_maps 08_psm 09_psm_fixes 10_showdown)
+  if(TARGET lesson_${name})
+    add_test(NAME gpu.${name}.ui_coverage COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_${name}>
+             -DOUT_DIR=${shots} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_ui_coverage.cmake)
+    set_tests_properties(gpu.${name}.ui_coverage PROPERTIES LABELS gpu TIMEOUT 300)
+  endif()
+endforeach()

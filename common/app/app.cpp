@@ -149,6 +149,8 @@ class Runner {
     installInputCallbacks(context_->window(), &input_);
     uiVisible_ = !cl_.headless || cl_.showUi;
     input_.help = helpOpen_ = cl_.showHelp;
+    input_.stats = statsOpen_ = cl_.showStats;
+    input_.panel = panelOpen_ = cl_.showPanel;
     if (uiVisible_) ui_.init(*context_, cl_.uiScale > 0 ? cl_.uiScale : context_->contentScale());
     installInputCallbacks(context_->window(), &input_);  // chain ImGui's callbacks after ours
     return std::nullopt;
@@ -341,6 +343,8 @@ class Runner {
       input_.toggleFullscreen = false;
     }
     helpOpen_ = input_.help;
+    statsOpen_ = input_.stats;
+    panelOpen_ = input_.panel;
     if (!ui_.wantsKeyboard()) {
       for (int key : input_.pressed) {
         if (!isReloadKey(key)) {
@@ -454,6 +458,20 @@ class Runner {
     }
   }
 
+  // The header's few figures: the lesson's key figures present this frame, in the lesson's order,
+  // then the ground truth's (what M measured).
+  std::vector<Counter> keyFigures(const std::vector<Counter>& all) const {
+    static const char* const kMeasured[] = {"measure", "misclassified", "aliasing m", "soft error", "umbra"};
+    std::vector<Counter> key;
+    for (const std::string& name : info_.keyFigures)
+      for (const Counter& c : all)
+        if (c.name == name) key.push_back(c);
+    for (const char* name : kMeasured)
+      for (const Counter& c : all)
+        if (c.name == name) key.push_back(c);
+    return key;
+  }
+
   void drawUi(const FrameInfo& fi, double dt, bool draw) {
     glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
     glViewport(0, 0, width_, height_);
@@ -468,9 +486,21 @@ class Runner {
     ui_.legends(legends);                  // first: the header stops above them (and above the exercises panel)
     ui_.reserve(lesson_.insets, height_);  // the header and the panels stop above the insets
     if (!lesson_.exercises.empty()) rerunExercises_ = ui_.exercisesPanel(lesson_.exercises) || rerunExercises_;
-    ui_.header({&info_, gl::caps().summary(), frameMsAvg_, &lesson_.timers.passes(), &shown, errors, status_,
-                gl::caps().softwareRenderer, budget_.label()});
-    ui_.paramPanel(params_, presets_, status_);
+    const Ui::HeaderData header{&info_,
+                                gl::caps().summary(),
+                                frameMsAvg_,
+                                &lesson_.timers.passes(),
+                                &shown,
+                                keyFigures(shown),
+                                errors,
+                                status_,
+                                gl::caps().softwareRenderer,
+                                budget_.label()};
+    ui_.header(header);
+    ui_.stats(header, &statsOpen_);
+    input_.stats = statsOpen_;
+    ui_.paramPanel(params_, presets_, status_, &panelOpen_);
+    input_.panel = panelOpen_;
     const Measurement* measured = info_.measurable ? &measurement_ : nullptr;
     if (ab_.enabled()) ui_.splitLabels(ab_.divider(), ab_.labelA(measured), ab_.labelB());
     lesson_.gui();
@@ -574,7 +604,8 @@ class Runner {
   BenchLog bench_;
   measure::CameraLightPath recording_, replay_;
   double replayAt_ = -1;
-  bool uiVisible_ = false, helpOpen_ = false, bannerPrinted_ = false, rerunExercises_ = false;
+  bool uiVisible_ = false, helpOpen_ = false, statsOpen_ = false, panelOpen_ = false, bannerPrinted_ = false,
+       rerunExercises_ = false;
   OrbitCamera homeCamera_;  // the pose after the preset and --set: Home returns to it
   std::string initError_, status_, banner_;
   int width_ = 0, height_ = 0;

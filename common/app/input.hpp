@@ -21,6 +21,8 @@ struct Input {
   bool haveLast = false;
   float scroll = 0;
   bool help = false;
+  bool stats = false;  // F2: the renderer, the pass table and every counter, under the header
+  bool panel = false;  // F3: the parameter panel open (else a title bar: the picture first)
   bool screenshot = false;
   bool uiHidden = false;     // H: no UI at all, the picture alone (the projector)
   bool fly = false;          // Tab: WASD + mouse look instead of orbiting the target

@@ -33,6 +33,9 @@ struct LessonInfo {
   bool measurable = false;  // computes V_i: gets the ground-truth overlay and --measure (measureSource())
   int minutes = 0;          // time in class (the lesson README's "Time and prerequisites")
   std::vector<std::string> prerequisites;  // lesson numbers a student should have done first ({"02"})
+  // The counters the compact header shows (by name, those present this frame); every counter is in
+  // the stats (F2). The ground truth's figures (misclassified, aliasing m, soft error) come with M.
+  std::vector<std::string> keyFigures;
 };
 
 struct FrameInfo {

@@ -136,6 +136,65 @@ void Ui::render(bool draw) {
 bool Ui::wantsMouse() const { return initialised_ && ImGui::GetIO().WantCaptureMouse; }
 bool Ui::wantsKeyboard() const { return initialised_ && ImGui::GetIO().WantCaptureKeyboard; }
 
+namespace {
+// A collapsed window's width: its arrow, its title and the padding.
+float collapsedWidth(const char* title) {
+  return ImGui::CalcTextSize(title).x + ImGui::GetFrameHeight() + 3 * ImGui::GetStyle().WindowPadding.x;
+}
+
+constexpr ImGuiWindowFlags kFixedPanel = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                                         ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
+
+void errorLines(const std::vector<std::string>& errors, float wrap) {
+  for (const auto& e : errors) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::PushTextWrapPos(std::min(wrap, ImGui::GetFontSize() * 50.0f));
+    ImGui::TextUnformatted(e.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+  }
+}
+
+// The pass table: GPU and CPU ms per pass, or CPU ms alone on a software renderer.
+void passTable(const std::vector<gl::PassTiming>& passes, bool softwareRenderer) {
+  // A software renderer rasterises later, on its own threads: its timestamps bill next to nothing to
+  // the pass that caused the work, so there the passes are timed on the CPU, synchronously.
+  const int columns = softwareRenderer ? 2 : 3;
+  if (passes.empty() || !ImGui::BeginTable("passes", columns, ImGuiTableFlags_SizingFixedFit)) return;
+  // The figure columns as wide as their widest content from the first frame on (an auto-fit one
+  // takes a frame to widen, and a screenshot of frame 2 showed "skippe").
+  const float figures = std::max(ImGui::CalcTextSize("skipped").x, ImGui::CalcTextSize("0000.00").x);
+  ImGui::TableSetupColumn("pass");
+  if (!softwareRenderer) ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed, figures);
+  ImGui::TableSetupColumn("CPU ms", ImGuiTableColumnFlags_WidthFixed, figures);  // synchronous: what it cost
+  ImGui::TableHeadersRow();
+  for (const auto& p : passes) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    if (!p.drawn) {  // not drawn this frame (its map kept, its view off): its old mean is no cost now
+      ImGui::TextDisabled("%s", p.name.c_str());
+      for (int c = 1; c < columns; ++c) {
+        ImGui::TableNextColumn();
+        ImGui::TextDisabled("skipped");
+      }
+      continue;
+    }
+    ImGui::TextUnformatted(p.name.c_str());
+    if (!softwareRenderer) {
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f", p.gpuMs);
+    }
+    ImGui::TableNextColumn();
+    ImGui::Text("%.2f", p.cpuMs);
+  }
+  ImGui::EndTable();
+  if (softwareRenderer) ImGui::TextDisabled("software renderer: passes timed on the CPU (timestamps miss its work)");
+}
+}  // namespace
+
+// The header: a few lines, so that the picture stays the picture (at a UI scale of 2 on 1280x720
+// the old one with the pass table and every counter covered half the frame). The lesson names the
+// figures that matter (LessonInfo::keyFigures); the rest is one key away, in the stats.
 void Ui::header(const HeaderData& d) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(8 * scale_, 8 * scale_), ImGuiCond_Always);
@@ -147,64 +206,43 @@ void Ui::header(const HeaderData& d) {
                3 * ImGui::GetFrameHeight());
   ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(maxWidth, maxHeight));
   ImGui::SetNextWindowBgAlpha(1.0f);  // opaque: a see-through panel darkens the picture like a shadow
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
-  ImGui::Begin("shadowlab", nullptr, flags);
-  // Lines longer than the header's width wrap instead of being cut off (a long counter, the title,
-  // the renderer's name at a UI scale of 2).
+  ImGui::Begin("shadowlab", nullptr, kFixedPanel | ImGuiWindowFlags_NoTitleBar);  // its first line is the title
+  // Lines longer than the header's width wrap instead of being cut off (a long figure, the title
+  // at a UI scale of 2).
   const float wrap = maxWidth - ImGui::GetStyle().WindowPadding.x;
   ImGui::PushTextWrapPos(wrap);
   if (d.info) ImGui::Text("%s  %s", d.info->number.c_str(), d.info->title.c_str());
-  ImGui::TextDisabled("%s", d.gpu.c_str());
-  ImGui::Text("%.1f ms  (%.1f fps)", d.frameMs, d.frameMs > 0 ? 1000.0 / d.frameMs : 0.0);
-  if (!d.renderScale.empty()) ImGui::TextDisabled("%s", d.renderScale.c_str());
-  // A software renderer rasterises later, on its own threads: its timestamps bill next to nothing to
-  // the pass that caused the work, so there the passes are timed on the CPU, synchronously.
-  const int columns = d.softwareRenderer ? 2 : 3;
-  if (d.passes && !d.passes->empty() && ImGui::BeginTable("passes", columns, ImGuiTableFlags_SizingFixedFit)) {
-    // The figure columns as wide as their widest content from the first frame on (an auto-fit one
-    // takes a frame to widen, and a screenshot of frame 2 showed "skippe").
-    const float figures = std::max(ImGui::CalcTextSize("skipped").x, ImGui::CalcTextSize("0000.00").x);
-    ImGui::TableSetupColumn("pass");
-    if (!d.softwareRenderer) ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed, figures);
-    ImGui::TableSetupColumn("CPU ms", ImGuiTableColumnFlags_WidthFixed, figures);  // synchronous: what it cost
-    ImGui::TableHeadersRow();
-    for (const auto& p : *d.passes) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      if (!p.drawn) {  // not drawn this frame (its map reused, its view off): its old mean is no cost now
-        ImGui::TextDisabled("%s", p.name.c_str());
-        for (int c = 1; c < columns; ++c) {
-          ImGui::TableNextColumn();
-          ImGui::TextDisabled("skipped");
-        }
-        continue;
-      }
-      ImGui::TextUnformatted(p.name.c_str());
-      if (!d.softwareRenderer) {
-        ImGui::TableNextColumn();
-        ImGui::Text("%.2f", p.gpuMs);
-      }
-      ImGui::TableNextColumn();
-      ImGui::Text("%.2f", p.cpuMs);
-    }
-    ImGui::EndTable();
-    if (d.softwareRenderer)
-      ImGui::TextDisabled("software renderer: passes timed on the CPU (timestamps miss its work)");
-  }
-  if (d.counters)
-    for (const auto& c : *d.counters) ImGui::Text("%s: %s", c.name.c_str(), c.value.c_str());
-  for (const auto& e : d.errors) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-    ImGui::PushTextWrapPos(std::min(wrap, ImGui::GetFontSize() * 50.0f));
-    ImGui::TextUnformatted(e.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::PopStyleColor();
-  }
+  ImGui::TextDisabled("%.1f ms  %.1f fps%s%s", d.frameMs, d.frameMs > 0 ? 1000.0 / d.frameMs : 0.0,
+                      d.renderScale.empty() ? "" : "  ", d.renderScale.c_str());
+  for (const auto& c : d.key) ImGui::Text("%s: %s", c.name.c_str(), c.value.c_str());
+  errorLines(d.errors, wrap);
   if (!d.status.empty()) ImGui::TextDisabled("%s", d.status.c_str());
-  ImGui::TextDisabled("F1 help   H hide UI");
+  ImGui::TextDisabled("F1 help  F2 stats  F3 parameters  H hide");
   ImGui::PopTextWrapPos();
   recordWindow("shadowlab");
+  headerBottom_ = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
+  ImGui::End();
+}
+
+void Ui::stats(const HeaderData& d, bool* open) {
+  if (!*open) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  const float top = headerBottom_ + 4 * scale_;
+  ImGui::SetNextWindowPos(ImVec2(8 * scale_, top), ImGuiCond_Always);
+  const float maxWidth = vp->Size.x * kHeaderShare - 16 * scale_;
+  const float bottom = std::min(vp->Size.y, legendTop_) - 8 * scale_;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
+                                      ImVec2(maxWidth, std::max(bottom - top, 3 * ImGui::GetFrameHeight())));
+  ImGui::SetNextWindowBgAlpha(1.0f);
+  ImGui::Begin("Stats (F2)", open, kFixedPanel);
+  const float wrap = maxWidth - ImGui::GetStyle().WindowPadding.x;
+  ImGui::PushTextWrapPos(wrap);
+  ImGui::TextDisabled("%s", d.gpu.c_str());
+  if (d.passes) passTable(*d.passes, d.softwareRenderer);
+  if (d.counters)
+    for (const auto& c : *d.counters) ImGui::Text("%s: %s", c.name.c_str(), c.value.c_str());
+  ImGui::PopTextWrapPos();
+  recordWindow("Stats (F2)");
   ImGui::End();
 }
 
@@ -225,7 +263,8 @@ void Ui::help(const LessonInfo& info, const ParamRegistry& params, bool* open) {
   ImGui::Separator();
   ImGui::TextUnformatted(
       "Mouse: left drag orbit (fly: look), right drag pan, wheel zoom (fly: speed)\n"
-      "F1 help   F11 fullscreen   F12 screenshot   Ctrl +/- UI scale   Tab orbit <-> fly   Home camera reset   "
+      "F1 help   F2 stats   F3 parameters   F11 fullscreen   F12 screenshot   Ctrl +/- UI scale   Tab orbit <-> fly   "
+      "Home camera reset   "
       "Esc quit");
   for (const FrameworkKey& k : frameworkKeys()) ImGui::Text("%-3s %s", k.key, k.action);
   bool any = false;
@@ -312,13 +351,14 @@ const char* paramLabel(const std::string& name) {
 }
 }  // namespace
 
-bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status) {
+bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status, bool* open) {
   bool changed = false;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(vp->Size.x - 8 * scale_, 8 * scale_), ImGuiCond_Appearing, ImVec2(1, 0));
+  ImGui::SetNextWindowPos(ImVec2(vp->Size.x - 8 * scale_, 8 * scale_), ImGuiCond_Always, ImVec2(1, 0));
   // The right third at most, and never taller than the window: it scrolls (and collapses by its title).
   const float width = std::min(360 * scale_, vp->Size.x * (1.0f - kHeaderShare) - 8 * scale_);
-  ImGui::SetNextWindowSize(ImVec2(width, 0), ImGuiCond_Appearing);
+  // Collapsed, no wider than its title: a bar in the corner, not a strip across the picture.
+  ImGui::SetNextWindowSize(ImVec2(*open ? width : collapsedWidth("Parameters"), 0), ImGuiCond_Always);
   // Its bottom stays above the A/B split's labels (2.6 lines from the bottom).
   const float labels = ImGui::GetTextLineHeightWithSpacing() * 3.2f;
   float maxHeight = vp->Size.y - 16 * scale_ - labels;
@@ -327,7 +367,17 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
                                       ImVec2(vp->Size.x, std::max(maxHeight, 3 * ImGui::GetFrameHeight())));
   ImGui::SetNextWindowBgAlpha(1.0f);  // opaque, as the header
+  // A title bar until opened (F3, or a click on it): the picture first.
+  if (!panelSet_ || panelApplied_ != *open) ImGui::SetNextWindowCollapsed(!*open, ImGuiCond_Always);
+  panelSet_ = true;
   ImGui::Begin("Parameters", nullptr, ImGuiWindowFlags_NoSavedSettings);
+  const bool expanded = !ImGui::IsWindowCollapsed();
+  *open = panelApplied_ = expanded;
+  if (!expanded) {
+    recordWindow("Parameters");
+    ImGui::End();
+    return false;
+  }
   // Every widget as wide as the longest label leaves room for, but never under 45 % of the panel
   // (one long label would squeeze every value); a label still too long beside that narrows its own
   // widget, to a fifth of the panel at the least. ImGui's default (two thirds of the panel) cut
@@ -455,12 +505,14 @@ bool Ui::exercisesPanel(const Exercises& exercises) {
   ImGui::SetNextWindowPos(ImVec2(8 * scale_, bottom), ImGuiCond_Always, ImVec2(0, 1));
   // The header's share of the width at most (even collapsed it is as wide as its rows): the
   // parameter panel keeps the right.
-  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(maxWidth, vp->Size.y));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
+                                      ImVec2(exercisesOpen_ ? maxWidth : collapsedWidth("Exercises"), vp->Size.y));
   ImGui::SetNextWindowBgAlpha(0.8f);
   ImGui::SetNextWindowCollapsed(true, ImGuiCond_Appearing);  // a title bar until opened: the picture stays visible
   bool rerun = false;
   const bool open =
       ImGui::Begin("Exercises", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+  exercisesOpen_ = open;
   recordWindow("Exercises");
   legendTop_ = ImGui::GetWindowPos().y;  // the header stops above the bottom-left stack
   if (open) {

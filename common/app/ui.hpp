@@ -1,7 +1,8 @@
 #pragma once
-// The framework's ImGui layer: the header panel every lesson shares (title, GPU and GL version,
-// ms and fps, per-pass GPU ms, counters, shader errors), the F1 help overlay, the automatic
-// parameter panel with presets, and the UI scale for projectors.
+// The framework's ImGui layer, the picture first: a compact header every lesson shares (title, ms
+// and fps, the lesson's key figures, the ground truth's, shader errors), the F2 stats under it
+// (renderer, per-pass ms, every counter), the F1 help overlay, the automatic parameter panel with
+// presets (a title bar until F3 or a click opens it), and the UI scale for projectors.
 #include <string>
 #include <vector>
 
@@ -31,13 +32,16 @@ class Ui {
     std::string gpu;     // renderer and GL version
     double frameMs = 0;  // CPU frame time, averaged
     const std::vector<gl::PassTiming>* passes = nullptr;
-    const std::vector<Counter>* counters = nullptr;
-    std::vector<std::string> errors;  // shader and file errors, file:line first
-    std::string status;               // transient message ("saved screenshot to ...")
-    bool softwareRenderer = false;    // time passes on the CPU: its timestamps miss deferred work
-    std::string renderScale;          // the frame budget's "render scale 0.60 (software renderer)", or ""
+    const std::vector<Counter>* counters = nullptr;  // every figure: the stats
+    std::vector<Counter> key;                        // the header's few (LessonInfo::keyFigures, the ground truth's)
+    std::vector<std::string> errors;                 // shader and file errors, file:line first
+    std::string status;                              // transient message ("saved screenshot to ...")
+    bool softwareRenderer = false;                   // time passes on the CPU: its timestamps miss deferred work
+    std::string renderScale;  // the frame budget's "render scale 0.60 (software renderer)", or ""
   };
   void header(const HeaderData& data);
+  // F2: the renderer, the frame budget, the pass table and every counter, under the header.
+  void stats(const HeaderData& data, bool* open);
   void help(const LessonInfo& info, const ParamRegistry& params, bool* open);
   // A/B split: a label at the top of each half.
   void splitLabels(float divider, const std::string& a, const std::string& b);
@@ -47,8 +51,9 @@ class Ui {
   // The colour keys of this frame's heatmaps, bottom left, one under the other (before header():
   // the header then stops above them).
   void legends(const std::vector<Legend>& legends);
-  // Returns true when a parameter changed.
-  bool paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status);
+  // Returns true when a parameter changed. Collapsed to its title bar unless *open (F3, or a click
+  // on the title bar, which writes *open back).
+  bool paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status, bool* open);
   // The lesson's exercises with their states (bottom left); true when "run the cases again" was pressed.
   bool exercisesPanel(const Exercises& exercises);
   // A banner across the top of the frame: the stub banner while impl=student.
@@ -79,6 +84,10 @@ class Ui {
   float roomAbove(float left, float right, float height) const;
   std::vector<Rect> reserved_;  // this frame's insets, top-left origin
   float legendTop_ = 1e9f;      // the top of the bottom-left stack (legend, exercises) this frame
+  float headerBottom_ = 0;      // where the stats window starts
+  bool panelApplied_ = false;   // the open state last given to ImGui (a click may change it there)
+  bool panelSet_ = false;
+  bool exercisesOpen_ = false;  // last frame's: collapsed, the exercises' bar is as narrow as its title
 };
 
 // --ui-layout FILE: the viewport and the UI's rectangles as JSON. Throws std::runtime_error.

@@ -30,9 +30,11 @@ constexpr Flag kFlags[] = {
     {"--show-ui", nullptr, "headless: draw the UI into the screenshot"},
     {"--ui-layout", "FILE", "write the last frame's UI rectangles (header, panel, help, A/B labels) as JSON"},
     {"--show-help", nullptr, "draw the F1 help (and the UI) from the first frame, e.g. into a screenshot"},
+    {"--show-stats", nullptr, "draw the F2 stats (renderer, passes, every counter) and the UI from the first frame"},
+    {"--show-panel", nullptr, "draw the parameter panel open (F3) and the UI from the first frame"},
     {"--keys", "LIST",
      "press keys through the window's key handler, one after the other from the first frame: \"Tab,W*10,Home\" "
-     "(KEY*N: held N frames; A-Z, 0-9, Tab, Home, F1); tests and slides script the fly camera and hotkeys"},
+     "(KEY*N: held N frames; A-Z, 0-9, Tab, Home, F1, F2, F3); tests and slides script the fly camera and hotkeys"},
     {"--drop", "FILE[@N]", "drop FILE on the window before frame N (default 1), as dragging it there does"},
     {"--fullscreen", nullptr, "start fullscreen (F11 toggles)"},
     {"--strict-gl", nullptr, "fail (exit 3) on any OpenGL error (tests set it)"},
@@ -62,7 +64,7 @@ int toInt(const std::string& flag, const std::string& v, int lo, int hi) {
 
 bool keyNameValid(const std::string& k) {
   if (k.size() == 1) return (k[0] >= 'A' && k[0] <= 'Z') || (k[0] >= '0' && k[0] <= '9');
-  return k == "Tab" || k == "Home" || k == "F1";
+  return k == "Tab" || k == "Home" || k == "F1" || k == "F2" || k == "F3";
 }
 
 }  // namespace
@@ -76,7 +78,8 @@ std::vector<ScriptedKey> parseKeyScript(const std::string& list) {
     const std::size_t star = step.find('*');
     ScriptedKey k{step.substr(0, star)};
     if (!keyNameValid(k.name))
-      throw CliError("--keys: '" + step + "' is not a key (valid: A-Z, 0-9, Tab, Home, F1, each as KEY or KEY*N to " +
+      throw CliError("--keys: '" + step +
+                     "' is not a key (valid: A-Z, 0-9, Tab, Home, F1, F2, F3, each as KEY or KEY*N to " +
                      "hold it N frames, separated by commas, e.g. \"Tab,W*10,Home\")");
     if (star != std::string::npos) k.frames = toInt("--keys " + k.name, step.substr(star + 1), 1, kMaxKeyFrames);
     keys.push_back(k);
@@ -166,6 +169,8 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       cl.uiScale = s;
     } else if (flag == "--show-ui") cl.showUi = true;
     else if (flag == "--show-help") cl.showUi = cl.showHelp = true;
+    else if (flag == "--show-stats") cl.showUi = cl.showStats = true;
+    else if (flag == "--show-panel") cl.showUi = cl.showPanel = true;
     else if (flag == "--ui-layout") cl.uiLayout = value;
     else if (flag == "--keys") cl.keys = parseKeyScript(value);
     else if (flag == "--drop") parseDrop(value, cl);
@@ -194,7 +199,8 @@ std::string commandLineHelp(const std::string& program) {
     if (left.size() < 26) left.resize(26, ' ');
     s += left + " " + f.help + "\n";
   }
-  s += "Keys (windowed): F1 help, F11 fullscreen, F12 screenshot, Ctrl +/- UI scale, R reload shaders,\n"
+  s += "Keys (windowed): F1 help, F2 stats, F3 parameters, F11 fullscreen, F12 screenshot, Ctrl +/- UI scale, R reload "
+       "shaders,\n"
        "H hide the UI, Tab orbit <-> fly camera (WASD, Q/E, mouse look), Home camera reset; --list-hotkeys\n"
        "lists the lesson's own keys.\n";
   return s;

@@ -32,15 +32,17 @@ struct CommandLine {
   std::string screenshot;         // write the last frame here (PNG)
   std::vector<std::string> sets;  // "name=value", applied after the preset, in order
   std::string preset;
-  std::string model;      // a model file for scene=model (core/model_file)
-  std::string bench;      // per-pass GPU and CPU ms over the frames, CSV
-  std::string measure;    // ground-truth error figures of the last frame, JSON
-  std::string record;     // record the camera/light path to this file (windowed)
-  std::string replay;     // replay a recorded path over the frames
-  float uiScale = 0;      // 0: automatic (from the monitor's content scale)
-  bool showUi = false;    // headless: draw the UI into the screenshot too
-  bool showHelp = false;  // the F1 help open from the first frame (implies showUi)
-  std::string uiLayout;   // the last frame's UI rectangles, JSON (tests: nothing overlaps)
+  std::string model;       // a model file for scene=model (core/model_file)
+  std::string bench;       // per-pass GPU and CPU ms over the frames, CSV
+  std::string measure;     // ground-truth error figures of the last frame, JSON
+  std::string record;      // record the camera/light path to this file (windowed)
+  std::string replay;      // replay a recorded path over the frames
+  float uiScale = 0;       // 0: automatic (from the monitor's content scale)
+  bool showUi = false;     // headless: draw the UI into the screenshot too
+  bool showHelp = false;   // the F1 help open from the first frame (implies showUi)
+  bool showStats = false;  // the F2 stats open from the first frame (implies showUi)
+  bool showPanel = false;  // the parameter panel open (F3) from the first frame (implies showUi)
+  std::string uiLayout;    // the last frame's UI rectangles, JSON (tests: nothing overlaps)
   bool fullscreen = false;
   std::vector<ScriptedKey> keys;  // --keys "Tab,W*10,Home": pressed one after the other, from frame 0
   std::string drop;               // --drop FILE[@N]: dropped on the window before frame N (default 1)

@@ -92,7 +92,8 @@ bool applyHotkey(ParamRegistry& params, const std::string& key) {
 std::string describeHotkeys(const ParamRegistry& params) {
   std::ostringstream out;
   for (const FrameworkKey& k : kFrameworkKeys) out << k.key << "  (framework)  " << k.action << '\n';
-  out << "F1  (framework)  help;  F11 fullscreen;  F12 screenshot;  Ctrl +/- UI scale;  Tab camera orbit <-> fly;  "
+  out << "F1  (framework)  help;  F2 stats;  F3 parameters;  F11 fullscreen;  F12 screenshot;  Ctrl +/- UI scale;  Tab "
+         "camera orbit <-> fly;  "
          "Home camera reset\n";
   std::vector<const Param*> bound;
   for (const Param& p : params.params())

@@ -89,7 +89,9 @@ class LightingLesson : public Lesson {
     declareLights(r, p_.lights);
   }
 
-  LessonInfo info() const override { return {"01", "01_lighting", "Lighting", kSummary, 1, kHelp, true, 60, {}}; }
+  LessonInfo info() const override {
+    return {"01", "01_lighting", "Lighting", kSummary, 1, kHelp, true, 60, {}, {"shading"}};
+  }
 
   void init() override {
     unlit_.build();

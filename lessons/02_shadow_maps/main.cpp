@@ -111,7 +111,16 @@ class ShadowMapLesson : public Lesson {
   }
 
   LessonInfo info() const override {
-    return {"02", "02_shadow_maps", "Shadow maps", kSummary, 2, kHelp, true, 90, {"01"}};
+    return {"02",
+            "02_shadow_maps",
+            "Shadow maps",
+            kSummary,
+            2,
+            kHelp,
+            true,
+            90,
+            {"01"},
+            {"shadow map", "shadow triangles"}};
   }
 
   void init() override {

@@ -97,7 +97,16 @@ class ShadowQualityLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {"03", "03_shadow_quality", "Shadow-map quality", kSummary, 3, kHelp, true, 120, {"02"}};
+    return {"03",
+            "03_shadow_quality",
+            "Shadow-map quality",
+            kSummary,
+            3,
+            kHelp,
+            true,
+            120,
+            {"02"},
+            {"light0 texel", "culled casters", "cube faces skipped"}};
   }
 
   void init() override {

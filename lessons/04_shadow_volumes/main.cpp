@@ -88,7 +88,16 @@ class ShadowVolumeLesson : public Lesson {
   }
 
   LessonInfo info() const override {
-    return {"04", "04_shadow_volumes", "Shadow volumes", kSummary, 3, kHelp, true, 90, {"02"}};
+    return {"04",
+            "04_shadow_volumes",
+            "Shadow volumes",
+            kSummary,
+            3,
+            kHelp,
+            true,
+            90,
+            {"02"},
+            {"z-pass objects", "z-fail objects", "silhouette edges"}};
   }
 
   void init() override {

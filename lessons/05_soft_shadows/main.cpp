@@ -43,7 +43,7 @@ struct Params {
   float ambient = 0.12f;
   bool showEdge = false;  // the predicted penumbra of the picked caster edge
   int edge = 11;          // which of the box's 12 edges (soft::boxEdges): 11 is a top edge over open ground
-  bool plot = true;       // A_frac against its linear approximation (ImGui)
+  bool plot = false;      // A_frac against its linear approximation (ImGui; P, or the afrac_linear preset)
   // A sphere of radius 0.5 m over the showcase, a spot whose cone holds the scene's shapes; a second
   // sphere (off), to show that every technique serves several lights.
   Light lights[kLights] = {showcaseSphereSpot(), secondSphereSpot()};
@@ -95,7 +95,16 @@ class SoftShadowsLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {"05", "05_soft_shadows", "Soft shadows", kSummary, 4, kHelp, true, 120, {"03"}};
+    return {"05",
+            "05_soft_shadows",
+            "Soft shadows",
+            kSummary,
+            4,
+            kHelp,
+            true,
+            120,
+            {"03"},
+            {"taps", "penumbra r predicted"}};
   }
 
   void init() override {

@@ -146,7 +146,16 @@ class TextureFilteringLesson : public Lesson {
   }
 
   LessonInfo info() const override {
-    return {"06", "06_texture_filtering", "Texture filtering", kSummary, 2, kHelp, false, 90, {"01"}};
+    return {"06",
+            "06_texture_filtering",
+            "Texture filtering",
+            kSummary,
+            2,
+            kHelp,
+            false,
+            90,
+            {"01"},
+            {"probe lambda CPU / GPU", "probe anisotropic", "CPU vs GPU RMSE"}};
   }
 
   void init() override {

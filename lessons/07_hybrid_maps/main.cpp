@@ -100,7 +100,8 @@ class HybridMapsLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {"07", "07_hybrid_maps", "Hybrid-resolution shadow maps", kSummary, 4, kHelp, true, 90, {"03"}};
+    return {"07", "07_hybrid_maps", "Hybrid-resolution shadow maps",           kSummary, 4, kHelp, true,
+            90,   {"03"},           {"light0 stored texels", "light0 records"}};
   }
 
   void init() override {

@@ -114,7 +114,16 @@ class OriginalPsmLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {"08", "08_psm", "Perspective shadow maps", kSummary, 4, kHelp, true, 120, {"03"}};
+    return {"08",
+            "08_psm",
+            "Perspective shadow maps",
+            kSummary,
+            4,
+            kHelp,
+            true,
+            120,
+            {"03"},
+            {"light0 light", "light0 warp's predicted m", "light0 cone"}};
   }
 
   void init() override {

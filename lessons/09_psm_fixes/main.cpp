@@ -114,7 +114,16 @@ class PsmFixesLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {"09", "09_psm_fixes", "PSM with the paper's fixes", kSummary, 5, kHelp, true, 120, {"08"}};
+    return {"09",
+            "09_psm_fixes",
+            "PSM with the paper's fixes",
+            kSummary,
+            5,
+            kHelp,
+            true,
+            120,
+            {"08"},
+            {"light0 light", "light0 maps", "light0 warp's predicted m"}};
   }
 
   void init() override {

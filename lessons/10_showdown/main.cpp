@@ -113,9 +113,11 @@ class ShowdownLesson : public tech::ShadowLesson {
   }
 
   LessonInfo info() const override {
-    return {
-        "10", "10_showdown",           "The showdown: every technique, time against error", kSummary, 5, kHelp, true,
-        90,   {"04", "05", "07", "09"}};
+    LessonInfo i{"10", "10_showdown", "The showdown: every technique, time against error", kSummary, 5, kHelp, true};
+    i.minutes = 90;
+    i.prerequisites = {"04", "05", "07", "09"};
+    i.keyFigures = {"light0 light", "light0 maps", "light0 splits", "light0 cascade texels"};
+    return i;
   }
 
   void init() override {
