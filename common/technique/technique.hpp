@@ -58,6 +58,17 @@ struct LitSettings {
   bool depthPrepass = true;
 };
 
+// What a map cost when it was drawn: a map kept from an earlier frame reports these, marked kept
+// (a still camera must not make a shadow lesson's header read "shadow triangles: 0").
+struct DrawnFigures {
+  std::size_t triangles = 0;
+  std::uint64_t texels = 0;
+};
+
+// "12000", "12000 (kept, as drawn)" or "20000 (12000 of them kept)": a figure of the maps drawn
+// now and of those kept, as the header and the benchmarks read it (its number first).
+std::string drawnFigure(std::uint64_t now, std::uint64_t kept);
+
 // The work a technique spent and skipped in its last frame, for the header and the benchmarks.
 struct ShadowStats {
   std::size_t triangles = 0;   // triangles drawn into shadow maps or volumes
@@ -66,10 +77,32 @@ struct ShadowStats {
   int culledCasters = 0;       // casters left out of a light camera (counted per camera)
   int skippedFaces = 0;        // cube faces not rendered
   int reusedMaps = 0;          // maps kept from an earlier frame because nothing changed
+  DrawnFigures kept;           // what those kept maps cost when they were drawn
   bool culls = true;           // the technique culls casters and skips faces (else those lines are left out)
   std::vector<Counter> extra;  // the technique's own figures ("light0 texel", "z-fail objects")
   // The header lines: the shared figures first, under the names the benchmark runner reads.
   std::vector<Counter> counters() const;
+
+  // `maps` maps kept from an earlier frame, which cost `drawn` when they were drawn.
+  void keep(const DrawnFigures& drawn, int maps = 1) {
+    reusedMaps += maps;
+    kept.triangles += drawn.triangles;
+    kept.texels += drawn.texels;
+  }
+  // Writes into `out`, at the end of its scope, what was drawn since it was made: a map's cost,
+  // kept beside the map for the frames that keep it.
+  class Recorder {
+   public:
+    Recorder(const ShadowStats& s, DrawnFigures& out) : stats_(s), out_(out), before_{s.triangles, s.texels} {}
+    ~Recorder() { out_ = {stats_.triangles - before_.triangles, stats_.texels - before_.texels}; }
+    Recorder(const Recorder&) = delete;
+    Recorder& operator=(const Recorder&) = delete;
+
+   private:
+    const ShadowStats& stats_;
+    DrawnFigures& out_;
+    DrawnFigures before_;
+  };
 };
 
 class ShadowTechnique {

@@ -32,6 +32,7 @@
 #include "technique/map_view.hpp"
 #include "technique/pass_key.hpp"
 #include "technique/scene_cache.hpp"
+#include "technique/technique.hpp"
 
 using namespace shadowlab;
 
@@ -223,19 +224,21 @@ class ShadowMapLesson : public Lesson {
   }
 
  private:
-  // The header's figures of the shadow pass: what it drew (nothing when the map was reused), the
-  // map, and where the comparison runs.
+  // The header's figures of the shadow pass: what it drew (a kept map: what it cost when drawn,
+  // marked kept), the map, and where the comparison runs.
   std::vector<Counter> mapCounters(bool student) const {
-    return {{"shadow triangles", std::to_string(mapReused_ ? 0 : shadowTriangles_)},
-            {"shadow texels", std::to_string(mapReused_ ? 0 : std::uint64_t(map_.size) * std::uint64_t(map_.size))},
-            {"culled casters", "0"},
-            {"maps reused", mapReused_ ? "1" : "0"},
-            {"shadow map", std::to_string(map_.size) + "^2 " + gl::depthFormatName(map_.format)},
-            {"comparison", p_.compare == Compare::Hardware ? "sampler2DShadow"
-                           : p_.compare == Compare::Manual ? "in the shader"
-                           : p_.compare == Compare::CpuVertex
-                               ? (student ? "CPU per vertex, student code" : "CPU per vertex")
-                               : "off"}};
+    const std::uint64_t texels = std::uint64_t(map_.size) * std::uint64_t(map_.size);
+    return {
+        {"shadow triangles", mapReused_ ? tech::drawnFigure(0, shadowTriangles_) : std::to_string(shadowTriangles_)},
+        {"shadow texels", mapReused_ ? tech::drawnFigure(0, texels) : std::to_string(texels)},
+        {"culled casters", "0"},
+        {"maps reused", mapReused_ ? "1" : "0"},
+        {"shadow map", std::to_string(map_.size) + "^2 " + gl::depthFormatName(map_.format)},
+        {"comparison", p_.compare == Compare::Hardware ? "sampler2DShadow"
+                       : p_.compare == Compare::Manual ? "in the shader"
+                       : p_.compare == Compare::CpuVertex
+                           ? (student ? "CPU per vertex, student code" : "CPU per vertex")
+                           : "off"}};
   }
 
   void drawScene(const FrameInfo& f, const glm::mat4& textureMatrix, bool afterPrepass) {

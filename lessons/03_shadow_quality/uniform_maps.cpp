@@ -98,10 +98,11 @@ void UniformShadowMaps::renderLight(const ShadowContext& c, int i) {
     if (l.type == Type::Cube) f.skipped ? ++stats_.skippedFaces : stats_.culledCasters += f.culled;
   PassKey key = passKey(c, l);
   if (p_.reuseMaps && key == l.rendered) {
-    ++stats_.reusedMaps;
+    stats_.keep(l.drawn);
     return;
   }
   l.rendered = std::move(key);
+  const ShadowStats::Recorder recorder(stats_, l.drawn);
   auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
   const CasterOptions options{true, p_.cullFront};
   const std::uint64_t side = std::uint64_t(l.map.size);

@@ -88,6 +88,7 @@ class UniformShadowMaps : public ShadowTechnique, public PostProjectiveSubject {
     glm::mat4 textureMatrix{1.0f};
     float texel = 0.0f;  // ortho: world texel; perspective: 2 tan(fov / 2) / size
     PassKey rendered;    // what the map holds now (empty: nothing valid)
+    DrawnFigures drawn;  // what it cost when drawn (a kept map's figures)
   };
   PassKey passKey(const ShadowContext& c, const PerLight& l) const;
   void render(const ShadowContext& c) override;

@@ -121,10 +121,11 @@ void FilterableMaps::render(const ShadowContext& c) {
     key << c.scene.revision() << size << lights[i].nearZ << lights[i].farZ << p_.exponent << p_.blur
         << lights[i].centre.viewProj() << std::span<const char>(lights[i].centre.casters);
     if (p_.reuseMaps && key == target.rendered) {
-      ++stats_.reusedMaps;
+      stats_.keep(target.drawn);
       continue;
     }
     target.rendered = std::move(key);
+    const ShadowStats::Recorder recorder(stats_, target.drawn);
     auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
     glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
     glViewport(0, 0, size, size);

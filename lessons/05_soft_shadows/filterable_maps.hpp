@@ -49,7 +49,8 @@ class FilterableMaps : public ShadowTechnique {
     gl::Renderbuffer depth;
     gl::Framebuffer fbo, scratchFbo;
     int size = 0;
-    PassKey rendered;  // what the moments were last drawn and blurred from
+    PassKey rendered;    // what the moments were last drawn and blurred from
+    DrawnFigures drawn;  // what that cost (kept moments' figures)
   };
   void ensure(Target& t, int size, const std::string& label);
   void blur(Target& t);

@@ -100,7 +100,7 @@ void LightMesh::render(const ShadowContext& c) {
     key_ = k;
     stats_ = bakeStats_;  // the maps' passes were this frame's
   } else {
-    stats_.reusedMaps = 1;
+    stats_.keep({bakeStats_.triangles, bakeStats_.texels});  // the bake's maps, as drawn
     stats_.extra = {};
   }
   stats_.culls = false;

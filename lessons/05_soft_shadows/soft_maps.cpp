@@ -120,10 +120,11 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
   }
   stats.bytes += std::uint64_t(arraySize_) * std::uint64_t(arraySize_) * std::uint64_t(arrayLayers_) * 4;
   if (p_.reuseMaps && key == rendered_) {
-    stats.reusedMaps += int(cameras.size());
+    stats.keep(drawn_, int(cameras.size()));
     return;
   }
   rendered_ = std::move(key);
+  const ShadowStats::Recorder recorder(stats, drawn_);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());

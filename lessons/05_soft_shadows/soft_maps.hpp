@@ -99,7 +99,8 @@ class SoftMaps {
   gl::Framebuffer fbo_;
   int arraySize_ = 0, arrayLayers_ = 0;
   gl::Sampler compare_, raw_;
-  PassKey rendered_;  // what the maps were last drawn from
+  PassKey rendered_;    // what the maps were last drawn from
+  DrawnFigures drawn_;  // what they cost then (kept maps' figures)
 };
 
 }  // namespace shadowlab::tech

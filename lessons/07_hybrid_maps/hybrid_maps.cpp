@@ -119,10 +119,11 @@ void HybridShadowMaps::renderDepth(const ShadowContext& c) {
     PassKey key = passKey(c, l);
     l.reused = p_.reuseMaps && key == l.rendered && l.depth.size == p_.mapSize;
     if (l.reused) {
-      ++stats_.reusedMaps;
+      stats_.keep(l.drawn);
       continue;
     }
     l.rendered = std::move(key);
+    const ShadowStats::Recorder recorder(stats_, l.drawn);
     auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
     if (l.depth.size != p_.mapSize || l.depth.format != p_.format)
       l.depth = gl::makeShadowMap(p_.mapSize, p_.format, "light" + std::to_string(i) + " full-resolution map");

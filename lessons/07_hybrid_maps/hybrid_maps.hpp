@@ -105,6 +105,7 @@ class HybridShadowMaps : public ShadowTechnique {
     shadow::Map2DCamera camera;
     HybridMapGpu map;
     PassKey rendered;     // what the map was last built from (PassKey)
+    DrawnFigures drawn;   // what its depth pass cost then (a kept map's figures)
     bool reused = false;  // this frame: nothing changed, the map from an earlier frame stays
   };
   void render(const ShadowContext& c) override;

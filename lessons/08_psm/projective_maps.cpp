@@ -136,10 +136,11 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
   stats.bytes += std::uint64_t(l.side) * std::uint64_t(l.side) * std::uint64_t(l.layers) * depthBytes(l.format);
   PassKey key = passKey(c, l, maps.first(std::size_t(l.used)), side, keep, worldLight);
   if (p_.reuseMaps && key == l.rendered) {
-    ++stats.reusedMaps;
+    stats.keep(l.drawn);
     return;
   }
   l.rendered = std::move(key);
+  const ShadowStats::Recorder recorder(stats, l.drawn);
   auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(light));
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);

@@ -131,6 +131,7 @@ class ProjectiveMapSet {
     FaceLookup faces;
     int generation = 0;  // counts the array's re-creations: a new array holds no map yet
     PassKey rendered;    // what the maps were last drawn from
+    DrawnFigures drawn;  // what they cost then (kept maps' figures)
   };
   PassKey passKey(const ShadowContext& c, const PerLight& l, std::span<const ProjectiveMapView> maps, int side,
                   std::span<const char> keep, const glm::dvec4& worldLight) const;

@@ -245,9 +245,10 @@ class ShowdownLesson : public tech::ShadowLesson {
   std::string quarterLabel(int q, const tech::ShadowTechnique& t) const {
     const tech::ShadowStats& s = t.stats();
     char b[160];
-    std::snprintf(b, sizeof b, "%s  %.0f ms  %.2f Mtexels%s  %zuk tris  %.1f MB", t.name().c_str(),
-                  quarters_[std::size_t(q)].ms, double(s.texels) / 1e6, s.reusedMaps ? " (maps reused)" : "",
-                  s.triangles / 1000, double(s.bytes) / (1024.0 * 1024.0));
+    std::snprintf(b, sizeof b, "%s  %.0f ms  %.2f Mtexels  %zuk tris%s  %.1f MB", t.name().c_str(),
+                  quarters_[std::size_t(q)].ms, double(s.texels + s.kept.texels) / 1e6,
+                  (s.triangles + s.kept.triangles) / 1000, s.reusedMaps ? " (maps kept)" : "",
+                  double(s.bytes) / (1024.0 * 1024.0));
     return b;
   }
 
