@@ -132,7 +132,7 @@ foreach(lesson IN LISTS SHADOWLAB_LESSONS)
   string(REGEX REPLACE "^lesson_" "" name ${lesson})
   add_test(NAME hotkeys.${name} COMMAND $<TARGET_FILE:${lesson}> --list-hotkeys)
   set_tests_properties(hotkeys.${name} PROPERTIES LABELS unit
-                       PASS_REGULAR_EXPRESSION "R  \\(framework\\)  reload shaders.*H  \\(framework\\)  hide all UI"
+                       PASS_REGULAR_EXPRESSION "R  \\(framework\\)  reload shaders.*H  \\(framework\\)  hide the panels \\(labels and legends stay\\), then all UI"
                        FAIL_REGULAR_EXPRESSION "hotkeys: ")
 endforeach()
 

@@ -1,6 +1,7 @@
 #include "app/ab_split.hpp"
 
 #include <cstdio>
+#include <map>
 
 #include "gl/gl.hpp"
 
@@ -21,6 +22,35 @@ std::string figures(const Measurement* m) {
   if (r.soft) std::snprintf(buf, sizeof buf, "RMSE %.4f", r.soft_.rmse);
   else std::snprintf(buf, sizeof buf, "misclassified %.2f%% (leaks %.2f%%)", r.hard.misclassifiedPct, r.hard.leakPct);
   return buf;
+}
+
+// What sets one half apart: "technique=volumes, scene=showcase +2 more" (the values of `mine` that
+// differ from `other`'s, the settings both halves share left out).
+std::string differences(const std::map<std::string, std::string>& mine,
+                        const std::map<std::string, std::string>& other) {
+  std::string s;
+  int listed = 0, more = 0;
+  for (const auto& [name, value] : mine) {
+    const auto it = other.find(name);
+    if (sharedWithB(name) || (it != other.end() && it->second == value)) continue;
+    if (listed == 3) {
+      ++more;
+      continue;
+    }
+    const std::string shown = value.size() > 24 ? value.substr(0, 21) + "..." : value;
+    s += (listed++ ? ", " : "") + name + "=" + shown;
+  }
+  return more ? s + " +" + std::to_string(more) + " more" : s;
+}
+
+// The lesson's first key figure among `counters`, on a line of its own.
+std::string keyLines(const std::vector<Counter>& counters, const std::vector<std::string>& names) {
+  std::string s;
+  int n = 0;
+  for (const std::string& name : names)
+    for (const Counter& c : counters)
+      if (c.name == name && n++ < 1) s += "\n" + c.name + ": " + c.value;
+  return s;
 }
 
 }  // namespace
@@ -45,6 +75,9 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
   for (const auto& [name, value] : a)
     if (sharedWithB(name)) shared.emplace_back(name, value);
   params.setAll(shared);
+  const auto bValues = params.snapshot();
+  whatA_ = differences(a, bValues);
+  whatB_ = differences(bValues, a);
 
   FrameInfo b = frame;
   const std::vector<Counter> countersA = lesson.counters;  // the header shows A's work, not B's
@@ -58,6 +91,7 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
   render(b);
   if (measured) measurementB_.end(lesson.measureSource(), target_.fbo.id(), true);
   lesson.timers.setEnabled(true);
+  countersB_ = lesson.counters;
   lesson.counters = countersA;
   figuresB_ = figures(measured ? &measurementB_ : nullptr);
 
@@ -79,13 +113,16 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
   glBindFramebuffer(GL_FRAMEBUFFER, frame.framebuffer);
 }
 
-std::string AbSplit::labelA(const Measurement* measured) const {
+std::string AbSplit::labelA(const Measurement* measured, const std::vector<Counter>& key) const {
   const std::string f = figures(measured);
-  return "A: current settings" + (f.empty() ? "" : "\n" + f);
+  std::string lines;
+  if (!key.empty()) lines = "\n" + key[0].name + ": " + key[0].value;
+  return "A: " + (whatA_.empty() ? "the same settings as B" : whatA_) + lines + (f.empty() ? "" : "\n" + f);
 }
 
-std::string AbSplit::labelB() const {
-  return "B: preset " + presetNames_[std::size_t(preset_)] + (figuresB_.empty() ? "" : "\n" + figuresB_);
+std::string AbSplit::labelB(const std::vector<std::string>& keyFigures) const {
+  return "B: " + presetNames_[std::size_t(preset_)] + (whatB_.empty() ? "" : " (" + whatB_ + ")") +
+         keyLines(countersB_, keyFigures) + (figuresB_.empty() ? "" : "\n" + figuresB_);
 }
 
 }  // namespace shadowlab

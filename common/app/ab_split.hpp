@@ -25,9 +25,12 @@ class AbSplit {
   // divider over `frame`. `measured` is A's measurement (B is measured with the same settings).
   void draw(const FrameInfo& frame, ParamRegistry& params, const PresetFile& presets, Lesson& lesson,
             const Measurement* measured, const std::function<void(const FrameInfo&)>& render);
-  // Labels for the UI: "A: ..." and "B: ..." with their figures.
-  std::string labelA(const Measurement* measured) const;
-  std::string labelB() const;
+  // Labels for the UI, naming each half by what it is: "A: technique=uniform" (the settings that
+  // differ from B's) and "B: versus_volumes_b (technique=volumes, ...)", each with its key figures
+  // (A's: `key`; B's: its counters named in `keyFigures`, LessonInfo::keyFigures) and, measured
+  // (M), its error against the ground truth.
+  std::string labelA(const Measurement* measured, const std::vector<Counter>& key) const;
+  std::string labelB(const std::vector<std::string>& keyFigures) const;
   // Measure B at full resolution in the next frame too (headless --measure).
   void requestFullResolution() { measurementB_.requestFullResolution(); }
   // B's preset and its measurement of the last frame (valid when the lesson is measurable).
@@ -43,6 +46,8 @@ class AbSplit {
   gl::RenderTarget target_;
   Measurement measurementB_;
   std::string figuresB_;
+  std::string whatA_, whatB_;       // the settings that set each half apart
+  std::vector<Counter> countersB_;  // B's figures in the last frame
 };
 
 }  // namespace shadowlab

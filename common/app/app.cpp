@@ -283,7 +283,7 @@ class Runner {
     fi.framebuffer = context_->framebuffer();
     watchExercises(fi, frame);
     lesson_.timers.collect();
-    if (uiVisible_ && !input_.uiHidden) {
+    if (uiVisible_ && input_.uiHidden < 2) {
       // Headless, the last frame's UI is laid out once without drawing first: ImGui sizes an
       // auto-fit window (the header) from the frame before, so a header whose lines changed came
       // out a line short in the screenshot and --ui-layout.
@@ -460,22 +460,27 @@ class Runner {
 
   // The header's few figures: the lesson's key figures present this frame, in the lesson's order,
   // then the ground truth's (what M measured).
-  std::vector<Counter> keyFigures(const std::vector<Counter>& all) const {
+  std::vector<Counter> keyFigures(const std::vector<Counter>& all, bool measured = true) const {
     static const char* const kMeasured[] = {"measure", "misclassified", "aliasing m", "soft error", "umbra"};
     std::vector<Counter> key;
     for (const std::string& name : info_.keyFigures)
       for (const Counter& c : all)
         if (c.name == name) key.push_back(c);
+    if (!measured) return key;
     for (const char* name : kMeasured)
       for (const Counter& c : all)
         if (c.name == name) key.push_back(c);
     return key;
   }
 
+  // The UI; after one H the panels are hidden, not what explains the picture: the A/B labels, the
+  // legends, the lesson's own labels (gui() with panelsHidden), the stub banner.
   void drawUi(const FrameInfo& fi, double dt, bool draw) {
     glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
     glViewport(0, 0, width_, height_);
     ui_.newFrame(dt, width_, height_);
+    const bool panels = input_.uiHidden == 0;
+    lesson_.panelsHidden = !panels;
     std::vector<Counter> shown = lesson_.counters;
     shown.push_back({"draw calls", std::to_string(drawCalls_)});
     for (auto& [name, value] : measurement_.summary()) shown.push_back({name, value});
@@ -483,8 +488,21 @@ class Runner {
     if (!initError_.empty()) errors.insert(errors.begin(), initError_);
     std::vector<Legend> legends = lesson_.legends;
     if (const auto l = measurement_.legend()) legends.push_back(*l);
-    ui_.legends(legends);                  // first: the header stops above them (and above the exercises panel)
+    const Measurement* measured = info_.measurable ? &measurement_ : nullptr;
+    if (ab_.enabled())  // first: the legends and the exercises stay above the labels
+      ui_.splitLabels(ab_.divider(), ab_.labelA(measured, keyFigures(lesson_.counters, false)),
+                      ab_.labelB(info_.keyFigures));
+    ui_.legends(legends);                  // then: the header stops above them (and above the exercises panel)
     ui_.reserve(lesson_.insets, height_);  // the header and the panels stop above the insets
+    if (panels) drawPanels(shown, errors);
+    lesson_.gui();
+    ui_.banner(banner_);
+    if (panels) ui_.help(info_, params_, &helpOpen_);
+    input_.help = helpOpen_;
+    ui_.render(draw);
+  }
+
+  void drawPanels(const std::vector<Counter>& shown, const std::vector<std::string>& errors) {
     if (!lesson_.exercises.empty()) rerunExercises_ = ui_.exercisesPanel(lesson_.exercises) || rerunExercises_;
     const Ui::HeaderData header{&info_,
                                 gl::caps().summary(),
@@ -501,13 +519,6 @@ class Runner {
     input_.stats = statsOpen_;
     ui_.paramPanel(params_, presets_, status_, &panelOpen_);
     input_.panel = panelOpen_;
-    const Measurement* measured = info_.measurable ? &measurement_ : nullptr;
-    if (ab_.enabled()) ui_.splitLabels(ab_.divider(), ab_.labelA(measured), ab_.labelB());
-    lesson_.gui();
-    ui_.banner(banner_);
-    ui_.help(info_, params_, &helpOpen_);
-    input_.help = helpOpen_;
-    ui_.render(draw);
   }
 
   // F12, --measure and --screenshot on the last frame, and the --record path.
@@ -528,7 +539,10 @@ class Runner {
                              ab_.enabled() ? &b : nullptr);
       }
       if (lastFrame && !cl_.screenshot.empty()) saveScreenshot(cl_.screenshot, fi.framebuffer, width_, height_);
-      if (lastFrame && !cl_.uiLayout.empty()) writeUiLayout(cl_.uiLayout, width_, height_, ui_.layout());
+      if (lastFrame && !cl_.uiLayout.empty()) {
+        const bool drawn = uiVisible_ && input_.uiHidden < 2;  // hidden (H twice): no rectangle of an older frame
+        writeUiLayout(cl_.uiLayout, width_, height_, drawn ? ui_.layout() : std::vector<Ui::Rect>{});
+      }
     } catch (const std::exception& e) {
       std::cerr << info_.name << ": " << e.what() << '\n';
       return 1;

@@ -47,7 +47,7 @@ void pressKey(Input& input, int key, int mods) {
   else if (key == GLFW_KEY_ESCAPE) input.quit = true;
   else if (key == GLFW_KEY_TAB) input.fly = !input.fly;
   else if (key == GLFW_KEY_HOME) input.resetCamera = true;
-  else if (key == GLFW_KEY_H && !ctrl) input.uiHidden = !input.uiHidden;
+  else if (key == GLFW_KEY_H && !ctrl) input.uiHidden = (input.uiHidden + 1) % 3;
   else if (!ctrl) input.pressed.push_back(key);
 }
 

@@ -24,7 +24,7 @@ struct Input {
   bool stats = false;  // F2: the renderer, the pass table and every counter, under the header
   bool panel = false;  // F3: the parameter panel open (else a title bar: the picture first)
   bool screenshot = false;
-  bool uiHidden = false;     // H: no UI at all, the picture alone (the projector)
+  int uiHidden = 0;          // H: 1 the panels hidden (the labels and legends that explain the picture stay), 2 none
   bool fly = false;          // Tab: WASD + mouse look instead of orbiting the target
   float flySpeed = 1.0f;     // half the camera distance a second, times this; the wheel scales it
   bool resetCamera = false;  // Home: back to the pose the run started with

@@ -90,6 +90,7 @@ class Lesson {
   std::vector<Inset> insets;      // views drawn into corners this frame; cleared by the framework
   std::vector<Legend> legends;    // colour keys of the heatmaps drawn this frame; cleared by the framework
   Exercises exercises;            // add() them in declare(): the exercises panel and the stub banner
+  bool panelsHidden = false;      // H pressed once: gui() draws only what explains the picture (labels), no window
 
   gl::TimerScope scope(const std::string& pass) { return gl::TimerScope(timers, pass); }
 };

@@ -89,7 +89,9 @@ float Ui::roomAbove(float left, float right, float height) const {
 void Ui::legends(const std::vector<Legend>& legends) {
   if (legends.empty()) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(8 * scale_, vp->Size.y - 8 * scale_), ImGuiCond_Always, ImVec2(0, 1));
+  // Above the A/B labels when the split is on (splitLabels() ran first and lowered legendTop_).
+  ImGui::SetNextWindowPos(ImVec2(8 * scale_, std::min(vp->Size.y, legendTop_) - 8 * scale_), ImGuiCond_Always,
+                          ImVec2(0, 1));
   ImGui::SetNextWindowBgAlpha(1.0f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
@@ -282,7 +284,11 @@ void Ui::help(const LessonInfo& info, const ParamRegistry& params, bool* open) {
 void Ui::splitLabels(float divider, const std::string& a, const std::string& b) {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImVec2 size = ImGui::GetIO().DisplaySize;
-  const float x = divider * size.x, y = size.y - ImGui::GetTextLineHeightWithSpacing() * 2.6f;
+  // Both labels' tops on one line, as high as the taller needs (at most three lines: what the half
+  // is, a key figure, its error), clear of the bottom.
+  const auto lines = [](const std::string& t) { return 1 + float(std::count(t.begin(), t.end(), '\n')); };
+  const float x = divider * size.x,
+              y = size.y - ImGui::GetTextLineHeightWithSpacing() * (std::max(lines(a), lines(b)) + 0.6f);
   auto label = [&](float left, const std::string& text) {
     const ImVec2 t = ImGui::CalcTextSize(text.c_str());
     draw->AddRectFilled(ImVec2(left - 4, y - 4), ImVec2(left + t.x + 4, y + t.y + 4), IM_COL32(0, 0, 0, 180), 4.0f);
@@ -291,6 +297,7 @@ void Ui::splitLabels(float divider, const std::string& a, const std::string& b) 
   };
   label(std::max(8.0f, x - ImGui::CalcTextSize(a.c_str()).x - 16.0f), a);
   label(x + 16.0f, b);
+  legendTop_ = std::min(legendTop_, y - 4.0f);  // the bottom-left stack (legend, exercises) stays above them
 }
 
 namespace {
@@ -359,8 +366,8 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   const float width = std::min(360 * scale_, vp->Size.x * (1.0f - kHeaderShare) - 8 * scale_);
   // Collapsed, no wider than its title: a bar in the corner, not a strip across the picture.
   ImGui::SetNextWindowSize(ImVec2(*open ? width : collapsedWidth("Parameters"), 0), ImGuiCond_Always);
-  // Its bottom stays above the A/B split's labels (2.6 lines from the bottom).
-  const float labels = ImGui::GetTextLineHeightWithSpacing() * 3.2f;
+  // Its bottom stays above the A/B split's labels (at most 3.6 lines from the bottom).
+  const float labels = ImGui::GetTextLineHeightWithSpacing() * 4.2f;
   float maxHeight = vp->Size.y - 16 * scale_ - labels;
   const float left = vp->Size.x - 8 * scale_ - width;
   maxHeight = roomAbove(left, vp->Size.x, maxHeight);

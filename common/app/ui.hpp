@@ -43,7 +43,7 @@ class Ui {
   // F2: the renderer, the frame budget, the pass table and every counter, under the header.
   void stats(const HeaderData& data, bool* open);
   void help(const LessonInfo& info, const ParamRegistry& params, bool* open);
-  // A/B split: a label at the top of each half.
+  // A/B split: a label at the bottom of each half (before legends(): the stack there stays above).
   void splitLabels(float divider, const std::string& a, const std::string& b);
   // Corners the frame shows views in (after newFrame, before paramPanel): the panel stays above
   // those in its column; they are in layout() too.

@@ -11,7 +11,7 @@ namespace {
 
 constexpr std::array<FrameworkKey, 8> kFrameworkKeys{{
     {"R", "reload shaders (a broken one keeps the last good program and shows its error)"},
-    {"H", "hide all UI, or bring it back (a clean picture for the projector)"},
+    {"H", "hide the panels (labels and legends stay), then all UI, then bring it back (the projector)"},
     {"W", "fly camera: forward"},
     {"S", "fly camera: back"},
     {"A", "fly camera: left"},

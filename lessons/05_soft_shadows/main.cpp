@@ -143,7 +143,7 @@ class SoftShadowsLesson : public tech::ShadowLesson {
   }
 
   void gui() override {
-    if (!p_.plot) return;
+    if (!p_.plot || panelsHidden) return;
     const bool student = p_.impl == Impl::Student;
     tech::visibleFractionPlot(student ? tech::FractionFn(ex05::visibleFraction) : soft::visibleFraction,
                               student ? tech::FractionFn(ex05::visibleFractionLinear) : soft::visibleFractionLinear);

@@ -55,6 +55,33 @@ if(legend_without OR NOT legend_with)
   message(FATAL_ERROR "legend with an overlay ${legend_with}, without one ${legend_without} (want TRUE, FALSE)")
 endif()
 
+# The A/B split with the error overlay at a projector's scale: the labels (three lines: what the
+# half is, a key figure, its error) clear of the legend, the exercises, the header and the panel.
+layout(split_legend --size 1280x720 --show-ui --ui-scale 2 --preset versus_volumes --set measure.overlay=error)
+foreach(label "A label" "B label")
+  foreach(other Legend Exercises shadowlab Parameters)
+    check_apart("${json}" "${label}" ${other})
+  endforeach()
+  check_inside("${json}" "${label}" 1280 720)
+endforeach()
+# H hides the panels, not what explains the picture: once, the A/B labels and the legend stay and
+# the header, panel and exercises go; twice, everything; a third time brings it all back.
+layout(hide_1 --size 640x360 --show-ui --preset versus_volumes --set measure.overlay=error --frames 4 --keys H)
+has("${json}" "A label" h1_a)
+has("${json}" "B label" h1_b)
+foreach(name Legend shadowlab Parameters Exercises)
+  has("${json}" ${name} h1_${name})
+endforeach()
+layout(hide_2 --size 640x360 --show-ui --preset versus_volumes --frames 4 --keys H,H)
+has("${json}" "A label" h2_label)
+layout(hide_3 --size 640x360 --show-ui --preset versus_volumes --frames 5 --keys H,H,H)
+has("${json}" shadowlab h3_header)
+if(NOT h1_a OR NOT h1_b OR NOT h1_Legend OR h1_shadowlab OR h1_Parameters OR h1_Exercises OR h2_label OR NOT h3_header)
+  message(FATAL_ERROR "H: once, labels ${h1_a}/${h1_b} legend ${h1_Legend} (want TRUE), header ${h1_shadowlab} panel "
+                      "${h1_Parameters} exercises ${h1_Exercises} (want FALSE); twice, a label ${h2_label} (want "
+                      "FALSE); three times, the header ${h3_header} (want TRUE)")
+endif()
+
 set(LESSON ${LESSON02})
 layout(map_inset --size 1280x720 --show-ui)
 check_apart("${json}" Parameters "shadow-map inset")
