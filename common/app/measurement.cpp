@@ -280,7 +280,8 @@ void Measurement::uploadOverlay() {
   const Image8* shown = overlay_ == Overlay::Aliasing    ? (result_.hasAliasing ? &result_.aliasingHeatmap : nullptr)
                         : overlay_ == Overlay::Reference ? &result_.referenceImage
                                                          : &result_.errorHeatmap;
-  if (shown) overlayTexture_ = gl::uploadTexture(*shown, "measurement overlay", false);
+  // The heatmaps' and the visibility's bytes are what to show: no sRGB decode on the way.
+  if (shown) overlayTexture_ = gl::uploadTexture(*shown, "measurement overlay", false, gl::ColorData::Linear);
   else overlayTexture_.reset();
   if (overlayTexture_) {
     glBindTexture(GL_TEXTURE_2D, overlayTexture_.id());

@@ -130,6 +130,7 @@ void writeMeasurementJson(const std::string& path, const LessonInfo& info, const
       path.size() > 5 && path.substr(path.size() - 5) == ".json" ? path.substr(0, path.size() - 5) : path;
   savePng(stem + "_error.png", r.errorHeatmap);
   if (r.hasAliasing) savePng(stem + "_aliasing.png", r.aliasingHeatmap);
+  savePng(stem + "_reference.png", r.referenceImage);  // the ground truth's visibility, as the overlay shows it
 }
 
 }  // namespace shadowlab

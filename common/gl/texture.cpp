@@ -9,9 +9,11 @@
 
 namespace shadowlab::gl {
 
-Texture uploadTexture(const Image8& image, const std::string& label, bool mipmaps) {
+Texture uploadTexture(const Image8& image, const std::string& label, bool mipmaps, ColorData color) {
   static constexpr GLenum kFormats[] = {0, GL_RED, GL_RG, GL_RGB, GL_RGBA};
-  static constexpr GLenum kInternal[] = {0, GL_R8, GL_RG8, GL_SRGB8, GL_SRGB8_ALPHA8};
+  static constexpr GLenum kSrgb[] = {0, GL_R8, GL_RG8, GL_SRGB8, GL_SRGB8_ALPHA8};
+  static constexpr GLenum kLinear[] = {0, GL_R8, GL_RG8, GL_RGB8, GL_RGBA8};
+  const GLenum* kInternal = color == ColorData::Srgb ? kSrgb : kLinear;
   // Past the limit glTexImage2D fails with GL_INVALID_VALUE and the texture samples black.
   if (const std::string problem = textureSizeProblem(image.width, image.height); !problem.empty())
     throw std::runtime_error("texture '" + label + "': " + problem);

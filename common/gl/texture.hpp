@@ -12,7 +12,13 @@ namespace shadowlab::gl {
 // Loads textures/<name> with a full mip chain, trilinear filtering and repeat wrapping (no
 // anisotropy: see lesson 06). Throws std::runtime_error naming the path when it cannot be read.
 Texture loadTexture(const std::string& name);
-Texture uploadTexture(const Image8& image, const std::string& label, bool mipmaps = true);
+// Colour images (3 or 4 channels) are sRGB-encoded pictures: sampling decodes them to linear.
+// `ColorData::Linear` for images whose bytes are the values to show as they are (the ground truth's
+// heatmaps and visibility, drawn straight into the frame): decoding those too darkened visibility
+// 0.53 (136) to 63.
+enum class ColorData { Srgb, Linear };
+Texture uploadTexture(const Image8& image, const std::string& label, bool mipmaps = true,
+                      ColorData color = ColorData::Srgb);
 
 // Reads the colour attachment 0 of `fbo` (0: the default framebuffer) into a top-row-first image.
 Image8 readPixels(GLuint fbo, int width, int height);
