@@ -81,9 +81,10 @@ std::string infoJson(const LessonInfo& info, const Exercises& exercises) {
             "\",\"line\":" + std::to_string(at.line) + "}";
   }
   return "{\"number\":\"" + info.number + "\",\"name\":\"" + info.name + "\",\"title\":\"" + jsonEscape(info.title) +
-         "\",\"summary\":\"" + jsonEscape(info.summary) + "\",\"difficulty\":" + std::to_string(info.difficulty) +
-         ",\"minutes\":" + std::to_string(info.minutes) + ",\"prerequisites\":[" + prerequisites + "],\"exercises\":[" +
-         list + "],\"grade\":\"" + (exercises.empty() ? std::string() : gradeCommand(info.name)) + "\"}";
+         "\",\"summary\":\"" + jsonEscape(info.summary) + "\",\"help\":\"" + jsonEscape(info.help) +
+         "\",\"difficulty\":" + std::to_string(info.difficulty) + ",\"minutes\":" + std::to_string(info.minutes) +
+         ",\"prerequisites\":[" + prerequisites + "],\"exercises\":[" + list + "],\"grade\":\"" +
+         (exercises.empty() ? std::string() : gradeCommand(info.name)) + "\"}";
 }
 
 bool answerQuery(const CommandLine& cl, const LessonInfo& info, const ParamRegistry& params, const PresetFile& presets,

@@ -53,11 +53,11 @@ constexpr int kLightCount = 3;
 const char* const kSummary =
     "The illumination model with the visibility term V_i: ambient, diffuse, specular, attenuation, three "
     "kinds of light.";
-const char* const kHelp = R"(Orbit around the scene and move the lights (Parameters panel).
-Try: turn lights on one at a time; compare Phong (B off) and Blinn highlights;
-raise light1.attenuation's quadratic term; set view=normals and view=ndc_remap.
-Notice: nothing casts a shadow. V_i = 1 everywhere: that is what lessons 02+ fix.
-Press M: the ground truth (Embree rays) marks every pixel lit here but in shadow in red.)";
+const char* const kHelp = R"(Orbit around the scene and move the lights (F3: the parameter panel).
+Try: turn the lights on one at a time (light0.enabled 1, light1.enabled 2, light2.enabled 3);
+compare Phong and Blinn highlights (blinn, B); raise light1.attenuation's quadratic term;
+set view=normals and view=ndc_remap. Nothing casts a shadow: V_i = 1 everywhere, what lessons 02+ fix.
+measure.overlay (M): the ground truth (Embree rays) marks every pixel lit here but in shadow in red.)";
 
 }  // namespace
 

@@ -65,9 +65,9 @@ const char* const kSummary =
     "Depth from the light into a texture, then a depth comparison through the texture matrix: a spot "
     "light's hard shadows.";
 const char* const kHelp = R"(Pass 1 renders depth from the spot light; pass 2 compares every pixel's light-space depth.
-Try: polygon offset 0 0 (acne everywhere); format 16 bits; compare=manual (same image);
-alpha_test off (leaf cards cast solid shadows); map_size 256 (blocky edges);
-view=shadow_map; O: the god view with the light frustum; M: error and aliasing heatmaps.)";
+Try: polygon offset 0 0 (acne everywhere); format (F) 16 bits; compare (C) manual: the same image;
+alpha_test (T) off: leaf cards cast solid shadows; map_size 256: blocky edges; view=shadow_map;
+view.god (O): the god view with the light frustum; measure.overlay (M): error and aliasing heatmaps.)";
 
 }  // namespace
 

@@ -51,12 +51,11 @@ struct Params {
 const char* const kSummary =
     "Bias family, resolution, PCF family, a directional light fitted to the view with caster culling and "
     "texel snapping, cube maps, several lights.";
-const char* const kHelp =
-    R"(Bias: bias.* sliders, B front-face culling, N normal offset (0 <-> default), Y receiver plane.
-Filtering: P cycles nearest, hardware 2x2, N x N, Poisson. map_size 256..8192.
-Fit: fit=scene vs view; K caster culling (culled casters in the header); U snapping
-with G (camera drift): shimmer without it. 1 2 3: sun, point (cube map), spot.
-T: stencil volumes on the same scene. M: error and aliasing heatmaps; O: god view.)";
+const char* const kHelp = R"(Bias: the bias.* sliders, cull_front (B), bias.normal_offset (N: 0 <-> default), bias.receiver_plane (Y).
+Filtering: filter (P) cycles nearest, hardware 2x2, N x N, Poisson; map_size 256..8192.
+Fit: fit (F) scene or view; cull_casters (K): culled casters in the header; snap (U) with
+drift (G): shimmer without snapping. light0..light2 (1 2 3): sun, point (cube map), spot.
+technique (T): stencil volumes on the same scene. measure.overlay (M): error and aliasing; view.god (O).)";
 
 }  // namespace
 

@@ -51,11 +51,11 @@ struct Params {
 const char* const kSummary =
     "Stencil shadow volumes: silhouettes from adjacency, z-pass and z-fail, caps, infinite far plane, "
     "many lights.";
-const char* const kHelp = R"(V cycles the view: volumes, wireframe, the stencil count as a heatmap, silhouettes.
-Z: auto / z-pass / z-fail. Preset camera_in_volume: z-pass inverts the shadow, z-fail holds.
-K: silhouettes on the CPU or in a geometry shader. T: two-sided stencil or two passes.
+const char* const kHelp = R"(view (V) cycles: volumes, wireframe, the stencil count as a heatmap, silhouettes.
+method (Z): auto, z-pass, z-fail. Preset camera_in_volume: z-pass inverts the shadow, z-fail holds.
+silhouettes (K): on the CPU or in a geometry shader. two_sided (T): one stencil pass or two.
 The header counts objects drawn z-pass and z-fail, open meshes, and the fill per light.
-Press M: against ground truth the only errors are on shadow boundaries.)";
+measure.overlay (M): against ground truth the only errors are on shadow boundaries.)";
 
 }  // namespace
 

@@ -52,11 +52,11 @@ struct Params {
 const char* const kSummary =
     "A spherical light: many point lights, PCF and PCSS, single-sample soft shadows, the light mesh, VSM and ESM, "
     "each against the sphere-light reference; the penumbra formula and A_frac drawn live.";
-const char* const kHelp = R"(T: many lights, PCF, PCSS, Parker, Haines, light mesh, VSM, ESM.
+const char* const kHelp = R"(technique (T): many lights, PCF, PCSS, Parker, Haines, light mesh, VSM, ESM.
 light0.radius: the sphere's size (0: hard). many.samples: N maps. pcss.* taps.
-G: the predicted penumbra edges of box edge E (yellow centre, red inner, cyan outer).
-A: the A_frac plot; L: Parker's profile, exact or linear (the 7 %; haines.profile too).
-V: the visibility alone. M: error against the sphere-light reference; O: god view.)";
+theory.edges (G): the predicted penumbra of the box edge theory.edge (N) (yellow centre, red inner, cyan outer).
+theory.plot (P): the A_frac plot; parker.profile (L): exact or linear (the 7 %; haines.profile too).
+view (V): the visibility alone. measure.overlay (M): error against the sphere-light reference; view.god (O).)";
 
 }  // namespace
 

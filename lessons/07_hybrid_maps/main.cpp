@@ -52,12 +52,12 @@ struct Params {
 const char* const kSummary =
     "Hybrid-resolution shadow maps: a full map merged bottom-up where its depth is smooth, an index to "
     "the kept texels; the paper's claims measured.";
-const char* const kHelp = R"(The map merges 2x2 blocks whose depths agree: L levels (0 = standard map),
-eps0 / max_slope thresholds, C criterion (window depth as the paper, linear, slope).
-V: lit, visibility, levels (the map by level), mask (the scene by level), steps.
+const char* const kHelp = R"(The map merges 2x2 blocks whose depths agree: levels (L) (0 = a standard map),
+eps0 and max_slope thresholds, criterion (C): window depth as the paper, linear, slope.
+view (V): lit, visibility, levels (the map by level), mask (the scene by level), steps.
 The header: stored texels and bytes (root + index) against the full map.
-T: lesson 03's uniform map (uniform.*). G: build on the CPU (the reference).
-M: error and aliasing heatmaps; the figures near edges are in --measure's JSON.)";
+technique (T): lesson 03's uniform map (uniform.*). build (G): on the CPU (the reference).
+measure.overlay (M): error and aliasing heatmaps; the figures near edges are in --measure's JSON.)";
 
 // Exercise 07.2 as the technique's sweep step.
 hybrid::MergeGrid studentSweep(const hybrid::MergeGrid& children, const hybrid::MergeRule& rule, int) {

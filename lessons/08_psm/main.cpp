@@ -51,11 +51,11 @@ struct Params {
 const char* const kSummary =
     "The original perspective shadow map: the depth map in the camera's post-projective space, the light "
     "there, the virtual camera slid back for a light behind; the post-projective view.";
-const char* const kHelp = R"(P: the post-projective view (inset, full): the unit cube, the squashed scene,
+const char* const kHelp = R"(view.post (P): the post-projective view (inset, full): the unit cube, the squashed scene,
 the light where it lands (red: behind the camera), the light camera and the slide.
 Presets: overhead (the best case), side, behind (the slide), facing (dueling frusta).
-T: the uniform map at equal texels. Y turns the camera: watch the slide jump.
-M: ground truth (leaks red, false shadows blue; aliasing m). O: god view.)";
+technique (T): the uniform map at equal texels. turn (Y) turns the camera: watch the slide jump.
+measure.overlay (M): ground truth (leaks red, false shadows blue; aliasing m). view.god (O).)";
 
 // The lesson's exercises as the technique's replaceable steps (impl=student).
 psm::PostProjectiveLight studentLight(const glm::dmat4& viewProj, const glm::dvec4& light) {

@@ -56,11 +56,11 @@ struct Params {
 const char* const kSummary =
     "Perspective shadow maps with the paper's four fixes: inverse projection, unit-cube clipping with the "
     "smallest cone, cube-map faces of the unit cube, world-space texel-size bias; against LiSPSM.";
-const char* const kHelp = R"(I: fix 1, the inverse projection for a light behind the camera (off: the virtual slide).
-C: fix 2, unit-cube clipping: rough receiver volumes, key points, smallest cone.
-F: fix 3, never / auto / always the hidden faces of the unit cube. B: constant or world bias.
-format 16 / 24 / 32f. T: PSM, LiSPSM, uniform (equal texels). P: post-projective view.
-O: god view (volumes, key points, frusta). M: ground truth. V: lit, visibility, maps.)";
+const char* const kHelp = R"(fix.inverse (I): fix 1, the inverse projection for a light behind the camera (off: the virtual slide).
+fix.clip (C): fix 2, unit-cube clipping: rough receiver volumes, key points, smallest cone.
+fix.faces (F): fix 3, never / auto / always the hidden faces of the unit cube. bias (B): constant or world.
+format 16 / 24 / 32f. technique (T): PSM, LiSPSM, uniform (equal texels). view.post (P): post-projective view.
+view.god (O): volumes, key points, frusta. measure.overlay (M): ground truth. view (V): lit, visibility, maps.)";
 
 // The lesson's exercises as the technique's replaceable steps (impl=student).
 psm::Cone studentCone(std::span<glm::dvec3> directions) {

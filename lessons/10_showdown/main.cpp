@@ -61,11 +61,11 @@ struct Params {
 const char* const kSummary =
     "Every technique of the course on one scene at equal texels: uniform, PSM, LiSPSM, cascades, hybrid, "
     "volumes and the soft methods; the A/B split, a four-up view, and the benchmark's time against error.";
-const char* const kHelp = R"(T: the technique (uniform, psm, lispsm, csm, hybrid, volumes, the soft ones, none).
-texels: each light's total budget, shared by a technique's maps (U: equal texels on/off).
-V: lit, visibility, the maps, four-up (quarter.0..3 pick the four). C: cascade colours.
-X: A/B split against ab.preset (one preset per technique). O god view, P post-projective view.
-Soft methods need a spherical light: a soft_* preset turns light1 (a sphere) on. M: ground truth.)";
+const char* const kHelp = R"(technique (T): uniform, psm, lispsm, csm, hybrid, volumes, the soft ones, none.
+texels: each light's total budget, shared by a technique's maps (equal_texels (U): on or off).
+view (V): lit, visibility, the maps, four-up (quarter.0..3 pick the four). csm.colours (C): cascade colours.
+ab.enabled (X): the A/B split against ab.preset (one preset per technique). view.god (O), view.post (P).
+Soft methods need a spherical light: a soft_* preset turns light1 (a sphere) on. measure.overlay (M): ground truth.)";
 
 // One quarter of the four-up view: its own target, its technique's figures, a smoothed wall time.
 struct Quarter {

@@ -4,6 +4,7 @@
 //   node tools/docs/lesson_docs.mjs --bin build/default/bin --write   fill the generated blocks
 //   node tools/docs/lesson_docs.mjs --bin build/default/bin --check   check them and the structure
 //        [--root DIR] [--lesson NN_name --readme FILE]   (one README, e.g. a test fixture)
+//        [--lesson NN_name --help-text FILE]              (a help text checked against the lesson's keys)
 //
 // Generated blocks (between `<!-- NAME: ... -->` and `<!-- /NAME -->`), from the lesson itself:
 //   hotkeys  the lesson's own keys (`lesson --list-hotkeys`), in each lesson README's Controls
@@ -21,6 +22,10 @@
 //   exercise's id and `make grade LESSON=NN`), Measured, and optionally References; every
 //   `--preset NAME` anywhere names a preset the lesson has; no ctest grading command (ctest does
 //   not rebuild) and no dated diary (a month and a year: the history lives in git).
+// Each lesson's F1 help text (`--info`'s help) names a key only where it names what the key drives:
+// a key mentioned as "T:", "(T)", "(T: ...)", "(1)", "T cycles/toggles/turns" or "press T" must be bound
+// (`--list-hotkeys`) to a parameter named on the same line (the generated key list follows the text
+// in the F1 window; a hand-written letter drifts: lesson 05's said A and E, keys the fly camera took).
 // Exit 0 when all is well (or written), 1 with one `file:line: problem` per finding, 2 on bad usage.
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -40,7 +45,7 @@ function usage(message) {
 }
 
 function parseArgs(argv) {
-  const o = { root: path.resolve(HERE, '../..'), bin: null, mode: null, lesson: null, readme: null };
+  const o = { root: path.resolve(HERE, '../..'), bin: null, mode: null, lesson: null, readme: null, helpText: null };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const value = () => (argv[i + 1] === undefined ? usage(`${a} needs a value`) : argv[++i]);
@@ -48,11 +53,12 @@ function parseArgs(argv) {
     else if (a === '--root') o.root = path.resolve(value());
     else if (a === '--lesson') o.lesson = value();
     else if (a === '--readme') o.readme = path.resolve(value());
+    else if (a === '--help-text') o.helpText = path.resolve(value());
     else if (a === '--write' || a === '--check') o.mode = a.slice(2);
     else usage(`unknown argument '${a}'`);
   }
   if (!o.bin || !o.mode) usage('--bin and one of --write, --check are required');
-  if (!!o.lesson !== !!o.readme) usage('--lesson and --readme go together');
+  if (!!o.lesson !== !!(o.readme || o.helpText)) usage('--lesson goes with --readme or --help-text');
   return o;
 }
 
@@ -69,10 +75,12 @@ function lessonFacts(root, bin, name) {
   const presets = run(binary, ['--list-presets']).split('\n').map((s) => s.trim()).filter(Boolean);
   const hotkeys = run(binary, ['--list-hotkeys']).split('\n').filter((l) => l.trim() && !l.includes('(framework)'))
     .map((l) => l.trim().split(/\s{2,}/));
+  const framework = run(binary, ['--list-hotkeys']).split('\n').filter((l) => l.includes('(framework)'))
+    .map((l) => l.trim().split(/\s+/)[0]);
   const main = fs.readFileSync(path.join(root, 'lessons', name, 'main.cpp'), 'utf8');
   const passes = [...main.matchAll(/^\s*\/\/ ==== (\d+[a-z]?)\. /gm)].map((m) => m[1]);
   const comments = presetComments(fs.readFileSync(path.join(root, 'lessons', name, 'presets.txt'), 'utf8'));
-  return { name, info, presets, hotkeys, passes, comments };
+  return { name, info, presets, hotkeys, framework, passes, comments };
 }
 
 // presets.txt: each [name] and the comment lines under it, joined.
@@ -231,6 +239,31 @@ export function checkReadme(file, text, f) {
   return problems;
 }
 
+// The keys a help text mentions, each with its line: "T:", "(T)", "(T: ...)", "T cycles", "press T".
+// A digit counts only as "(1)" or "press 1": "(0: hard)" is a value.
+const KEY_MENTIONS = [/\(([A-Z])[):]/g, /\((\d)\)/g, /(?:^|[.;]\s+)([A-Z]):/g, /[Pp]ress ([A-Z0-9])\b/g,
+  /(?:^|[.;]\s+)([A-Z]) (?:cycles|toggles|turns|steps|switches)\b/g];
+
+export function checkHelp(file, text, f) {
+  const problems = [];
+  const bound = new Map(f.hotkeys.map(([key, param]) => [key, param]));
+  text.split('\n').forEach((line, i) => {
+    const keys = new Set();
+    for (const re of KEY_MENTIONS) for (const m of line.matchAll(re)) keys.add(m[1]);
+    for (const k of keys) {
+      const param = bound.get(k);
+      if (!param) {
+        const taken = f.framework.includes(k) ? ` (${k} is the framework's)` : '';
+        problems.push(`${file}:${i + 1}: the help names key ${k}, which drives nothing in this lesson${taken}; ` +
+          `its keys: ${[...bound].map(([key, p]) => `${key} ${p}`).join(', ')}`);
+      } else if (!line.includes(param)) {
+        problems.push(`${file}:${i + 1}: the help names key ${k}, which drives ${param}; the line does not name ${param}`);
+      }
+    }
+  });
+  return problems;
+}
+
 function main() {
   const o = parseArgs(process.argv.slice(2));
   const names = o.lesson ? [o.lesson]
@@ -238,6 +271,13 @@ function main() {
   let facts;
   try { facts = names.map((n) => lessonFacts(o.root, o.bin, n)); } catch (e) { console.error(`lesson_docs: ${e.message}`); process.exit(1); }
   const problems = [];
+  if (o.helpText) {
+    problems.push(...checkHelp(path.relative(process.cwd(), o.helpText), fs.readFileSync(o.helpText, 'utf8'), facts[0]));
+    for (const p of problems) console.log(p);
+    console.log(problems.length ? `lesson_docs: ${problems.length} problem(s)` : 'lesson_docs: the help text names its keys right');
+    process.exit(problems.length ? 1 : 0);
+  }
+  for (const f of facts) problems.push(...checkHelp(`lesson_${f.name} --info help`, f.info.help, f));
   const files = facts.map((f) => ({ f, file: o.readme ?? path.join(o.root, 'lessons', f.name, 'README.md') }));
   if (!o.lesson) {
     files.push({ top: 'lessons', file: path.join(o.root, 'README.md') });
