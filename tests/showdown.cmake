@@ -116,3 +116,10 @@ endfunction()
 bench_frames_case(four_up four_up "^quarter 3: csm$")
 bench_frames_case(four_up_mixed four_up_mixed "^quarter 1: volumes$")
 bench_frames_case(csm_colours csm_colours "^scene$")
+
+# The four-up view's labels and its refusal to be measured as one picture (check_four_up_ui.cmake).
+if(TARGET lesson_10_showdown)
+  add_test(NAME gpu.showdown.four_up_ui COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
+           -DOUT_DIR=${CMAKE_BINARY_DIR}/test-showdown/four_up_ui -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_four_up_ui.cmake)
+  set_tests_properties(gpu.showdown.four_up_ui PROPERTIES LABELS gpu)
+endif()

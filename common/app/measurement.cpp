@@ -231,7 +231,11 @@ void Measurement::measureAliasing(ImageF jacobian, const std::vector<std::uint8_
 
 void Measurement::compute(const MeasureSource& source) {
   result_ = {};
-  if (!source.scene || source.lights.empty()) return;
+  if (!source.scene || source.lights.empty() || !source.unmeasurable.empty()) {
+    result_.unmeasurable = source.unmeasurable;
+    overlayTexture_.reset();  // no heatmap of an earlier picture over this one
+    return;
+  }
   if (light_ >= int(source.lights.size()))
     throw std::runtime_error("measure.light = " + std::to_string(light_) + ", but the lesson has " +
                              std::to_string(source.lights.size()) + " light(s): valid 0.." +
@@ -318,6 +322,7 @@ glm::vec3 toColor(measure::Rgb8 c) { return glm::vec3(c.r, c.g, c.b) / 255.0f; }
 }  // namespace
 
 std::optional<Legend> Measurement::legend() const {
+  if (!result_.unmeasurable.empty()) return std::nullopt;  // no overlay: no key to it
   if (overlay_ == Overlay::Error)
     return Legend{"error against ground truth",
                   {{toColor(measure::kLeakColor), "light leak: lit, should be shadowed"},
@@ -342,7 +347,7 @@ std::vector<std::pair<std::string, std::string>> Measurement::summary() const {
   std::vector<std::pair<std::string, std::string>> out;
   if (!active() && !result_.valid) return out;
   if (!result_.valid) {
-    out.push_back({"measure", "no scene or lights to measure"});
+    out.push_back({"measure", result_.unmeasurable.empty() ? "no scene or lights to measure" : result_.unmeasurable});
     return out;
   }
   char buf[160];

@@ -61,10 +61,14 @@ struct MeasureSource {
   // distance of a reference shadow boundary, across the light (measure::shadowEdgeBand): world
   // units for a directional light, a width at unit distance for a spot or point light. 0: not.
   float edgeBand = 0.0f;
+  // Why this frame's picture cannot be measured against one ground truth, "" when it can (lesson
+  // 10's four-up view shows four techniques): no figures and no overlay then, this note instead.
+  std::string unmeasurable;
 };
 
 struct MeasureResult {
   bool valid = false;
+  std::string unmeasurable;  // the lesson's reason when it was not measured (MeasureSource::unmeasurable)
   bool soft = false;
   measure::HardShadowErrors hard;
   measure::SoftShadowErrors soft_;

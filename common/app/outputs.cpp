@@ -103,7 +103,11 @@ nlohmann::ordered_json figures(const MeasureResult& r) {
 
 void writeMeasurementJson(const std::string& path, const LessonInfo& info, const MeasureResult& r,
                           const std::vector<Counter>& counters, const gl::GpuTimers& timers, const SplitFigures* b) {
-  if (!r.valid) throw std::runtime_error("--measure: nothing was measured (does the lesson describe its scene?)");
+  if (!r.valid)
+    throw std::runtime_error("--measure: " +
+                             (r.unmeasurable.empty()
+                                  ? std::string("nothing was measured (does the lesson describe its scene?)")
+                                  : r.unmeasurable));
   nlohmann::ordered_json j;
   j["lesson"] = info.name;
   j.update(figures(r));

@@ -151,20 +151,40 @@ class ShowdownLesson : public tech::ShadowLesson {
     postView_.draw(c, technique, insets);
   }
 
+  // The four-up view shows four techniques in one frame: one ground truth cannot judge it.
+  MeasureSource measureSource() override {
+    MeasureSource s = ShadowLesson::measureSource();
+    if (p_.view != View::FourUp) return s;
+    std::string quarters;
+    for (int q = 0; q < 4; ++q) quarters += (q ? ", " : "") + techniques_[p_.quarter[q]].name();
+    s.unmeasurable =
+        "not in the four-up view (four techniques in one frame): measure one at a time with view=lit "
+        "and technique= one of " +
+        quarters;
+    return s;
+  }
+
+  // Each quarter's label in its corner by the screen's middle line (top row: bottom right; bottom
+  // row: top right), wrapped to the quarter's width, so the labels never run into each other and stay
+  // clear of the header (top left), the panel (top right) and the exercises (bottom left); small
+  // windows, so --ui-layout reports them ("quarter N label").
   void gui() override {
     if (p_.view != View::FourUp) return;
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();  // under the panels: a long label must not overwrite them
     const ImVec2 size = ImGui::GetIO().DisplaySize;
-    const float line = ImGui::GetTextLineHeightWithSpacing();
-    // At each quarter's bottom left, clear of the header, and in the bottom row a line above the
-    // exercises bar; the panel, drawn over the labels, hides the end of a long one on the right.
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                   ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoNav;
     for (int q = 0; q < 4; ++q) {
-      const float lift = q < 2 ? line : 2.0f * line;
-      const ImVec2 at((q % 2) * size.x * 0.5f + 8.0f, (q / 2 + 1) * size.y * 0.5f - lift - 6.0f);
-      const char* text = quarters_[std::size_t(q)].label.c_str();
-      const ImVec2 t = ImGui::CalcTextSize(text);
-      draw->AddRectFilled(ImVec2(at.x - 4, at.y - 4), ImVec2(at.x + t.x + 4, at.y + t.y + 4), IM_COL32(0, 0, 0, 180));
-      draw->AddText(at, IM_COL32(255, 255, 255, 255), text);
+      const bool top = q < 2;
+      const ImVec2 corner((q % 2 + 1) * size.x * 0.5f - 6.0f, size.y * 0.5f + (top ? -6.0f : 6.0f));
+      ImGui::SetNextWindowPos(corner, ImGuiCond_Always, ImVec2(1, top ? 1.0f : 0.0f));
+      ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(size.x * 0.5f - 12.0f, size.y * 0.5f));
+      ImGui::SetNextWindowBgAlpha(0.7f);
+      ImGui::Begin(("quarter " + std::to_string(q) + " label").c_str(), nullptr, flags);
+      ImGui::PushTextWrapPos(size.x * 0.5f - 12.0f - 2 * ImGui::GetStyle().WindowPadding.x);
+      ImGui::TextUnformatted(quarters_[std::size_t(q)].label.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::End();
     }
   }
 
@@ -200,7 +220,8 @@ class ShowdownLesson : public tech::ShadowLesson {
   // ==== the four-up view: each quarter a technique on the same camera, drawn into its own target ====
   // at a quarter of the frame (the same aspect), then copied into place. Its wall time (glFinish at
   // both ends) is the quarter's figure; the framework's timers see each quarter as one pass
-  // ("quarter 0: psm", in --bench too), not the technique's own passes; measurement sees the frame.
+  // ("quarter 0: psm", in --bench too), not the technique's own passes; the ground truth does not
+  // judge it (measureSource: one truth, four techniques).
   void renderFourUp(const FrameInfo& f) {
     const int w = std::max(f.width / 2, 1), h = std::max(f.height / 2, 1);
     counters.clear();
@@ -245,10 +266,10 @@ class ShowdownLesson : public tech::ShadowLesson {
   std::string quarterLabel(int q, const tech::ShadowTechnique& t) const {
     const tech::ShadowStats& s = t.stats();
     char b[160];
-    std::snprintf(b, sizeof b, "%s  %.0f ms  %.2f Mtexels  %zuk tris%s  %.1f MB", t.name().c_str(),
+    std::snprintf(b, sizeof b, "%s  %.0f ms\n%.2f Mtexels  %zuk tris  %.0f MB%s", t.name().c_str(),
                   quarters_[std::size_t(q)].ms, double(s.texels + s.kept.texels) / 1e6,
-                  (s.triangles + s.kept.triangles) / 1000, s.reusedMaps ? " (maps kept)" : "",
-                  double(s.bytes) / (1024.0 * 1024.0));
+                  (s.triangles + s.kept.triangles) / 1000, double(s.bytes) / (1024.0 * 1024.0),
+                  s.reusedMaps ? "  kept" : "");
     return b;
   }
 
