@@ -8,7 +8,8 @@
 //
 // Generated blocks (between `<!-- NAME: ... -->` and `<!-- /NAME -->`), from the lesson itself:
 //   hotkeys  the lesson's own keys (`lesson --list-hotkeys`), in each lesson README's Controls
-//   presets  every preset and the comment above it in presets.txt, in Controls
+//   presets  every preset and what it shows (the comment above or under it in presets.txt), in
+//            Controls; a preset without one is a finding
 //   lessons  the top README's table: number, title, summary, time in class, prerequisites (`--info`)
 //   assignments  docs/teaching.md's table: each lesson's exercises (id, function, C++ or GLSL) and
 //            the command that grades them (`--info`)
@@ -83,15 +84,22 @@ function lessonFacts(root, bin, name) {
   return { name, info, presets, hotkeys, framework, passes, comments };
 }
 
-// presets.txt: each [name] and the comment lines under it, joined.
+// presets.txt: each [name] and what it shows: the comment block right above it (a section line
+// "# ----" and the file's opening block are not), else the comment lines right under it, joined.
 function presetComments(text) {
   const out = new Map();
-  let current = null;
-  for (const line of text.split('\n')) {
+  const lines = text.split('\n');
+  lines.forEach((line, i) => {
     const m = /^\[([^\]]+)\]/.exec(line);
-    if (m) { current = m[1]; out.set(current, ''); continue; }
-    if (current && line.startsWith('#')) out.set(current, `${out.get(current)} ${line.slice(1).trim()}`.trim());
-  }
+    if (!m) return;
+    const above = [];
+    let j = i - 1;
+    for (; j >= 0 && lines[j].startsWith('#') && !lines[j].startsWith('# ----'); --j) above.unshift(lines[j]);
+    const below = [];
+    for (let k = i + 1; k < lines.length && lines[k].startsWith('#'); ++k) below.push(lines[k]);
+    const chosen = above.length && j >= 0 ? above : below;
+    out.set(m[1], chosen.map((l) => l.slice(1).trim()).join(' ').trim());
+  });
   return out;
 }
 
@@ -216,6 +224,9 @@ export function checkReadme(file, text, f) {
     const r = blockRange(text, name);
     if (!r) { at(controls?.line ?? 1, `no generated ${name} block (<!-- ${name}: ... --> ... <!-- /${name} -->)`); continue; }
     if (text.slice(r.start, r.end) !== make(f) + '\n') at(lineOf(text, r.start), `the ${name} block is not what the lesson says now: run make docs`);
+  }
+  for (const p of f.presets) {
+    if (p !== 'default' && !f.comments.get(p)) problems.push(`${file}:1: preset ${p} says nothing of what it shows (a comment above [${p}] in presets.txt)`);
   }
   const tryIt = sec('What to try');
   if (tryIt) {
