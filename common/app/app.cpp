@@ -451,8 +451,12 @@ class Runner {
     }
     if (godView_.enabled()) {
       lesson_.timers.setEnabled(false);
-      godView_.draw(fi, lesson_.camera, lesson_.debug, [&](const FrameInfo& g) { lesson_.render(g); });
+      const MeasureSource source = info_.measurable ? lesson_.measureSource() : MeasureSource{};
+      const Aabb bounds = source.scene ? source.scene->bounds() : Aabb{};
+      godView_.draw(fi, lesson_.camera, lesson_.debug, source.scene ? &bounds : nullptr,
+                    [&](const FrameInfo& g) { lesson_.render(g); });
       lesson_.insets.push_back(godView_.inset(fi.width, fi.height));
+      lesson_.legends.push_back(godView_.legend(lesson_.debug));
       lesson_.timers.setEnabled(true);
       glViewport(0, 0, fi.width, fi.height);
     }
@@ -488,12 +492,12 @@ class Runner {
     if (!initError_.empty()) errors.insert(errors.begin(), initError_);
     std::vector<Legend> legends = lesson_.legends;
     if (const auto l = measurement_.legend()) legends.push_back(*l);
+    ui_.reserve(lesson_.insets, height_);  // first: the legend, the header and the panels stop above the insets
     const Measurement* measured = info_.measurable ? &measurement_ : nullptr;
-    if (ab_.enabled())  // first: the legends and the exercises stay above the labels
+    if (ab_.enabled())  // then: the legends and the exercises stay above the labels
       ui_.splitLabels(ab_.divider(), ab_.labelA(measured, keyFigures(lesson_.counters, false)),
                       ab_.labelB(info_.keyFigures));
-    ui_.legends(legends);                  // then: the header stops above them (and above the exercises panel)
-    ui_.reserve(lesson_.insets, height_);  // the header and the panels stop above the insets
+    ui_.legends(legends);  // bottom right, above the labels and the insets there; the panel stops above it
     if (panels) drawPanels(shown, errors);
     lesson_.gui();
     ui_.banner(banner_);

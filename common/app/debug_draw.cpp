@@ -6,6 +6,12 @@
 
 namespace shadowlab {
 
+void DebugDraw::name(const glm::vec4& color, const std::string& meaning) {
+  for (const Name& n : names_)
+    if (n.color == color || n.meaning == meaning) return;
+  names_.push_back({color, meaning});
+}
+
 void DebugDraw::line(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color) {
   lines_.push_back({a, b, color});
 }

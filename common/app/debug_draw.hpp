@@ -20,7 +20,17 @@ class DebugDraw {
     glm::vec3 a, b;
     glm::vec4 color;
   };
-  void clear() { lines_.clear(); }
+  void clear() {
+    lines_.clear();
+    names_.clear();
+  }
+  // What a colour means in the god view's legend ("light frustum"); the first name of a colour wins.
+  void name(const glm::vec4& color, const std::string& meaning);
+  struct Name {
+    glm::vec4 color;
+    std::string meaning;
+  };
+  const std::vector<Name>& names() const { return names_; }
   void line(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color);
   // The 12 edges of the volume that `viewProj` maps onto the clip cube [-1,1]^3 (a camera's or a
   // light's frustum, or an orthographic box).
@@ -33,6 +43,7 @@ class DebugDraw {
 
  private:
   std::vector<Line> lines_;
+  std::vector<Name> names_;
 };
 
 // Draws lines into the bound framebuffer with shaders/common/lines.{vert,frag}: the god view's

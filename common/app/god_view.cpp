@@ -22,19 +22,35 @@ Inset GodView::inset(int frameWidth, int frameHeight) const {
   return {"god view inset", frameWidth - w - 8, 8, w, h};
 }
 
-void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const DebugDraw& shapes,
+namespace {
+constexpr glm::vec4 kViewerColour{1, 1, 1, 1};  // white: the lights' colours are warm and cool
+}
+
+Legend GodView::legend(const DebugDraw& shapes) const {
+  Legend l{"god view", {{glm::vec3(kViewerColour), "the viewer's frustum"}}};
+  for (const DebugDraw::Name& n : shapes.names()) l.entries.push_back({glm::vec3(n.color), n.meaning});
+  return l;
+}
+
+void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const DebugDraw& shapes, const Aabb* scene,
                    const std::function<void(const FrameInfo&)>& renderLesson) {
   const Inset corner = inset(frame.width, frame.height);
   const int w = corner.width, h = corner.height;
   if (target_.width != w || target_.height != h) target_ = gl::makeRenderTarget(w, h, "god view");
   lines_.build();
 
-  // Frame what the lesson's shapes span (scene bounds, light frusta and cones) and the viewer's eye;
-  // the viewer's own frustum reaches its far plane and would shrink everything else to a dot.
+  // Frame the scene and the viewer's eye: the scene fills the inset (framing every shape, a far
+  // light frustum shrank the scene to some 100x50 px of it); without a scene, what the shapes span.
+  // The viewer's own frustum reaches its far plane and would shrink everything else to a dot.
   glm::vec3 lo = viewer.position(), hi = lo;
-  for (const auto& l : shapes.lines()) {
-    lo = glm::min(lo, glm::min(l.a, l.b));
-    hi = glm::max(hi, glm::max(l.a, l.b));
+  if (scene && !scene->empty()) {
+    lo = glm::min(lo, scene->min);
+    hi = glm::max(hi, scene->max);
+  } else {
+    for (const auto& l : shapes.lines()) {
+      lo = glm::min(lo, glm::min(l.a, l.b));
+      hi = glm::max(hi, glm::max(l.a, l.b));
+    }
   }
   OrbitCamera from = viewer;
   from.yaw = viewer.yaw + yaw_;
@@ -55,7 +71,7 @@ void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const Debu
 
   // The viewer's frustum, then the lesson's shapes.
   DebugDraw all = shapes;
-  all.frustum(viewer.projection(float(frame.width) / float(frame.height)) * viewer.view(), {1, 1, 0.3f, 1});
+  all.frustum(viewer.projection(float(frame.width) / float(frame.height)) * viewer.view(), kViewerColour);
   glBindFramebuffer(GL_FRAMEBUFFER, g.framebuffer);
   glViewport(0, 0, w, h);
   lines_.draw(all.lines(), g.projection * g.view, true, LineRenderer::projectorWidth(frame.height));

@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "app/debug_draw.hpp"
+#include "app/measurement.hpp"
 #include "app/lesson.hpp"
 #include "core/camera.hpp"
 #include "gl/objects.hpp"
@@ -17,8 +18,11 @@ class GodView {
   void declare(ParamRegistry& params);
   bool enabled() const { return enabled_; }
   // Renders the inset into `frame`'s framebuffer. `renderLesson` draws the lesson for a FrameInfo.
-  void draw(const FrameInfo& frame, const OrbitCamera& viewer, const DebugDraw& shapes,
+  // Frames the scene (`scene`: its bounds, with the viewer's eye; without it, the shapes' extent).
+  void draw(const FrameInfo& frame, const OrbitCamera& viewer, const DebugDraw& shapes, const Aabb* scene,
             const std::function<void(const FrameInfo&)>& renderLesson);
+  // What the god view's colours mean: the viewer's frustum, then the shapes the lesson named.
+  Legend legend(const DebugDraw& shapes) const;
   // Where draw() puts the inset in a frame of this size (bottom right).
   Inset inset(int frameWidth, int frameHeight) const;
 

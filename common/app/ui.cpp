@@ -65,6 +65,7 @@ void Ui::newFrame(double dt, int width, int height) {
   layout_.clear();
   reserved_.clear();
   legendTop_ = 1e9f;
+  legendRect_ = {};
 }
 
 void Ui::recordWindow(const char* name) {
@@ -89,14 +90,45 @@ float Ui::roomAbove(float left, float right, float height) const {
 void Ui::legends(const std::vector<Legend>& legends) {
   if (legends.empty()) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  // Above the A/B labels when the split is on (splitLabels() ran first and lowered legendTop_).
-  ImGui::SetNextWindowPos(ImVec2(8 * scale_, std::min(vp->Size.y, legendTop_) - 8 * scale_), ImGuiCond_Always,
-                          ImVec2(0, 1));
+  // Bottom right: the bottom-left corner holds the exercises and the post-projective view's inset
+  // (the legend covered that inset); above the A/B labels when the split is on (splitLabels() ran
+  // first and lowered legendTop_) and above the insets in the right column (the god view's).
+  const float right = vp->Size.x - 8 * scale_;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float width = 0, lines = 0;  // at the UI's font size
+  for (const Legend& l : legends) {
+    width = std::max(width, ImGui::CalcTextSize(l.title.c_str()).x);
+    for (const Legend::Entry& e : l.entries)
+      width =
+          std::max(width, ImGui::GetFontSize() * 1.6f + style.ItemSpacing.x + ImGui::CalcTextSize(e.label.c_str()).x);
+    lines += 1.0f + float(l.entries.size());
+  }
+  float bottom = std::min(vp->Size.y, legendTop_) - 8 * scale_;
+  // The right column (the header keeps the left), under the panel's title bar; smaller type where a
+  // projector's UI scale and several views leave it little room (down to 45 %: at UI scale 2, about
+  // the size of scale 1).
+  const float top = 16 * scale_ + ImGui::GetFrameHeight();
+  const float columnWidth = vp->Size.x * (1.0f - kHeaderShare) - 16 * scale_;
+  const float spacing = style.ItemSpacing.y * 0.5f;  // the entries a little closer than elsewhere
+  auto fit = [&](float b) {
+    return std::clamp(std::min((columnWidth - 2 * style.WindowPadding.x) / std::max(width, 1.0f),
+                               (b - top - 2 * style.WindowPadding.y - lines * spacing) /
+                                   std::max(lines * ImGui::GetFontSize(), 1.0f)),
+                      0.45f, 1.0f);
+  };
+  float fontScale = fit(bottom);
+  const float left = right - width * fontScale - 2 * style.WindowPadding.x;
+  for (const Rect& r : reserved_)  // above every inset under its own columns
+    if (r.x < right && r.x + r.w > left && r.y < bottom) bottom = std::min(bottom, r.y - 8 * scale_);
+  fontScale = std::min(fontScale, fit(bottom));
+  ImGui::SetNextWindowPos(ImVec2(right, bottom), ImGuiCond_Always, ImVec2(1, 1));
   ImGui::SetNextWindowBgAlpha(1.0f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoInputs;
+  ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(style.ItemSpacing.x, spacing));
   ImGui::Begin("Legend", nullptr, flags);
+  ImGui::SetWindowFontScale(fontScale);
   for (const Legend& l : legends) {
     ImGui::TextUnformatted(l.title.c_str());
     for (const Legend::Entry& e : l.entries) {
@@ -108,8 +140,9 @@ void Ui::legends(const std::vector<Legend>& legends) {
     }
   }
   recordWindow("Legend");
-  legendTop_ = ImGui::GetWindowPos().y;
+  legendRect_ = layout_.back();
   ImGui::End();
+  ImGui::PopStyleVar();
 }
 
 void writeUiLayout(const std::string& path, int width, int height, const std::vector<Ui::Rect>& rects) {
@@ -371,6 +404,8 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   float maxHeight = vp->Size.y - 16 * scale_ - labels;
   const float left = vp->Size.x - 8 * scale_ - width;
   maxHeight = roomAbove(left, vp->Size.x, maxHeight);
+  if (legendRect_.w > 0 && legendRect_.x < vp->Size.x && legendRect_.x + legendRect_.w > left)
+    maxHeight = std::min(maxHeight, legendRect_.y - 16 * scale_);  // the legend (bottom right) stays visible
   ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
                                       ImVec2(vp->Size.x, std::max(maxHeight, 3 * ImGui::GetFrameHeight())));
   ImGui::SetNextWindowBgAlpha(1.0f);  // opaque, as the header

@@ -85,6 +85,7 @@ class Ui {
   std::vector<Rect> reserved_;  // this frame's insets, top-left origin
   float legendTop_ = 1e9f;      // the top of the bottom-left stack (legend, exercises) this frame
   float headerBottom_ = 0;      // where the stats window starts
+  Rect legendRect_;             // this frame's legend (bottom right): the panel stops above it
   bool panelApplied_ = false;   // the open state last given to ImGui (a click may change it there)
   bool panelSet_ = false;
   bool exercisesOpen_ = false;  // last frame's: collapsed, the exercises' bar is as narrow as its title

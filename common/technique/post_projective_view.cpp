@@ -96,8 +96,25 @@ void PostProjectiveView::drawScene(const ShadowContext& c, const glm::mat4& came
   glEnable(GL_CULL_FACE);
 }
 
-void PostProjectiveView::drawLines(const ShadowContext& c, const ShadowTechnique& t, int light,
-                                   const glm::dmat4& camera, const glm::mat4& view) {
+// What each colour of the view means, in the order the legend lists them.
+Legend postProjectiveLegend(const std::vector<glm::vec4>& drawn) {
+  const std::pair<glm::vec4, const char*> meanings[] = {{kCube, "unit cube: the view frustum"},
+                                                        {kEyeRays, "eye rays, parallel from -infinity"},
+                                                        {kInfinity, "the plane at infinity"},
+                                                        {kPalette.light, "the light"},
+                                                        {kPalette.lightBehind, "the light, behind the camera"},
+                                                        {kPalette.realCube, "the real camera's cube"},
+                                                        {kPalette.map, "a map's light camera"},
+                                                        {kPalette.cone, "the cone over the receivers"},
+                                                        {kPalette.keyPoint, "key points"}};
+  Legend l{"post-projective view", {}};
+  for (const auto& [colour, meaning] : meanings)
+    if (std::find(drawn.begin(), drawn.end(), colour) != drawn.end()) l.entries.push_back({glm::vec3(colour), meaning});
+  return l;
+}
+
+std::vector<glm::vec4> PostProjectiveView::drawLines(const ShadowContext& c, const ShadowTechnique& t, int light,
+                                                     const glm::dmat4& camera, const glm::mat4& view) {
   psm::PostProjectiveShapes shapes;
   addFrame(shapes, camera, psm::homogeneousLight(c.lights[std::size_t(light)]));
   if (const auto* s = dynamic_cast<const PostProjectiveSubject*>(&t)) s->describePostProjective(c, light, shapes);
@@ -106,7 +123,9 @@ void PostProjectiveView::drawLines(const ShadowContext& c, const ShadowTechnique
   };
   std::vector<V> v;
   v.reserve(shapes.lines().size() * 2);
+  std::vector<glm::vec4> colours;
   for (const auto& l : shapes.lines()) {
+    if (std::find(colours.begin(), colours.end(), l.colour) == colours.end()) colours.push_back(l.colour);
     // Scaled to a common length first: a far point's huge coordinates would lose float digits.
     const double sa = std::max(glm::length(l.a), 1e-300), sb = std::max(glm::length(l.b), 1e-300);
     v.push_back({glm::vec4(l.a / sa), l.colour});
@@ -131,9 +150,11 @@ void PostProjectiveView::drawLines(const ShadowContext& c, const ShadowTechnique
   }
   glDepthFunc(GL_LESS);
   glBindVertexArray(0);
+  return colours;
 }
 
-void PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, std::vector<Inset>& insets, int light) {
+void PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, std::vector<Inset>& insets,
+                              std::vector<Legend>& legends, int light) {
   if (mode_ == Mode::Off || c.frame.godView || c.lights.empty()) return;
   auto timer = gl::TimerScope(c.timers, "post-projective view");
   if (light < 0) light = std::min(light_, int(c.lights.size()) - 1);
@@ -152,7 +173,7 @@ void PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, 
   for (int k = 0; k < 7; ++k) glEnable(GLenum(GL_CLIP_DISTANCE0 + k));
   drawScene(c, glm::mat4(camera), view);
   for (int k = 1; k < 7; ++k) glDisable(GLenum(GL_CLIP_DISTANCE0 + k));
-  drawLines(c, t, light, camera, view);
+  legends.push_back(postProjectiveLegend(drawLines(c, t, light, camera, view)));
   glDisable(GL_CLIP_DISTANCE0);
   composite(c, corner.x, corner.y, w, h);
   if (const auto i = inset(c.frame.width, c.frame.height)) insets.push_back(*i);

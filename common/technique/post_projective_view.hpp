@@ -16,6 +16,7 @@
 // infinity where projective geometry puts them (view.post_behind).
 #include <string>
 
+#include "app/measurement.hpp"
 #include "gl/objects.hpp"
 #include "gl/program.hpp"
 #include "technique/technique.hpp"
@@ -51,8 +52,10 @@ class PostProjectiveView {
   // Draws technique t's view of light `light` (-1: the one the view's parameter names) into
   // c.frame's framebuffer, after the lit frame, timed as "post-projective view"; nothing when the
   // view is off or in a god-view frame. In inset mode the inset goes into `insets` (the lesson's
-  // Lesson::insets), so the UI keeps clear of it.
-  void draw(const ShadowContext& c, const ShadowTechnique& t, std::vector<Inset>& insets, int light = -1);
+  // Lesson::insets), so the UI keeps clear of it; its colour key (the colours drawn, named) goes
+  // into `legends` (Lesson::legends).
+  void draw(const ShadowContext& c, const ShadowTechnique& t, std::vector<Inset>& insets, std::vector<Legend>& legends,
+            int light = -1);
   // In inset mode, where the inset goes in a frameWidth x frameHeight frame (bottom-left, GL
   // pixels): lessons report it in Lesson::insets so the UI stays clear of it.
   std::optional<Inset> inset(int frameWidth, int frameHeight) const;
@@ -65,8 +68,9 @@ class PostProjectiveView {
  private:
   glm::mat4 displayView() const;
   void drawScene(const ShadowContext& c, const glm::mat4& camera, const glm::mat4& display);
-  void drawLines(const ShadowContext& c, const ShadowTechnique& t, int light, const glm::dmat4& camera,
-                 const glm::mat4& display);
+  // Returns the colours it drew, for the legend.
+  std::vector<glm::vec4> drawLines(const ShadowContext& c, const ShadowTechnique& t, int light,
+                                   const glm::dmat4& camera, const glm::mat4& display);
   void composite(const ShadowContext& c, int x, int y, int w, int h);
 
   Mode mode_ = Mode::Off;

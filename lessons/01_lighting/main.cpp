@@ -165,7 +165,10 @@ class LightingLesson : public Lesson {
       for (const Light& l : p_.lights) {
         if (!l.enabled) continue;
         const glm::vec3 at = l.kind == LightKind::Directional ? camera.target - 6.0f * l.direction : l.position;
-        if (l.kind == LightKind::Spot) debug.cone(l.position, l.direction, l.spotOuter, 6.0f, glm::vec4(l.color, 1));
+        if (l.kind == LightKind::Spot) {
+          debug.cone(l.position, l.direction, l.spotOuter, 6.0f, glm::vec4(l.color, 1));
+          debug.name(glm::vec4(l.color, 1), "a spot's cone");
+        }
         unlit_.set("uMvp", viewProj * glm::translate(glm::mat4(1), at));
         unlit_.set("uColor", glm::vec4(glm::min(l.color * 1.5f, glm::vec3(1)), 1));
         gizmo_.draw();

@@ -155,8 +155,10 @@ class ShadowMapLesson : public Lesson {
     const glm::mat4 textureMatrix = student ? ex02::shadowTextureMatrix(light.projection, light.view)
                                             : shadow::textureMatrix(light.projection, light.view);
     debug.frustum(light.viewProj(), {1.0f, 0.9f, 0.3f, 1.0f});
+    debug.name({1.0f, 0.9f, 0.3f, 1.0f}, "the light's frustum: what its map covers");
     debug.cone(p_.light.position, glm::normalize(p_.light.direction), p_.light.spotOuter, 12.0f,
                {1.0f, 0.7f, 0.2f, 1.0f});
+    debug.name({1.0f, 0.7f, 0.2f, 1.0f}, "the spot's cone");
 
     // ==== 1. shadow map: depth from the light ======================================================
     // The god view re-renders the frame from outside: the map the viewer's frame made is reused;

@@ -51,7 +51,8 @@ struct Params {
 const char* const kSummary =
     "Bias family, resolution, PCF family, a directional light fitted to the view with caster culling and "
     "texel snapping, cube maps, several lights.";
-const char* const kHelp = R"(Bias: the bias.* sliders, cull_front (B), bias.normal_offset (N: 0 <-> default), bias.receiver_plane (Y).
+const char* const kHelp =
+    R"(Bias: the bias.* sliders, cull_front (B), bias.normal_offset (N: 0 <-> default), bias.receiver_plane (Y).
 Filtering: filter (P) cycles nearest, hardware 2x2, N x N, Poisson; map_size 256..8192.
 Fit: fit (F) scene or view; cull_casters (K): culled casters in the header; snap (U) with
 drift (G): shimmer without snapping. light0..light2 (1 2 3): sun, point (cube map), spot.

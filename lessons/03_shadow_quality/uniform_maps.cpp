@@ -163,8 +163,14 @@ void UniformShadowMaps::pushShapes(const ShadowContext& c) const {
     const glm::vec4 colour = lightColour(i);
     if (l.type == Type::Ortho || l.type == Type::Perspective) c.debug.frustum(l.camera.viewProj(), colour);
     if (l.type == Type::Cube) c.debug.cross(c.lights[i].position, 0.5f, colour);
+    if (l.type != Type::None)
+      c.debug.name(colour, "light" + std::to_string(i) +
+                               (l.type == Type::Cube ? "'s cube map (a cross at the light)" : "'s map"));
   }
-  if (p_.fit == Fit::View) c.debug.box(c.scene.bounds(), {0.4f, 0.4f, 0.4f, 1.0f});
+  if (p_.fit == Fit::View) {
+    c.debug.box(c.scene.bounds(), {0.4f, 0.4f, 0.4f, 1.0f});
+    c.debug.name({0.4f, 0.4f, 0.4f, 1.0f}, "the scene's bounds");
+  }
 }
 
 // The lit program specialised for this frame: each light's kind of map, the filter, its size.

@@ -442,6 +442,8 @@ void StencilVolumes::pushGodViewShapes(const ShadowContext& c, const VolumeCache
         v.light.w != 0.0f ? glm::normalize(a - glm::vec3(v.light) / v.light.w) : -glm::normalize(glm::vec3(v.light));
     c.debug.line(a, a + 6.0f * dir, {1.0f, 0.85f, 0.2f, 0.5f});
   }
+  c.debug.name({1.0f, 0.2f, 0.9f, 1.0f}, "silhouette edges");
+  c.debug.name({1.0f, 0.85f, 0.2f, 0.5f}, "their extrusion away from the light");
 }
 
 void StencilVolumes::drawScene(const Frame& f, const gl::Program& prog, const LitSettings& lit) {

@@ -187,7 +187,10 @@ void SoftMaps::unbind(int unit) const {
 
 void SoftMaps::pushShapes(const ShadowContext& c) const {
   for (const SoftLight& s : lights_)
-    if (s.on) c.debug.frustum(s.centre.viewProj(), kFrustumColour);
+    if (s.on) {
+      c.debug.frustum(s.centre.viewProj(), kFrustumColour);
+      c.debug.name(kFrustumColour, "a light's frustum, from the sphere's centre");
+    }
 }
 
 }  // namespace shadowlab::tech

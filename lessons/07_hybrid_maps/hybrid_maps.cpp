@@ -200,8 +200,14 @@ void HybridShadowMaps::pushStats(int i, const PerLight& l) {
 
 void HybridShadowMaps::pushShapes(const ShadowContext& c) const {
   for (std::size_t i = 0; i < lights_.size(); ++i)
-    if (lights_[i]->on) c.debug.frustum(lights_[i]->camera.camera.viewProj(), lightColour(i));
-  if (p_.fit == Fit::View) c.debug.box(c.scene.bounds(), {0.4f, 0.4f, 0.4f, 1.0f});
+    if (lights_[i]->on) {
+      c.debug.frustum(lights_[i]->camera.camera.viewProj(), lightColour(i));
+      c.debug.name(lightColour(i), "light" + std::to_string(i) + "'s map");
+    }
+  if (p_.fit == Fit::View) {
+    c.debug.box(c.scene.bounds(), {0.4f, 0.4f, 0.4f, 1.0f});
+    c.debug.name({0.4f, 0.4f, 0.4f, 1.0f}, "the scene's bounds");
+  }
 }
 
 void HybridShadowMaps::render(const ShadowContext& c) {

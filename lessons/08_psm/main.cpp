@@ -171,7 +171,7 @@ class OriginalPsmLesson : public tech::ShadowLesson {
     }
 
     // ==== 5. the post-projective view: the unit cube, the squashed scene, the light, the slide =====
-    postView_.draw(c, technique, insets);
+    postView_.draw(c, technique, insets, legends);
   }
 
  private:

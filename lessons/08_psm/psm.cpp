@@ -217,15 +217,23 @@ void PerspectiveShadowMaps::describePostProjective(const ShadowContext& c, int l
 
 void PerspectiveShadowMaps::pushShapes(const ShadowContext& c) const {
   for (std::size_t k = 0; k < receivers_.size() && k < 4096; ++k) c.debug.box(receivers_[k], kVolumeColour);
+  if (!receivers_.empty()) c.debug.name(kVolumeColour, "receiver volumes");
   for (int i = 0; i < int(lights_.size()); ++i) {
     const psm::PsmPlan* p = plan(i);
     if (!p) continue;
     const auto points = worldKeyPoints(i);
     const std::size_t step = points.size() > 2048 ? points.size() / 2048 + 1 : 1;
     for (std::size_t k = 0; k < points.size(); k += step) c.debug.cross(glm::vec3(points[k]), 0.15f, kKeyPointColour);
-    if (p->shift > 0.0) c.debug.frustum(glm::mat4(p->camera.viewProj), kVirtualColour);
+    if (!points.empty()) c.debug.name(kKeyPointColour, "key points");
+    if (p->shift > 0.0) {
+      c.debug.frustum(glm::mat4(p->camera.viewProj), kVirtualColour);
+      c.debug.name(kVirtualColour, "the virtual camera, slid back");
+    }
     for (const psm::PsmMap& m : p->used())
-      if (finiteInWorld(m.camera.worldToClip)) c.debug.frustum(glm::mat4(m.camera.worldToClip), kMapColour);
+      if (finiteInWorld(m.camera.worldToClip)) {
+        c.debug.frustum(glm::mat4(m.camera.worldToClip), kMapColour);
+        c.debug.name(kMapColour, "the light camera of a map");
+      }
   }
 }
 

@@ -64,7 +64,10 @@ bool LightSpacePsm::fitLight(const ShadowContext& c, int i, const psm::CameraFru
 // ==== 2. the depth pass: one map per light ======================================================
 void LightSpacePsm::pushShapes(const ShadowContext& c) const {
   for (const PerLight& l : lights_)
-    if (l.fitted) c.debug.frustum(glm::mat4(l.worldToClip), kFrustumColour);
+    if (l.fitted) {
+      c.debug.frustum(glm::mat4(l.worldToClip), kFrustumColour);
+      c.debug.name(kFrustumColour, "LiSPSM's light frustum");
+    }
 }
 
 void LightSpacePsm::render(const ShadowContext& c) {

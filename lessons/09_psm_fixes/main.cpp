@@ -56,7 +56,8 @@ struct Params {
 const char* const kSummary =
     "Perspective shadow maps with the paper's four fixes: inverse projection, unit-cube clipping with the "
     "smallest cone, cube-map faces of the unit cube, world-space texel-size bias; against LiSPSM.";
-const char* const kHelp = R"(fix.inverse (I): fix 1, the inverse projection for a light behind the camera (off: the virtual slide).
+const char* const kHelp =
+    R"(fix.inverse (I): fix 1, the inverse projection for a light behind the camera (off: the virtual slide).
 fix.clip (C): fix 2, unit-cube clipping: rough receiver volumes, key points, smallest cone.
 fix.faces (F): fix 3, never / auto / always the hidden faces of the unit cube. bias (B): constant or world.
 format 16 / 24 / 32f. technique (T): PSM, LiSPSM, uniform (equal texels). view.post (P): post-projective view.
@@ -185,7 +186,7 @@ class PsmFixesLesson : public tech::ShadowLesson {
     }
 
     // ==== 5. the post-projective view: the unit cube, the light there, its cone, maps, key points ==
-    postView_.draw(c, technique, insets);
+    postView_.draw(c, technique, insets, legends);
   }
 
  private:

@@ -133,7 +133,10 @@ void CascadedShadowMaps::render(const ShadowContext& c) {
 void CascadedShadowMaps::pushShapes(const ShadowContext& c) const {
   for (const PerLight& l : lights_)
     if (l.fitted)
-      for (std::size_t k = 0; k < l.matrices.size(); ++k) c.debug.frustum(glm::mat4(l.matrices[k]), kCascadeColours[k]);
+      for (std::size_t k = 0; k < l.matrices.size(); ++k) {
+        c.debug.frustum(glm::mat4(l.matrices[k]), kCascadeColours[k]);
+        c.debug.name(kCascadeColours[k], "cascade " + std::to_string(k) + "'s light box");
+      }
 }
 
 // ==== 3. what the lit pass reads: the projective maps, the split distances, the band ===========

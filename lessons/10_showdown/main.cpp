@@ -148,7 +148,7 @@ class ShowdownLesson : public tech::ShadowLesson {
     drawLit(c, technique, litSettings());
     // ==== 3. light 0's maps (view=maps), the post-projective view ==================================
     if (p_.view == View::Maps && !f.godView) drawMaps(f);
-    postView_.draw(c, technique, insets);
+    postView_.draw(c, technique, insets, legends);
   }
 
   // The four-up view shows four techniques in one frame: one ground truth cannot judge it.

@@ -1,7 +1,7 @@
 # Every inset a lesson reports (Lesson::insets: its map views, the post-projective view, the god
-# view) stays clear of the header, the parameter panel and the exercises panel, at --ui-scale 1
-# and 2 on 1280x720; and at least EXPECT insets are reported (a lesson that stops reporting them
-# fails here).
+# view) stays clear of the header, the parameter panel, the exercises panel and the legend, at
+# --ui-scale 1 and 2 on 1280x720; the post-projective view comes with its legend; and at least
+# EXPECT insets are reported (a lesson that stops reporting them fails here).
 # Run: cmake -DLESSON=... -DNAME=... "-DARGS=--set;view=maps;..." -DEXPECT=N -DOUT_DIR=... -P this
 include(${CMAKE_CURRENT_LIST_DIR}/ui_layout_lib.cmake)
 file(MAKE_DIRECTORY ${OUT_DIR})
@@ -20,9 +20,23 @@ foreach(scale 1 2)
         check_apart("${json}" "${name}" Exercises)
       endif()
       check_inside("${json}" "${name}" 1280 720)
+      # The views' colour key (the post-projective view's, the god view's) never covers a view.
+      has("${json}" Legend legend)
+      if(legend)
+        check_apart("${json}" "${name}" Legend)
+      endif()
       math(EXPR insets "${insets} + 1")
     endif()
   endforeach()
+  has("${json}" Legend legend)
+  if(legend)
+    check_apart("${json}" Legend shadowlab)
+    check_apart("${json}" Legend Parameters)
+    check_inside("${json}" Legend 1280 720)
+  endif()
+  if(ARGS MATCHES "view.post=inset" AND NOT legend)
+    message(FATAL_ERROR "${NAME} at --ui-scale ${scale}: the post-projective view has no legend: ${json}")
+  endif()
   if(insets LESS EXPECT)
     message(FATAL_ERROR "${NAME} at --ui-scale ${scale}: ${insets} insets reported, ${EXPECT} expected: ${json}")
   endif()

@@ -35,6 +35,11 @@ foreach(scale 1 2)
   layout(god_${scale} --size 1280x720 --show-ui --ui-scale ${scale} --set view.god=true)
   check_apart("${json}" Parameters "god view inset")
   check_apart("${json}" shadowlab "god view inset")
+  # ...with its colour key (the viewer's frustum, the lights' maps), clear of the inset and the panels.
+  check_apart("${json}" Legend "god view inset")
+  check_apart("${json}" Legend shadowlab)
+  check_apart("${json}" Legend Parameters)
+  check_inside("${json}" Legend 1280 720)
 endforeach()
 # Heatmaps carry a colour key (the aliasing overlay: m's scale), clear of the header and the panel.
 foreach(scale 1 2)
