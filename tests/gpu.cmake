@@ -158,3 +158,11 @@ foreach(name 01_lighting 02_shadow_maps 03_shadow_quality 04_shadow_volumes 05_s
     set_tests_properties(gpu.${name}.ui_coverage PROPERTIES LABELS gpu TIMEOUT 300)
   endif()
 endforeach()
+
+# Lesson 03's point_light preset skips cube faces, more or fewer as the camera turns.
+if(TARGET lesson_03_shadow_quality)
+  add_test(NAME gpu.03_shadow_quality.skipped_faces COMMAND ${CMAKE_COMMAND}
+           -DLESSON=$<TARGET_FILE:lesson_03_shadow_quality> -DOUT_DIR=${shots}/skipped_faces
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_skipped_faces.cmake)
+  set_tests_properties(gpu.03_shadow_quality.skipped_faces PROPERTIES LABELS gpu)
+endif()
