@@ -199,21 +199,10 @@ class Runner {
     if (ex.empty() || (frame % 30 != 0 && !rerunExercises_)) return;
     if (rerunExercises_ || ex.glslChanged()) ex.evaluate(info_.name);
     rerunExercises_ = false;
-    banner_ = studentCode() && !ex.stubBanner(0).empty() ? ex.stubBanner(blackShare(fi)) : "";
+    banner_ =
+        studentCode() && !ex.stubBanner(0).empty() ? ex.stubBanner(blackShare(fi.framebuffer, width_, height_)) : "";
     if (cl_.headless && !banner_.empty() && !bannerPrinted_) std::cout << info_.name << ": " << banner_ << '\n';
     bannerPrinted_ = bannerPrinted_ || !banner_.empty();
-  }
-
-  // The share of (nearly) black pixels in the frame just drawn: below 24 of 255 in every channel,
-  // so the lessons' clear colour (0.05, 0.06, 0.08) counts too, and an empty frame is "black".
-  double blackShare(const FrameInfo& fi) const {
-    std::vector<unsigned char> rgba(std::size_t(width_) * std::size_t(height_) * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fi.framebuffer);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    std::size_t black = 0;
-    for (std::size_t i = 0; i < rgba.size(); i += 4) black += std::max({rgba[i], rgba[i + 1], rgba[i + 2]}) < 24;
-    return rgba.empty() ? 0.0 : double(black) / double(rgba.size() / 4);
   }
 
   // Recorded camera and light paths (--replay FILE[@T]) and the --bench CSV.
@@ -302,16 +291,7 @@ class Runner {
 
   // --keys: what a step did, on stderr (tests read it): the camera, and the parameter its key drives.
   void reportScriptedKey(const std::string& step) const {
-    if (step.empty()) return;
-    const glm::vec3 eye = lesson_.camera.position(), ahead = lesson_.camera.forward();
-    std::ostringstream line;
-    line << std::fixed << std::setprecision(4) << info_.name << ": --keys " << step << ": eye " << eye.x << ' ' << eye.y
-         << ' ' << eye.z << ", forward " << ahead.x << ' ' << ahead.y << ' ' << ahead.z << ", camera "
-         << (input_.fly ? "fly" : "orbit");
-    for (const Param& p : params_.params())
-      if (!p.hotkey.empty() && step.rfind(p.hotkey, 0) == 0 && (step.size() == 1 || step[1] == '*'))
-        line << ", " << p.name << '=' << params_.get(p.name);
-    std::cerr << line.str() << '\n';
+    if (!step.empty()) std::cerr << scriptedKeyReport(info_.name, step, lesson_.camera, input_.fly, params_) << '\n';
   }
 
   // Mouse onto the camera (or the A/B divider), keys onto the framework and the hotkeys. Headless,
@@ -449,32 +429,7 @@ class Runner {
       lastRevision_ = params_.revision();  // switching to B and back is not a change
       glViewport(0, 0, fi.width, fi.height);
     }
-    if (godView_.enabled()) {
-      lesson_.timers.setEnabled(false);
-      const MeasureSource source = info_.measurable ? lesson_.measureSource() : MeasureSource{};
-      const Aabb bounds = source.scene ? source.scene->bounds() : Aabb{};
-      godView_.draw(fi, lesson_.camera, lesson_.debug, source.scene ? &bounds : nullptr,
-                    [&](const FrameInfo& g) { lesson_.render(g); });
-      lesson_.insets.push_back(godView_.inset(fi.width, fi.height));
-      lesson_.legends.push_back(godView_.legend(lesson_.debug));
-      lesson_.timers.setEnabled(true);
-      glViewport(0, 0, fi.width, fi.height);
-    }
-  }
-
-  // The header's few figures: the lesson's key figures present this frame, in the lesson's order,
-  // then the ground truth's (what M measured).
-  std::vector<Counter> keyFigures(const std::vector<Counter>& all, bool measured = true) const {
-    static const char* const kMeasured[] = {"measure", "misclassified", "aliasing m", "soft error", "umbra"};
-    std::vector<Counter> key;
-    for (const std::string& name : info_.keyFigures)
-      for (const Counter& c : all)
-        if (c.name == name) key.push_back(c);
-    if (!measured) return key;
-    for (const char* name : kMeasured)
-      for (const Counter& c : all)
-        if (c.name == name) key.push_back(c);
-    return key;
+    if (godView_.enabled()) godView_.show(fi, lesson_, info_.measurable);
   }
 
   // The UI; after one H the panels are hidden, not what explains the picture: the A/B labels, the
@@ -495,7 +450,7 @@ class Runner {
     ui_.reserve(lesson_.insets, height_);  // first: the legend, the header and the panels stop above the insets
     const Measurement* measured = info_.measurable ? &measurement_ : nullptr;
     if (ab_.enabled())  // then: the legends and the exercises stay above the labels
-      ui_.splitLabels(ab_.divider(), ab_.labelA(measured, keyFigures(lesson_.counters, false)),
+      ui_.splitLabels(ab_.divider(), ab_.labelA(measured, keyFigures(info_, lesson_.counters, false)),
                       ab_.labelB(info_.keyFigures));
     ui_.legends(legends);  // bottom right, above the labels and the insets there; the panel stops above it
     if (panels) drawPanels(shown, errors);
@@ -513,7 +468,7 @@ class Runner {
                                 frameMsAvg_,
                                 &lesson_.timers.passes(),
                                 &shown,
-                                keyFigures(shown),
+                                keyFigures(info_, shown),
                                 errors,
                                 status_,
                                 gl::caps().softwareRenderer,

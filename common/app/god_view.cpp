@@ -90,4 +90,16 @@ void GodView::draw(const FrameInfo& frame, const OrbitCamera& viewer, const Debu
   glBindFramebuffer(GL_FRAMEBUFFER, frame.framebuffer);
 }
 
+void GodView::show(FrameInfo& frame, Lesson& lesson, bool measurable) {
+  lesson.timers.setEnabled(false);
+  const MeasureSource source = measurable ? lesson.measureSource() : MeasureSource{};
+  const Aabb bounds = source.scene ? source.scene->bounds() : Aabb{};
+  draw(frame, lesson.camera, lesson.debug, source.scene ? &bounds : nullptr,
+       [&](const FrameInfo& g) { lesson.render(g); });
+  lesson.insets.push_back(inset(frame.width, frame.height));
+  lesson.legends.push_back(legend(lesson.debug));
+  lesson.timers.setEnabled(true);
+  glViewport(0, 0, frame.width, frame.height);
+}
+
 }  // namespace shadowlab

@@ -23,6 +23,9 @@ class GodView {
             const std::function<void(const FrameInfo&)>& renderLesson);
   // What the god view's colours mean: the viewer's frustum, then the shapes the lesson named.
   Legend legend(const DebugDraw& shapes) const;
+  // The whole of it for a lesson's frame: the lesson drawn again from outside (untimed), its inset
+  // and legend reported to the lesson (the UI keeps clear of them), the scene framed when measurable.
+  void show(FrameInfo& frame, Lesson& lesson, bool measurable);
   // Where draw() puts the inset in a frame of this size (bottom right).
   Inset inset(int frameWidth, int frameHeight) const;
 

@@ -1,6 +1,8 @@
 // What every lesson declares the same way (its camera, lights and impl), and the command line's
 // questions about a lesson (--help, --info, --list-*), answered before any context opens.
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include "app/lesson.hpp"
@@ -103,6 +105,32 @@ bool answerQuery(const CommandLine& cl, const LessonInfo& info, const ParamRegis
     return false;
   }
   return true;
+}
+
+std::vector<Counter> keyFigures(const LessonInfo& info, const std::vector<Counter>& all, bool measured) {
+  static const char* const kMeasured[] = {"measure", "misclassified", "aliasing m", "soft error", "umbra"};
+  std::vector<Counter> key;
+  for (const std::string& name : info.keyFigures)
+    for (const Counter& c : all)
+      if (c.name == name) key.push_back(c);
+  if (!measured) return key;
+  for (const char* name : kMeasured)
+    for (const Counter& c : all)
+      if (c.name == name) key.push_back(c);
+  return key;
+}
+
+std::string scriptedKeyReport(const std::string& lesson, const std::string& step, const OrbitCamera& camera, bool fly,
+                              const ParamRegistry& params) {
+  const glm::vec3 eye = camera.position(), ahead = camera.forward();
+  std::ostringstream line;
+  line << std::fixed << std::setprecision(4) << lesson << ": --keys " << step << ": eye " << eye.x << ' ' << eye.y
+       << ' ' << eye.z << ", forward " << ahead.x << ' ' << ahead.y << ' ' << ahead.z << ", camera "
+       << (fly ? "fly" : "orbit");
+  for (const Param& p : params.params())
+    if (!p.hotkey.empty() && step.rfind(p.hotkey, 0) == 0 && (step.size() == 1 || step[1] == '*'))
+      line << ", " << p.name << '=' << params.get(p.name);
+  return line.str();
 }
 
 }  // namespace shadowlab

@@ -15,5 +15,11 @@ bool answerQuery(const CommandLine& cl, const LessonInfo& info, const ParamRegis
 // --info: the lesson's number, name, title, summary, difficulty, minutes in class, prerequisites,
 // its exercises (id, function, title, glsl, file, line) and the command that grades them, as JSON.
 std::string infoJson(const LessonInfo& info, const Exercises& exercises);
+// The header's few figures: the lesson's key figures present in `all`, in the lesson's order, then
+// (with `measured`) the ground truth's (what M measured).
+std::vector<Counter> keyFigures(const LessonInfo& info, const std::vector<Counter>& all, bool measured = true);
+// --keys: what a step did, for stderr (tests read it): the camera, and the parameter its key drives.
+std::string scriptedKeyReport(const std::string& lesson, const std::string& step, const OrbitCamera& camera, bool fly,
+                              const ParamRegistry& params);
 
 }  // namespace shadowlab

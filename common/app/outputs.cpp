@@ -1,5 +1,6 @@
 #include "app/outputs.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <ctime>
@@ -135,6 +136,16 @@ void writeMeasurementJson(const std::string& path, const LessonInfo& info, const
   savePng(stem + "_error.png", r.errorHeatmap);
   if (r.hasAliasing) savePng(stem + "_aliasing.png", r.aliasingHeatmap);
   savePng(stem + "_reference.png", r.referenceImage);  // the ground truth's visibility, as the overlay shows it
+}
+
+double blackShare(unsigned fbo, int width, int height) {
+  std::vector<unsigned char> rgba(std::size_t(width) * std::size_t(height) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  std::size_t black = 0;
+  for (std::size_t i = 0; i < rgba.size(); i += 4) black += std::max({rgba[i], rgba[i + 1], rgba[i + 2]}) < 24;
+  return rgba.empty() ? 0.0 : double(black) / double(rgba.size() / 4);
 }
 
 }  // namespace shadowlab

@@ -15,6 +15,9 @@ namespace shadowlab {
 std::string screenshotName(const LessonInfo& info);
 // Reads `fbo` back and writes a PNG, creating the folder. Throws std::runtime_error naming the path.
 void saveScreenshot(const std::string& path, unsigned fbo, int width, int height);
+// The share of (nearly) black pixels in `fbo`: below 24 of 255 in every channel, so the lessons'
+// clear colour (0.05, 0.06, 0.08) counts too, and an empty frame is "black" (the stub banner).
+double blackShare(unsigned fbo, int width, int height);
 
 // --bench FILE: one row per pass per frame (GPU ms arrive a few frames late; each row carries the
 // frame that issued it), plus the CPU time of each whole frame, its draw calls and render scale.
