@@ -73,8 +73,9 @@ void checkHotkeys(const ParamRegistry& params) {
 }
 
 std::string infoJson(const LessonInfo& info, const Exercises& exercises) {
-  std::string prerequisites, list;
+  std::string prerequisites, list, key;
   for (const std::string& p : info.prerequisites) prerequisites += (prerequisites.empty() ? "\"" : ",\"") + p + "\"";
+  for (const std::string& k : info.keyFigures) key += (key.empty() ? "\"" : ",\"") + jsonEscape(k) + "\"";
   for (const Exercise& e : exercises.list()) {
     const ExerciseLocation at = exerciseLocation(info.name, e);
     list += std::string(list.empty() ? "" : ",") + "{\"id\":\"" + e.id + "\",\"function\":\"" +
@@ -85,8 +86,8 @@ std::string infoJson(const LessonInfo& info, const Exercises& exercises) {
   return "{\"number\":\"" + info.number + "\",\"name\":\"" + info.name + "\",\"title\":\"" + jsonEscape(info.title) +
          "\",\"summary\":\"" + jsonEscape(info.summary) + "\",\"help\":\"" + jsonEscape(info.help) +
          "\",\"difficulty\":" + std::to_string(info.difficulty) + ",\"minutes\":" + std::to_string(info.minutes) +
-         ",\"prerequisites\":[" + prerequisites + "],\"exercises\":[" + list + "],\"grade\":\"" +
-         (exercises.empty() ? std::string() : gradeCommand(info.name)) + "\"}";
+         ",\"prerequisites\":[" + prerequisites + "],\"key_figures\":[" + key + "],\"exercises\":[" + list +
+         "],\"grade\":\"" + (exercises.empty() ? std::string() : gradeCommand(info.name)) + "\"}";
 }
 
 bool answerQuery(const CommandLine& cl, const LessonInfo& info, const ParamRegistry& params, const PresetFile& presets,

@@ -107,7 +107,10 @@ const cell = (s) => s.replace(/\|/g, '\\|');
 
 function hotkeysBlock(f) {
   const rows = f.hotkeys.map(([key, param, action]) => `| \`${key}\` | \`${param}\` | ${cell(action ?? '')} |`);
-  return ['| key | parameter | does |', '|---|---|---|', ...rows].join('\n');
+  const key = (f.info.key_figures ?? []).map((k) => `\`${k}\``).join(', ');
+  return ['| key | parameter | does |', '|---|---|---|', ...rows, '',
+    `The header shows the lesson's key figures${key ? ` (${key}, where the technique has them)` : ''} and, with M, ` +
+    "the ground truth's; every other figure this page reads \"in the header\" is in the stats (F2)."].join('\n');
 }
 
 function presetsBlock(f) {
