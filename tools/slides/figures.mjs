@@ -69,6 +69,7 @@ export class FigureRenderer {
     this.stats = { rendered: 0, cached: 0 };
     this.queue = [];
     this.active = 0;
+    this.inflight = new Map(); // figure file -> Promise of its render: one run per figure, however often used
   }
 
   binaryFor(lesson) {
@@ -126,6 +127,13 @@ export class FigureRenderer {
       this.stats.cached++;
       return rel;
     }
+    // The same figure twice in a build (a zoom of a figure shown whole too) renders once: two runs
+    // wrote the same temporary file, and one found it gone ("exit 0 but no PNG written").
+    if (!this.inflight.has(file)) this.inflight.set(file, this.#renderTo(spec, binary, file, rel));
+    return this.inflight.get(file);
+  }
+
+  async #renderTo(spec, binary, file, rel) {
     await this.#slot();
     try {
       fs.mkdirSync(path.dirname(file), { recursive: true });

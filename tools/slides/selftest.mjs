@@ -124,7 +124,14 @@ expect('an unknown {{block}} fails the build, naming the valid ones',
   unknown.build.code === 1 && /:7: unknown generated block \{\{presets\}\}; valid: \{\{passes\}\}, \{\{exercises\}\}/.test(unknown.build.output),
   unknown.build.output);
 
-// 11. The builder's own output (HTML, CSS, vendor files) refers to nothing on the network.
+// 11. The same figure twice in one deck (here, whole and zoomed) renders once, not twice into the
+// same temporary file (one run then found its PNG gone).
+const zoomOfIt = figure.replace(')', '&zoom=0.25,0.25,0.5)');
+const twice = deck('same_figure_twice', `# Twice\n\n${figure}\n\n---\n## Again\n\n${figure}\n\n---\n## Zoomed\n\n${zoomOfIt}\n`);
+expect('the same figure twice builds, rendered once', twice.build.code === 0 && /1 figure\(s\) rendered/.test(twice.build.output),
+  twice.build.output);
+
+// 12. The builder's own output (HTML, CSS, vendor files) refers to nothing on the network.
 const offenders = [];
 (function scan(dir) {
   for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
