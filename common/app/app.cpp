@@ -135,7 +135,7 @@ class Runner {
       std::cerr << info_.name << ": " << e.what() << '\n';
       return 1;
     }
-    gl::installDebugOutput();
+    gl::installDebugOutput(cl_.strictGl);
     // Software renderers rasterise deferred: time passes synchronously there (see GpuTimers).
     const gl::Caps& caps = gl::caps();
     bool sync =

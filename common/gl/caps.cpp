@@ -10,6 +10,16 @@ namespace {
 Caps g_caps;
 bool g_detected = false;
 
+// An extension the driver offers and SHADOWLAB_GL_HIDE does not name.
+bool has(const char* extension) {
+  if (const char* hidden = std::getenv("SHADOWLAB_GL_HIDE")) {
+    const std::string list = std::string(",") + hidden + ",";
+    const std::string name = std::string(",") + extension + ",";
+    if (list.find(name) != std::string::npos) return false;
+  }
+  return epoxy_has_gl_extension(extension);
+}
+
 std::string str(GLenum name) {
   const auto* s = reinterpret_cast<const char*>(glGetString(name));
   return s ? s : "";
@@ -25,16 +35,17 @@ const Caps& caps() {
   c.renderer = str(GL_RENDERER);
   c.version = str(GL_VERSION);
   c.glsl = str(GL_SHADING_LANGUAGE_VERSION);
-  c.khrDebug = c.atLeast(4, 3) || epoxy_has_gl_extension("GL_KHR_debug");
-  c.clipControl = c.atLeast(4, 5) || epoxy_has_gl_extension("GL_ARB_clip_control");
-  c.anisotropic = c.atLeast(4, 6) || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") ||
-                  epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic");
+  c.khrDebug = c.atLeast(4, 3) || has("GL_KHR_debug");
+  c.clipControl = c.atLeast(4, 5) || has("GL_ARB_clip_control");
+  c.anisotropic =
+      c.atLeast(4, 6) || has("GL_EXT_texture_filter_anisotropic") || has("GL_ARB_texture_filter_anisotropic");
   if (c.anisotropic) glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &c.maxAnisotropy);
-  c.computeShaders = c.atLeast(4, 3) || epoxy_has_gl_extension("GL_ARB_compute_shader");
-  c.directStateAccess = c.atLeast(4, 5) || epoxy_has_gl_extension("GL_ARB_direct_state_access");
-  c.timerQuery = c.atLeast(3, 3) || epoxy_has_gl_extension("GL_ARB_timer_query");
+  c.computeShaders = c.atLeast(4, 3) || has("GL_ARB_compute_shader");
+  c.directStateAccess = c.atLeast(4, 5) || has("GL_ARB_direct_state_access");
+  c.timerQuery = c.atLeast(3, 3) || has("GL_ARB_timer_query");
   // The extension itself, not the version: a #version 410 shader enables it by name.
-  c.derivativeControl = epoxy_has_gl_extension("GL_ARB_derivative_control");
+  c.derivativeControl = has("GL_ARB_derivative_control");
+  c.parallelShaderCompile = has("GL_KHR_parallel_shader_compile");
   c.softwareRenderer =
       c.renderer.find("llvmpipe") != std::string::npos || c.renderer.find("softpipe") != std::string::npos;
   if (const char* s = std::getenv("SHADOWLAB_SOFTWARE_RENDERER")) c.softwareRenderer = std::string(s) == "1";

@@ -18,6 +18,7 @@ struct Caps {
   // dFdxFine / dFdyFine in a #version 410 shader (GL_ARB_derivative_control, core in 4.5): a 2x2
   // quad's pixels can share sums (PCSS's quad search, shadow_pcss.frag).
   bool derivativeControl = false;
+  bool parallelShaderCompile = false;  // GL_KHR_parallel_shader_compile: programs link on driver threads
   // Mesa's llvmpipe / softpipe (or SHADOWLAB_SOFTWARE_RENDERER=1): the CPU rasterises, deferred, so
   // timestamps miss the work, and an interactive window needs the frame budget.
   bool softwareRenderer = false;
@@ -29,6 +30,10 @@ struct Caps {
 };
 
 // Detected once per context (call after the context is current); later calls return the cache.
+// SHADOWLAB_GL_HIDE="GL_KHR_debug,GL_ARB_clip_control,..." makes caps() treat those extensions as
+// absent, so every fallback can be run on a driver that has them: Mesa cannot switch some of them
+// off (MESA_EXTENSION_OVERRIDE keeps KHR_debug), and macOS's 4.1 context has none of them (the gl41
+// tests, tests/gl41.cmake).
 const Caps& caps();
 void resetCaps();  // a new context was created
 

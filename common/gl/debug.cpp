@@ -10,11 +10,14 @@ namespace shadowlab::gl {
 namespace {
 int g_errors = 0;
 bool g_callback = false;  // the driver reports errors itself; glGetError is then only drained
+bool g_pollPasses = false;
 std::vector<std::string> g_messages;
+std::string g_last;
 
 void record(const std::string& message) {
   ++g_errors;
   if (g_messages.size() < 16) g_messages.push_back(message);
+  g_last = message;
   std::fprintf(stderr, "GL error: %s\n", message.c_str());
 }
 
@@ -42,7 +45,8 @@ const char* errorName(GLenum e) {
 }
 }  // namespace
 
-void installDebugOutput() {
+void installDebugOutput(bool strict) {
+  g_pollPasses = strict && !caps().khrDebug;
   if (!caps().khrDebug) return;
   glEnable(GL_DEBUG_OUTPUT);
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);  // errors reported at the call that caused them
@@ -56,8 +60,13 @@ void checkErrors(const char* where) {
     if (!g_callback) record(std::string(errorName(e)) + " at " + where);
 }
 
+void checkPassErrors(const char* when, const std::string& pass) {
+  if (g_pollPasses && !g_callback) checkErrors((std::string(when) + " pass '" + pass + "'").c_str());
+}
+
 int errorCount() { return g_errors; }
 const std::vector<std::string>& errorMessages() { return g_messages; }
+const std::string& lastErrorMessage() { return g_last; }
 
 // A label longer than GL_MAX_LABEL_LENGTH - 1 is GL_INVALID_VALUE (a program variant's label
 // carries its defines, which can pass the 256 the spec guarantees): such a label is cut to fit.

@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/paths.hpp"
+#include "gl/caps.hpp"
 #include "gl/debug.hpp"
 
 namespace shadowlab::gl {
@@ -93,7 +94,7 @@ void setModeUniforms(const Program& program, const std::vector<ShaderMode>& mode
 }
 
 void setAsyncCompile(bool on) {
-  g_async = on && epoxy_has_gl_extension("GL_KHR_parallel_shader_compile");
+  g_async = on && caps().parallelShaderCompile;
   if (g_async) glMaxShaderCompilerThreadsKHR(0xFFFFFFFFu);  // as many threads as the driver likes
 }
 

@@ -4,6 +4,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "gl/debug.hpp"
+
 namespace shadowlab::gl {
 namespace {
 double cpuNowMs() {
@@ -38,6 +40,7 @@ void GpuTimers::setFrame(int frame) {
 }
 
 void GpuTimers::begin(const std::string& name) {
+  checkPassErrors("the start of", name);  // strict mode without KHR_debug: errors named by their pass
   if (!enabled_) return;
   if (open_ >= 0) throw std::logic_error("GpuTimers: pass '" + name + "' begun inside '" + passes_[open_].name + "'");
   Pass& p = pass(name);
@@ -57,6 +60,7 @@ void GpuTimers::end() {
   if (!enabled_) return;
   if (open_ < 0) throw std::logic_error("GpuTimers: end() without begin()");
   Pass& p = passes_[open_];
+  checkPassErrors("the end of", p.name);
   Slot& slot = p.ring[p.next];
   glQueryCounter(slot.stop.id(), GL_TIMESTAMP);
   if (sync_) glFinish();
