@@ -14,6 +14,7 @@ packages=(
   clang-format  # the tree's one C++ style, checked by the test format.check
   clang libclang-rt-dev  # libFuzzer targets (tests/fuzz): make fuzz, and a short run in make test
   chromium nodejs npm  # slides and HTML reports, tested in headless Chromium
+  g++-mingw-w64-x86-64-posix  # the GL-free libraries cross-compiled for Windows (portability.mingw)
 )
 
 if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then

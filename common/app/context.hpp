@@ -1,7 +1,9 @@
 #pragma once
 // Where frames go. Two implementations behind one interface: a GLFW window, and headless EGL
 // (Mesa's surfaceless platform, or the EGL device platform where a GPU driver offers it) rendering
-// into an offscreen framebuffer. Lessons draw into framebuffer() and never assume it is 0.
+// into an offscreen framebuffer; a build without EGL (macOS, Windows) renders headless frames into
+// the same offscreen framebuffer from a hidden GLFW window. Lessons draw into framebuffer() and
+// never assume it is 0.
 #include <memory>
 #include <stdexcept>
 #include <string>

@@ -1,4 +1,5 @@
-// A real window through GLFW (X11 or Wayland), OpenGL 4.1 core forward-compatible (macOS's ceiling).
+// A real window through GLFW (X11, Wayland, Cocoa, Win32), OpenGL 4.1 core forward-compatible
+// (macOS's ceiling); in a build without EGL also the hidden window headless runs use.
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
@@ -7,30 +8,43 @@
 #include "app/context.hpp"
 #include "gl/caps.hpp"
 #include "gl/gl.hpp"
+#include "gl/objects.hpp"
 
 namespace shadowlab {
 namespace {
 
+// GLFW initialised and a 4.1 core forward-compatible window made current (hidden for headless runs
+// without EGL); throws with what to try.
+GLFWwindow* openWindow(const ContextOptions& o, bool visible) {
+  glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
+  if (!glfwInit())
+    throw std::runtime_error(visible ? "GLFW: cannot initialise (no display?); run with --headless"
+                                     : "GLFW: cannot initialise (no display?); this build has no EGL, so headless "
+                                       "runs need a display too (a hidden window): set DISPLAY or use xvfb-run");
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, o.debug ? GLFW_TRUE : GLFW_FALSE);
+  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+  glfwWindowHint(GLFW_STENCIL_BITS, 8);
+  glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
+  GLFWwindow* window =
+      glfwCreateWindow(visible ? o.width : 64, visible ? o.height : 64, o.title.c_str(), nullptr, nullptr);
+  if (!window) {
+    glfwTerminate();
+    throw std::runtime_error("GLFW: no OpenGL 4.1 core window; the course needs 4.1 or newer" +
+                             std::string(visible ? " (try --headless)" : ""));
+  }
+  glfwMakeContextCurrent(window);
+  gl::resetCaps();
+  return window;
+}
+
 class GlfwContext final : public Context {
  public:
-  explicit GlfwContext(const ContextOptions& o) {
-    glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
-    if (!glfwInit()) throw std::runtime_error("GLFW: cannot initialise (no display?); run with --headless");
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, o.debug ? GLFW_TRUE : GLFW_FALSE);
-    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-    glfwWindowHint(GLFW_STENCIL_BITS, 8);
-    window_ = glfwCreateWindow(o.width, o.height, o.title.c_str(), nullptr, nullptr);
-    if (!window_) {
-      glfwTerminate();
-      throw std::runtime_error("GLFW: no OpenGL 4.1 core window; the course needs 4.1 or newer (try --headless)");
-    }
-    glfwMakeContextCurrent(window_);
+  explicit GlfwContext(const ContextOptions& o) : window_(openWindow(o, true)) {
     glfwSwapInterval(1);
-    gl::resetCaps();
     if (o.fullscreen) setFullscreen(true);
   }
   ~GlfwContext() override {
@@ -85,7 +99,49 @@ class GlfwContext final : public Context {
   int savedX_ = 0, savedY_ = 0, savedW_ = 1280, savedH_ = 720;
 };
 
+#ifdef SHADOWLAB_HEADLESS_GLFW
+// Headless without EGL (macOS, Windows): a hidden window holds the context, frames go to an
+// offscreen framebuffer of the requested size exactly as with EGL.
+class HiddenWindowContext final : public Context {
+ public:
+  explicit HiddenWindowContext(const ContextOptions& o) : window_(openWindow(o, false)) {
+    if (const std::string problem = gl::framebufferSizeProblem(o.width, o.height); !problem.empty()) {
+      glfwDestroyWindow(window_);
+      glfwTerminate();
+      throw FramebufferSizeError("--size: " + problem);
+    }
+    width_ = o.width;
+    height_ = o.height;
+    target_ = gl::makeRenderTarget(width_, height_, "headless framebuffer");
+  }
+  ~HiddenWindowContext() override {
+    target_ = {};
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+  }
+  unsigned framebuffer() const override { return target_.fbo.id(); }
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  bool headless() const override { return true; }
+  bool shouldClose() const override { return false; }
+  void pollEvents() override {}
+  void present() override { glFinish(); }  // a frame is done when its pixels are
+  std::string platform() const override { return "GLFW hidden window"; }
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  int width_ = 0, height_ = 0;
+  gl::RenderTarget target_;
+};
+#endif
+
 }  // namespace
+
+#ifdef SHADOWLAB_HEADLESS_GLFW
+std::unique_ptr<Context> createHeadlessContext(const ContextOptions& options) {
+  return std::make_unique<HiddenWindowContext>(options);
+}
+#endif
 
 bool displayAvailable() {
   const char* x = std::getenv("DISPLAY");

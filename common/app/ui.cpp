@@ -6,8 +6,8 @@
 #include <imgui.h>
 #include <imgui_internal.h>  // the context's windows: the lesson's own ones in the layout
 #include <nlohmann/json.hpp>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
 
 #include <algorithm>
 #include <charconv>

@@ -14,7 +14,7 @@ struct Flag {
 };
 
 constexpr Flag kFlags[] = {
-    {"--headless", nullptr, "render offscreen through EGL, no window (tests, benchmarks, slides)"},
+    {"--headless", nullptr, "render offscreen, no window (tests, benchmarks, slides)"},
     {"--size", "WxH", "framebuffer size, default 1280x720; 16 to 8192 a side, and within the GL limits"},
     {"--frames", "N", "render N frames then exit (headless default 3)"},
     {"--screenshot", "FILE", "write the last frame as PNG"},

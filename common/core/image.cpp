@@ -3,7 +3,7 @@
 // and its PIC, JPEG and TGA decoders crashed or allocated gigabytes on fuzzed files.
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <spng.h>
-#include <stb/stb_image_write.h>
+#include <stb_image_write.h>
 
 #include "core/image.hpp"
 

@@ -1,31 +1,138 @@
 #include "core/process.hpp"
 
+#ifdef _WIN32
+#include <windows.h>
+#else
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
+extern char** environ;
+#endif
 
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
 
-extern char** environ;
-
 namespace shadowlab {
+namespace {
 
-int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
-  if (args.empty()) return -1;
+// The current environment with options.unsetEnv removed and options.setEnv added or replacing.
+std::vector<std::string> childEnvironment(const std::vector<std::string>& current, const ProcessOptions& o) {
   std::vector<std::string> env;
   auto named = [](const std::string& entry, const std::string& name) { return entry.rfind(name + "=", 0) == 0; };
-  for (char** e = environ; *e; ++e) {
-    const std::string entry = *e;
+  for (const std::string& entry : current) {
     bool drop =
         std::any_of(o.unsetEnv.begin(), o.unsetEnv.end(), [&](const std::string& n) { return named(entry, n); });
     for (const auto& s : o.setEnv) drop = drop || named(entry, s.substr(0, s.find('=')));
     if (!drop) env.push_back(entry);
   }
   env.insert(env.end(), o.setEnv.begin(), o.setEnv.end());
+  return env;
+}
 
+#ifdef _WIN32
+std::wstring widen(const std::string& s) {
+  if (s.empty()) return {};
+  const int n = MultiByteToWideChar(CP_UTF8, 0, s.data(), int(s.size()), nullptr, 0);
+  std::wstring w(std::size_t(n), L'\0');
+  MultiByteToWideChar(CP_UTF8, 0, s.data(), int(s.size()), w.data(), n);
+  return w;
+}
+
+std::string narrow(const std::wstring& w) {
+  if (w.empty()) return {};
+  const int n = WideCharToMultiByte(CP_UTF8, 0, w.data(), int(w.size()), nullptr, 0, nullptr, nullptr);
+  std::string s(std::size_t(n), '\0');
+  WideCharToMultiByte(CP_UTF8, 0, w.data(), int(w.size()), s.data(), n, nullptr, nullptr);
+  return s;
+}
+
+std::vector<std::string> currentEnvironment() {
+  std::vector<std::string> env;
+  wchar_t* block = GetEnvironmentStringsW();
+  for (const wchar_t* e = block; e && *e; e += std::wcslen(e) + 1)
+    if (*e != L'=') env.push_back(narrow(e));  // "=C:=C:\..." entries are the shell's drive folders
+  if (block) FreeEnvironmentStringsW(block);
+  return env;
+}
+
+// One argument as CommandLineToArgvW (and the C runtime) will split it back.
+std::wstring quoted(const std::wstring& arg) {
+  if (!arg.empty() && arg.find_first_of(L" \t\n\v\"") == std::wstring::npos) return arg;
+  std::wstring q = L"\"";
+  for (auto it = arg.begin();; ++it) {
+    std::size_t backslashes = 0;
+    while (it != arg.end() && *it == L'\\') ++it, ++backslashes;
+    if (it == arg.end()) {
+      q.append(backslashes * 2, L'\\');
+      break;
+    }
+    q.append(*it == L'"' ? backslashes * 2 + 1 : backslashes, L'\\');
+    q.push_back(*it);
+  }
+  return q + L"\"";
+}
+
+HANDLE openOutput(const std::string& path) {
+  SECURITY_ATTRIBUTES inherit{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
+  return CreateFileW(widen(path).c_str(), GENERIC_WRITE, FILE_SHARE_READ | FILE_SHARE_WRITE, &inherit, CREATE_ALWAYS,
+                     FILE_ATTRIBUTE_NORMAL, nullptr);
+}
+
+double seconds(const FILETIME& t) {  // 100 ns units
+  return double((std::uint64_t(t.dwHighDateTime) << 32) | t.dwLowDateTime) * 1e-7;
+}
+#else
+std::vector<std::string> currentEnvironment() {
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e) env.emplace_back(*e);
+  return env;
+}
+#endif
+
+}  // namespace
+
+#ifdef _WIN32
+// Windows: CreateProcessW with the arguments quoted for CommandLineToArgvW. There are no signals:
+// a crash exits with its exception code (0xC0000005 and so on), returned as it is.
+int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
+  if (args.empty()) return -1;
+  std::wstring commandLine;
+  for (const auto& a : args) commandLine += (commandLine.empty() ? L"" : L" ") + quoted(widen(a));
+  std::wstring block;
+  for (const auto& e : childEnvironment(currentEnvironment(), o)) block += widen(e) + L'\0';
+  block += L'\0';
+  HANDLE out = o.stdoutPath.empty() ? GetStdHandle(STD_OUTPUT_HANDLE) : openOutput(o.stdoutPath);
+  HANDLE err = !o.stderrPath.empty()   ? openOutput(o.stderrPath)
+               : !o.stdoutPath.empty() ? out
+                                       : GetStdHandle(STD_ERROR_HANDLE);
+  STARTUPINFOW startup{};
+  startup.cb = sizeof startup;
+  startup.dwFlags = STARTF_USESTDHANDLES;
+  startup.hStdInput = GetStdHandle(STD_INPUT_HANDLE);
+  startup.hStdOutput = out;
+  startup.hStdError = err;
+  PROCESS_INFORMATION process{};
+  const bool started = CreateProcessW(widen(args[0]).c_str(), commandLine.data(), nullptr, nullptr, TRUE,
+                                      CREATE_UNICODE_ENVIRONMENT, block.data(), nullptr, &startup, &process);
+  if (!o.stdoutPath.empty()) CloseHandle(out);
+  if (!o.stderrPath.empty()) CloseHandle(err);
+  if (!started) return -1;
+  WaitForSingleObject(process.hProcess, INFINITE);
+  DWORD code = 0;
+  GetExitCodeProcess(process.hProcess, &code);
+  FILETIME created, exited, kernel, user;
+  if (o.cpuSeconds && GetProcessTimes(process.hProcess, &created, &exited, &kernel, &user))
+    *o.cpuSeconds = seconds(kernel) + seconds(user);
+  CloseHandle(process.hThread);
+  CloseHandle(process.hProcess);
+  return int(code);
+}
+#else
+int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
+  if (args.empty()) return -1;
+  std::vector<std::string> env = childEnvironment(currentEnvironment(), o);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   if (!o.stdoutPath.empty())
@@ -50,6 +157,7 @@ int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
                     1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   return WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
 }
+#endif
 
 int checkProgramArgument(const char* tool, int argc, char** argv, const char* usage) {
   const std::string program = argc > 1 ? argv[1] : "";

@@ -16,7 +16,8 @@ struct ProcessOptions {
 };
 
 // Runs args[0] (a path, not looked up in PATH) with args; returns its exit code, 128 + the signal
-// when it was killed, or -1 when it could not be started.
+// when it was killed (POSIX; on Windows a crash's exception code, e.g. 0xC0000005), or -1 when it
+// could not be started. posix_spawn on POSIX systems, CreateProcessW on Windows.
 int runProcess(const std::vector<std::string>& args, const ProcessOptions& options = {});
 
 // A tool's first argument, the program it runs (lesson_check, psm_stress): "--help" or "-h" prints

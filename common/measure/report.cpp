@@ -9,7 +9,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#ifdef _WIN32
+#include <io.h>
+#else
 #include <unistd.h>
+#endif
 
 #include <nlohmann/json.hpp>
 
@@ -52,6 +56,13 @@ std::vector<std::size_t> paretoFront(const std::vector<std::pair<double, double>
 }
 
 namespace {
+bool isTerminal(std::FILE* f) {
+#ifdef _WIN32
+  return _isatty(_fileno(f)) != 0;
+#else
+  return ::isatty(::fileno(f)) != 0;
+#endif
+}
 
 // One definition of the table, shared by CSV and HTML so their numbers cannot drift apart.
 struct Column {
@@ -499,7 +510,7 @@ ProgressBar::ProgressBar(std::size_t total, std::string label, std::FILE* out, b
     : total_(total),
       label_(std::move(label)),
       out_(out),
-      active_(out != nullptr && (force || ::isatty(::fileno(out)))),
+      active_(out != nullptr && (force || isTerminal(out))),
       start_(std::chrono::steady_clock::now()),
       lastDraw_(start_ - std::chrono::seconds(1)) {
   if (active_) draw(false);
