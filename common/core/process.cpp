@@ -1,6 +1,7 @@
 #include "core/process.hpp"
 
 #ifdef _WIN32
+#include <shellapi.h>
 #include <windows.h>
 #else
 #include <fcntl.h>
@@ -119,6 +120,11 @@ int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
   if (!o.stdoutPath.empty()) CloseHandle(out);
   if (!o.stderrPath.empty()) CloseHandle(err);
   if (!started) return -1;
+  if (!o.wait) {
+    CloseHandle(process.hThread);
+    CloseHandle(process.hProcess);
+    return 0;
+  }
   WaitForSingleObject(process.hProcess, INFINITE);
   DWORD code = 0;
   GetExitCodeProcess(process.hProcess, &code);
@@ -128,6 +134,14 @@ int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
   CloseHandle(process.hThread);
   CloseHandle(process.hProcess);
   return int(code);
+}
+
+void reapFinishedProcesses() {}
+
+bool openWithDesktop(const std::string& path) {
+  const auto result =
+      reinterpret_cast<INT_PTR>(ShellExecuteW(nullptr, L"open", widen(path).c_str(), nullptr, nullptr, SW_SHOWNORMAL));
+  return result > 32;  // ShellExecute's documented success threshold
 }
 #else
 int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
@@ -150,12 +164,28 @@ int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
   const bool started = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) == 0;
   posix_spawn_file_actions_destroy(&actions);
   if (!started) return -1;
+  if (!o.wait) return 0;
   struct rusage usage {};
   wait4(pid, &status, 0, &usage);
   if (o.cpuSeconds)
     *o.cpuSeconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
                     1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   return WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
+}
+
+void reapFinishedProcesses() {
+  while (waitpid(-1, nullptr, WNOHANG) > 0) {}
+}
+
+bool openWithDesktop(const std::string& path) {
+#ifdef __APPLE__
+  const char* viewer = "open";
+#else
+  const char* viewer = "xdg-open";
+#endif
+  std::vector<char*> argv = {const_cast<char*>(viewer), const_cast<char*>(path.c_str()), nullptr};
+  pid_t pid = 0;
+  return posix_spawnp(&pid, viewer, nullptr, nullptr, argv.data(), environ) == 0;
 }
 #endif
 

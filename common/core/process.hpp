@@ -13,12 +13,21 @@ struct ProcessOptions {
   std::vector<std::string> setEnv;    // "NAME=value", added or replacing
   std::vector<std::string> unsetEnv;  // names removed from the environment
   double* cpuSeconds = nullptr;       // if set: the user + system CPU time the process (all its threads) used
+  bool wait = true;                   // false: start it and return 0 at once (the launcher's lessons)
 };
 
 // Runs args[0] (a path, not looked up in PATH) with args; returns its exit code, 128 + the signal
 // when it was killed (POSIX; on Windows a crash's exception code, e.g. 0xC0000005), or -1 when it
 // could not be started. posix_spawn on POSIX systems, CreateProcessW on Windows.
 int runProcess(const std::vector<std::string>& args, const ProcessOptions& options = {});
+
+// Collects the processes started with wait = false that have ended, so none lingers (POSIX zombies);
+// returns at once. Nothing to do on Windows.
+void reapFinishedProcesses();
+
+// Opens a file (a README, a slide deck) with the desktop's viewer: xdg-open on Linux, open on
+// macOS, the shell's association on Windows. False when no viewer could be started.
+bool openWithDesktop(const std::string& path);
 
 // A tool's first argument, the program it runs (lesson_check, psm_stress): "--help" or "-h" prints
 // `usage` on stdout and returns 0; absent or not a file, it is named on stderr with the usage and

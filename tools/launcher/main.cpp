@@ -5,15 +5,13 @@
 //                          DIR (one PNG each) plus DIR/index.html with the lesson titles
 //   shadowlab --list       per lesson: its presets, README, slide deck and exercise status
 // In the window each lesson has a preset to start from, Start, README and Slides (opened with
-// xdg-open) and its exercise status (the public cases, `lesson --exercises`, run in the background).
+// the desktop's viewer) and its exercise status (the public cases, `lesson --exercises`, run in the background).
 // Lessons describe themselves (`lesson --info`, `--list-presets`), so nothing here is duplicated.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 #include <nlohmann/json.hpp>
-#include <spawn.h>
-#include <sys/wait.h>
 
 #include <array>
 #include <atomic>
@@ -31,11 +29,11 @@
 #include "app/context.hpp"
 #include "core/image.hpp"
 #include "core/paths.hpp"
+#include "core/process.hpp"
 #include "gl/gl.hpp"
 #include "gl/texture.hpp"
 #include "lesson_list.hpp"
 
-extern char** environ;
 namespace fs = std::filesystem;
 
 namespace {
@@ -53,17 +51,23 @@ struct LessonEntry {
   int preset = 0;  // the window's choice: 0 = defaults, else presets[preset - 1]
 };
 
-std::string capture(const std::string& command, int& status) {
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) {
-    status = -1;
-    return out;
-  }
-  std::array<char, 512> buf;
-  while (fgets(buf.data(), int(buf.size()), pipe)) out += buf.data();
-  status = pclose(pipe);
-  return out;
+// A lesson's output (`--info`, `--list-presets`, `--exercises`, with stderr when asked), through a
+// temporary file: no shell, so no quoting that differs between sh and cmd.exe.
+std::string capture(const std::vector<std::string>& args, int& status, bool withStderr = false) {
+  static std::atomic<int> serial{0};
+  const fs::path file = fs::temp_directory_path() / ("shadowlab_launcher_" + std::to_string(serial++) + "_" +
+                                                     std::to_string(std::hash<std::string>{}(args[0])) + ".txt");
+  shadowlab::ProcessOptions options;
+  options.stdoutPath = file.string();
+  if (!withStderr) options.stderrPath = file.string() + ".err";
+  status = shadowlab::runProcess(args, options);
+  std::ifstream in(file);
+  std::stringstream out;
+  out << in.rdbuf();
+  std::error_code ignored;
+  fs::remove(file, ignored);
+  fs::remove(file.string() + ".err", ignored);
+  return out.str();
 }
 
 std::string sourceRootPath() { return shadowlab::sourceRoot(); }
@@ -94,11 +98,10 @@ std::string summariseExercises(const std::string& report) {
 // The public cases of the student's exercises.cpp, as the lesson reports them.
 void checkExercises(LessonEntry& e) {
   int status = 0;
-  const std::string out = capture("'" + e.program + "' --exercises 2>&1", status);
+  const std::string out = capture({e.program, "--exercises"}, status, true);
   if (status != 0) {
     e.exercises = out;
-    e.exerciseSummary =
-        "exercises: unknown (--exercises exited " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")";
+    e.exerciseSummary = "exercises: unknown (--exercises exited " + std::to_string(status) + ")";
     return;
   }
   e.exercises = out;
@@ -113,7 +116,7 @@ std::vector<LessonEntry> discoverLessons(const fs::path& binDir) {
     LessonEntry e;
     e.program = (binDir / name).string();
     int status = 0;
-    const std::string info = capture("'" + e.program + "' --info", status);
+    const std::string info = capture({e.program, "--info"}, status);
     if (status != 0) {
       std::cerr << "shadowlab: " << e.program << " --info failed (exit " << status << ")\n";
       continue;
@@ -129,7 +132,7 @@ std::vector<LessonEntry> discoverLessons(const fs::path& binDir) {
       e.prerequisites += (e.prerequisites.empty() ? "" : ", ") + p.get<std::string>();
     if (e.prerequisites.empty()) e.prerequisites = "none";
     std::string line;
-    std::istringstream presets(capture("'" + e.program + "' --list-presets", status));
+    std::istringstream presets(capture({e.program, "--list-presets"}, status));
     while (std::getline(presets, line))
       if (!line.empty()) e.presets.push_back(line);
     e.readme = sourceRootPath() + "/lessons/" + e.name + "/README.md";
@@ -143,24 +146,15 @@ std::vector<LessonEntry> discoverLessons(const fs::path& binDir) {
 }
 
 int runProgram(const std::vector<std::string>& args, bool wait) {
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
-  if (!wait) return 0;
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  shadowlab::ProcessOptions options;
+  options.wait = wait;
+  return shadowlab::runProcess(args, options);
 }
 
 // Opens a README or a deck with the desktop's viewer; the message says what happened.
 std::string openDocument(const std::string& path, const std::string& missingHint) {
   if (!fs::exists(path)) return path + " does not exist" + missingHint;
-  std::vector<char*> argv = {const_cast<char*>("xdg-open"), const_cast<char*>(path.c_str()), nullptr};
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, "xdg-open", nullptr, nullptr, argv.data(), environ) != 0)
-    return "no xdg-open here: open " + path + " yourself";
+  if (!shadowlab::openWithDesktop(path)) return "no desktop viewer here: open " + path + " yourself";
   return "opened " + path;
 }
 
@@ -322,7 +316,7 @@ int launcherWindow(std::vector<LessonEntry>& lessons, int frames, const std::str
     if (frames > 0 && frame + 1 == frames && !screenshot.empty())
       shadowlab::savePng(screenshot, shadowlab::gl::readPixels(0, context->width(), context->height()));
     context->present();
-    while (waitpid(-1, nullptr, WNOHANG) > 0) {}  // reap lessons that were closed
+    shadowlab::reapFinishedProcesses();  // lessons that were closed
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
