@@ -279,6 +279,16 @@ ShaderSource loadShaderSource(const std::string& path, const std::vector<std::st
   return Expander(includeDirs).run(path);
 }
 
+std::string withDefines(const std::string& text, const std::vector<std::string>& defines) {
+  if (defines.empty()) return text;
+  const auto eol = text.find('\n');
+  std::string head = text.substr(0, eol + 1), rest = text.substr(eol + 1);
+  for (const auto& d : defines) head += "#define " + d + "\n";
+  // Only add a #line if the preprocessor did not already put one right after #version.
+  if (rest.rfind("#line", 0) != 0) head += "#line 2 0\n";
+  return head + rest;
+}
+
 bool dependenciesChanged(const ShaderSource& source) {
   for (const FileStamp& dep : source.dependencies) {
     if (!dep.onDisk) continue;  // virtual text does not change under the program

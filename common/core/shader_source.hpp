@@ -51,6 +51,11 @@ struct ShaderSource {
 inline constexpr std::size_t kMaxIncludeDepth = 64;
 ShaderSource loadShaderSource(const std::string& path, const std::vector<std::string>& includeDirs);
 
+// `text` (a loadShaderSource result, #version first) specialised by `defines` ("NAME" or "NAME VALUE"):
+// one "#define NAME VALUE" line each right after #version, then a #line so logs keep the file's own
+// numbering. gl::Program compiles this text and shader_check --variants validates the same text.
+std::string withDefines(const std::string& text, const std::vector<std::string>& defines);
+
 // True when any dependency was modified or removed since `source` was loaded.
 bool dependenciesChanged(const ShaderSource& source);
 

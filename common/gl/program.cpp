@@ -35,17 +35,6 @@ GLenum glStage(ShaderStage s) {
   return GL_VERTEX_SHADER;
 }
 
-// Defines go right after #version, followed by a #line so logs keep the file's own numbering.
-std::string withDefines(const std::string& text, const std::vector<std::string>& defines) {
-  if (defines.empty()) return text;
-  const auto eol = text.find('\n');
-  std::string head = text.substr(0, eol + 1), rest = text.substr(eol + 1);
-  for (const auto& d : defines) head += "#define " + d + "\n";
-  // Only add a #line if the preprocessor did not already put one right after #version.
-  if (rest.rfind("#line", 0) != 0) head += "#line 2 0\n";
-  return head + rest;
-}
-
 std::string infoLog(GLuint object, bool isProgram) {
   GLint length = 0;
   isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);

@@ -250,6 +250,23 @@ TEST_CASE("shader source: #version is emitted first even after leading comments"
   checkLineAttribution(source);
 }
 
+// The text gl::Program compiles and shader_check --variants validates: one function for both.
+TEST_CASE("shader source: withDefines puts the defines after #version and keeps the file's numbering") {
+  TempDir dir;
+  const std::string top = dir.write("top.frag", "#version 410 core\nvoid main() {}\n");
+  const ShaderSource source = loadShaderSource(top, {});
+  CHECK(withDefines(source.text, {}) == source.text);
+  CHECK(withDefines(source.text, {"PCSS", "SEARCH_TAPS 16"}) ==
+        "#version 410 core\n"
+        "#define PCSS\n"
+        "#define SEARCH_TAPS 16\n"
+        "#line 2 0\n"
+        "void main() {}\n");
+  // A text whose #version is not followed by the preprocessor's #line gets one.
+  CHECK(withDefines("#version 410 core\nvoid main() {}\n", {"A 1"}) ==
+        "#version 410 core\n#define A 1\n#line 2 0\nvoid main() {}\n");
+}
+
 TEST_CASE("shader source: a file without #version is passed through with its own numbering") {
   TempDir dir;
   const std::string top = dir.write("top.frag",
