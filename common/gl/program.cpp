@@ -1,8 +1,14 @@
 #include "gl/program.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <set>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -33,6 +39,30 @@ GLenum glStage(ShaderStage s) {
     case ShaderStage::Compute: return GL_COMPUTE_SHADER;
   }
   return GL_VERTEX_SHADER;
+}
+
+// SHADOWLAB_SHADER_VARIANTS=FILE: each program compiled appends one line to FILE, once per process,
+//   LABEL <tab> STAGE FILES (space-separated, relative to the shader root) [<tab> DEFINE]...
+// so that shader_check --variants validates offline every variant a run asked for (tests/shaders.cmake).
+// One write() to a file opened O_APPEND: lessons recording in parallel never interleave lines.
+// Generated text (the GLSL exercise cases) has no file to check offline and is left out.
+void recordVariant(std::string label, const std::vector<std::string>& files, const std::vector<std::string>& defines) {
+  static const char* const path = std::getenv("SHADOWLAB_SHADER_VARIANTS");
+  static std::set<std::string> recorded;  // GL thread only
+  if (path == nullptr || *path == '\0') return;
+  std::replace(label.begin(), label.end(), '\t', ' ');
+  std::string line = label + '\t';
+  for (const auto& f : files) {
+    if (!std::filesystem::is_regular_file(shaderRoot() + "/" + f)) return;
+    line += (&f == &files.front() ? "" : " ") + f;
+  }
+  for (const auto& d : defines) line += '\t' + d;
+  line += '\n';
+  if (!recorded.insert(line).second) return;
+  const int fd = open(path, O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+  const bool written = fd >= 0 && write(fd, line.data(), line.size()) == ssize_t(line.size());
+  if (fd >= 0) close(fd);
+  if (!written) std::cerr << "SHADOWLAB_SHADER_VARIANTS: cannot append to '" << path << "'\n";
 }
 
 std::string infoLog(GLuint object, bool isProgram) {
@@ -121,6 +151,7 @@ void Program::start() {
   if (std::find(live.begin(), live.end(), this) == live.end()) live.push_back(this);
   pending_ = std::make_unique<Pending>();
   const std::string root = shaderRoot();
+  recordVariant(label_, stageFiles(), defines_);
   try {
     for (const auto& file : stageFiles()) {
       pending_->sources.push_back(loadShaderSource(root + "/" + file, {root}));
