@@ -1,10 +1,8 @@
 #include "gl/program.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -44,7 +42,8 @@ GLenum glStage(ShaderStage s) {
 // SHADOWLAB_SHADER_VARIANTS=FILE: each program compiled appends one line to FILE, once per process,
 //   LABEL <tab> STAGE FILES (space-separated, relative to the shader root) [<tab> DEFINE]...
 // so that shader_check --variants validates offline every variant a run asked for (tests/shaders.cmake).
-// One write() to a file opened O_APPEND: lessons recording in parallel never interleave lines.
+// Appended (O_APPEND) in one write, the buffer sized to the line: runs in parallel never interleave
+// lines. Plain stdio, so the GL layer keeps no POSIX-only call (the Windows build).
 // Generated text (the GLSL exercise cases) has no file to check offline and is left out.
 void recordVariant(std::string label, const std::vector<std::string>& files, const std::vector<std::string>& defines) {
   static const char* const path = std::getenv("SHADOWLAB_SHADER_VARIANTS");
@@ -59,9 +58,10 @@ void recordVariant(std::string label, const std::vector<std::string>& files, con
   for (const auto& d : defines) line += '\t' + d;
   line += '\n';
   if (!recorded.insert(line).second) return;
-  const int fd = open(path, O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
-  const bool written = fd >= 0 && write(fd, line.data(), line.size()) == ssize_t(line.size());
-  if (fd >= 0) close(fd);
+  std::FILE* file = std::fopen(path, "ab");
+  bool written = file != nullptr && std::setvbuf(file, nullptr, _IOFBF, line.size() + 1) == 0 &&
+                 std::fwrite(line.data(), 1, line.size(), file) == line.size();
+  if (file != nullptr) written = std::fclose(file) == 0 && written;
   if (!written) std::cerr << "SHADOWLAB_SHADER_VARIANTS: cannot append to '" << path << "'\n";
 }
 
