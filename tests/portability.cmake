@@ -23,3 +23,6 @@ add_test(NAME portability.no_egl COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/portab
          ${portability}/no_egl)
 set_tests_properties(portability.mingw portability.mingw_detects portability.no_egl PROPERTIES LABELS portability
                      TIMEOUT 1800)
+add_test(NAME portability.clang COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/portability/clang.sh ${CMAKE_SOURCE_DIR}
+         ${portability}/clang)
+set_tests_properties(portability.clang PROPERTIES LABELS portability TIMEOUT 3600)

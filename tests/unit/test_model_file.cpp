@@ -196,7 +196,8 @@ TEST_CASE("model: missing, empty, truncated, corrupt and oversized files are one
                                    "line 5: 'abc' is not a number (valid: numbers such as 2, -0.5 or 1.5e-3, "
                                    "a digit first)"}};
   for (const auto& [path, reason] : cases) {
-    INFO(path);
+    const std::string& shown = path;  // INFO captures in a lambda: not a structured binding (clang 14)
+    INFO(shown);
     const std::string message = loadError(path);
     CHECK(message.rfind("model '" + path + "': ", 0) == 0);
     CHECK(contains(message, reason));
@@ -360,7 +361,8 @@ TEST_CASE("model: a refused OBJ names the file, the line, the reason and the val
        "line 4: vertex index 4 is past the file's 3 vertices " + indices},
   };
   for (const auto& [text, reason] : cases) {
-    INFO(text);
+    const std::string& shown = text;  // INFO captures in a lambda: not a structured binding (clang 14)
+    INFO(shown);
     const std::string message = objError(text);
     CHECK(message == "model 'bad.obj': " + reason);
     CHECK_FALSE(contains(message, "\n"));
