@@ -20,7 +20,8 @@
 // #if/#ifdef/#ifndef/#elif tests in any shader or include file under the root (--root DIR, default
 // the shader root; GL_* and __*__, which the compiler defines, aside) must be defined by a checked
 // variant of a stage that includes that file, or be named by --allow. Each gap is reported as
-// "file:line: error: NAME ..." and exits 1.
+// "file:line: error: NAME ..." and exits 1; so does an --allow NAME that no gap needs (stale).
+// The coverage figure is printed either way.
 #include "core/paths.hpp"
 #include "core/shader_source.hpp"
 
