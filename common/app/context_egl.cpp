@@ -6,10 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "app/context.hpp"
-#include "gl/caps.hpp"
-#include "gl/gl.hpp"
-#include "gl/objects.hpp"
+#include "app/offscreen_context.hpp"
 
 namespace shadowlab {
 namespace {
@@ -20,7 +17,7 @@ std::string eglErrorText() {
   return buf;
 }
 
-class EglContext final : public Context {
+class EglContext final : public OffscreenContext {
  public:
   explicit EglContext(const ContextOptions& o) {
     display_ = openDisplay();
@@ -58,28 +55,15 @@ class EglContext final : public Context {
                                "); the course needs 4.1 or newer");
     if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
       throw std::runtime_error("EGL: eglMakeCurrent without a surface failed (" + eglErrorText() + ")");
-    gl::resetCaps();
-    if (const std::string problem = gl::framebufferSizeProblem(o.width, o.height); !problem.empty())
-      throw FramebufferSizeError("--size: " + problem);
-    width_ = o.width;
-    height_ = o.height;
-    target_ = gl::makeRenderTarget(width_, height_, "headless framebuffer");
+    makeFrame(o);
   }
   ~EglContext() override {
-    target_ = {};
+    releaseFrame();
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
     eglTerminate(display_);
   }
 
-  unsigned framebuffer() const override { return target_.fbo.id(); }
-  int width() const override { return width_; }
-  int height() const override { return height_; }
-  bool headless() const override { return true; }
-  bool shouldClose() const override { return false; }
-  void pollEvents() override {}
-  // glFinish, not glFlush: a frame is done when its pixels are, so frame times are honest.
-  void present() override { glFinish(); }
   std::string platform() const override { return platform_; }
 
  private:
@@ -118,8 +102,6 @@ class EglContext final : public Context {
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
   std::string platform_;
-  int width_ = 0, height_ = 0;
-  gl::RenderTarget target_;
 };
 
 }  // namespace

@@ -5,10 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "app/context.hpp"
-#include "gl/caps.hpp"
-#include "gl/gl.hpp"
-#include "gl/objects.hpp"
+#include "app/offscreen_context.hpp"
 
 namespace shadowlab {
 namespace {
@@ -102,36 +99,28 @@ class GlfwContext final : public Context {
 #ifdef SHADOWLAB_HEADLESS_GLFW
 // Headless without EGL (macOS, Windows): a hidden window holds the context, frames go to an
 // offscreen framebuffer of the requested size exactly as with EGL.
-class HiddenWindowContext final : public Context {
+class HiddenWindowContext final : public OffscreenContext {
  public:
   explicit HiddenWindowContext(const ContextOptions& o) : window_(openWindow(o, false)) {
-    if (const std::string problem = gl::framebufferSizeProblem(o.width, o.height); !problem.empty()) {
-      glfwDestroyWindow(window_);
-      glfwTerminate();
-      throw FramebufferSizeError("--size: " + problem);
+    try {
+      makeFrame(o);
+    } catch (...) {
+      close();
+      throw;
     }
-    width_ = o.width;
-    height_ = o.height;
-    target_ = gl::makeRenderTarget(width_, height_, "headless framebuffer");
   }
   ~HiddenWindowContext() override {
-    target_ = {};
-    glfwDestroyWindow(window_);
-    glfwTerminate();
+    releaseFrame();
+    close();
   }
-  unsigned framebuffer() const override { return target_.fbo.id(); }
-  int width() const override { return width_; }
-  int height() const override { return height_; }
-  bool headless() const override { return true; }
-  bool shouldClose() const override { return false; }
-  void pollEvents() override {}
-  void present() override { glFinish(); }  // a frame is done when its pixels are
   std::string platform() const override { return "GLFW hidden window"; }
 
  private:
+  void close() {
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+  }
   GLFWwindow* window_ = nullptr;
-  int width_ = 0, height_ = 0;
-  gl::RenderTarget target_;
 };
 #endif
 
