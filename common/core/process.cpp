@@ -1,18 +1,23 @@
 #include "core/process.hpp"
 
 #ifdef _WIN32
-#include <shellapi.h>
 #include <windows.h>
+
+#include <shellapi.h>  // after windows.h, which it needs
 #else
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 extern char** environ;
 #endif
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <thread>
 #include <iostream>
 
 namespace shadowlab {
@@ -115,17 +120,40 @@ int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
   startup.hStdOutput = out;
   startup.hStdError = err;
   PROCESS_INFORMATION process{};
-  const bool started = CreateProcessW(widen(args[0]).c_str(), commandLine.data(), nullptr, nullptr, TRUE,
-                                      CREATE_UNICODE_ENVIRONMENT, block.data(), nullptr, &startup, &process);
+  // A memory limit is a job object's: the process starts suspended, joins the job, then runs.
+  HANDLE job = nullptr;
+  if (o.memoryLimitMb > 0) {
+    job = CreateJobObjectW(nullptr, nullptr);
+    JOBOBJECT_EXTENDED_LIMIT_INFORMATION limit{};
+    limit.BasicLimitInformation.LimitFlags = JOB_OBJECT_LIMIT_PROCESS_MEMORY | JOB_OBJECT_LIMIT_KILL_ON_JOB_CLOSE;
+    limit.ProcessMemoryLimit = SIZE_T(o.memoryLimitMb) << 20;
+    if (job) SetInformationJobObject(job, JobObjectExtendedLimitInformation, &limit, sizeof limit);
+  }
+  const DWORD flags = CREATE_UNICODE_ENVIRONMENT | (job ? CREATE_SUSPENDED : 0);
+  const bool started = CreateProcessW(widen(args[0]).c_str(), commandLine.data(), nullptr, nullptr, TRUE, flags,
+                                      block.data(), nullptr, &startup, &process);
+  if (started && job) {
+    AssignProcessToJobObject(job, process.hProcess);
+    ResumeThread(process.hThread);
+  }
   if (!o.stdoutPath.empty()) CloseHandle(out);
   if (!o.stderrPath.empty()) CloseHandle(err);
-  if (!started) return -1;
+  if (!started) {
+    if (job) CloseHandle(job);
+    return -1;
+  }
+  if (o.timedOut) *o.timedOut = false;
   if (!o.wait) {
     CloseHandle(process.hThread);
     CloseHandle(process.hProcess);
-    return 0;
+    return 0;  // (a job's handle stays open: closing it would end the process)
   }
-  WaitForSingleObject(process.hProcess, INFINITE);
+  const DWORD ms = o.timeoutSeconds > 0 ? DWORD(o.timeoutSeconds * 1000) : INFINITE;
+  if (WaitForSingleObject(process.hProcess, ms) == WAIT_TIMEOUT) {
+    TerminateProcess(process.hProcess, 0xC000013A);  // STATUS_CONTROL_C_EXIT, as a killed console program
+    WaitForSingleObject(process.hProcess, INFINITE);
+    if (o.timedOut) *o.timedOut = true;
+  }
   DWORD code = 0;
   GetExitCodeProcess(process.hProcess, &code);
   FILETIME created, exited, kernel, user;
@@ -133,6 +161,7 @@ int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
     *o.cpuSeconds = seconds(kernel) + seconds(user);
   CloseHandle(process.hThread);
   CloseHandle(process.hProcess);
+  if (job) CloseHandle(job);
   return int(code);
 }
 
@@ -144,9 +173,31 @@ bool openWithDesktop(const std::string& path) {
   return result > 32;  // ShellExecute's documented success threshold
 }
 #else
-int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
-  if (args.empty()) return -1;
-  std::vector<std::string> env = childEnvironment(currentEnvironment(), o);
+namespace {
+
+// With a memory limit: fork, set RLIMIT_AS in the child, exec (posix_spawn cannot set limits).
+// Only async-signal-safe calls between fork and exec; everything they use is prepared before.
+pid_t forkWithLimit(char* const* argv, char* const* envp, const ProcessOptions& o) {
+  const rlim_t bytes = rlim_t(o.memoryLimitMb) << 20;
+  const struct rlimit limit { bytes, bytes };
+  const pid_t pid = fork();
+  if (pid != 0) return pid;  // the parent (or -1)
+  if (setrlimit(RLIMIT_AS, &limit) != 0) _exit(127);
+  const int flags = O_WRONLY | O_CREAT | O_TRUNC;
+  if (!o.stdoutPath.empty()) {
+    const int fd = open(o.stdoutPath.c_str(), flags, 0644);
+    if (fd < 0 || dup2(fd, 1) < 0) _exit(127);
+  }
+  if (!o.stderrPath.empty()) {
+    const int fd = open(o.stderrPath.c_str(), flags, 0644);
+    if (fd < 0 || dup2(fd, 2) < 0) _exit(127);
+  } else if (!o.stdoutPath.empty() && dup2(1, 2) < 0) _exit(127);
+  execve(argv[0], argv, envp);
+  _exit(127);
+}
+
+pid_t spawn(char* const* argv, char* const* envp, const ProcessOptions& o) {
+  if (o.memoryLimitMb > 0) return forkWithLimit(argv, envp, o);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   if (!o.stdoutPath.empty())
@@ -154,19 +205,48 @@ int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
   if (!o.stderrPath.empty())
     posix_spawn_file_actions_addopen(&actions, 2, o.stderrPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   else if (!o.stdoutPath.empty()) posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  pid_t pid = -1;
+  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv, envp) != 0) pid = -1;
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+// Waits for `pid`; past o.timeoutSeconds (when set) it is killed with SIGKILL.
+int waitFor(pid_t pid, const ProcessOptions& o, struct rusage& usage) {
+  int status = 0;
+  if (o.timeoutSeconds <= 0) {
+    wait4(pid, &status, 0, &usage);
+    return status;
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(o.timeoutSeconds);
+  while (wait4(pid, &status, WNOHANG, &usage) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill(pid, SIGKILL);
+      wait4(pid, &status, 0, &usage);
+      if (o.timedOut) *o.timedOut = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return status;
+}
+
+}  // namespace
+
+int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
+  if (args.empty()) return -1;
+  if (o.timedOut) *o.timedOut = false;
+  std::vector<std::string> env = childEnvironment(currentEnvironment(), o);
   std::vector<char*> argv, envp;
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   for (auto& e : env) envp.push_back(e.data());
   envp.push_back(nullptr);
-  pid_t pid;
-  int status = 0;
-  const bool started = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) == 0;
-  posix_spawn_file_actions_destroy(&actions);
-  if (!started) return -1;
+  const pid_t pid = spawn(argv.data(), envp.data(), o);
+  if (pid < 0) return -1;
   if (!o.wait) return 0;
   struct rusage usage {};
-  wait4(pid, &status, 0, &usage);
+  const int status = waitFor(pid, o, usage);
   if (o.cpuSeconds)
     *o.cpuSeconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
                     1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);

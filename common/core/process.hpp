@@ -2,6 +2,7 @@
 // Running a program the way a student, a grader or a benchmark does: with its output captured to
 // files and a few environment variables changed. For the test and benchmark tools (lesson_check,
 // shadowlab_bench, frame_bench), which run the real lesson programs.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,12 @@ struct ProcessOptions {
   std::vector<std::string> unsetEnv;  // names removed from the environment
   double* cpuSeconds = nullptr;       // if set: the user + system CPU time the process (all its threads) used
   bool wait = true;                   // false: start it and return 0 at once (the launcher's lessons)
+  // Limits for code we do not trust (a student's, in the graders): past timeoutSeconds (> 0) the
+  // process is killed (SIGKILL; TerminateProcess) and *timedOut set; memoryLimitMb (> 0) caps its
+  // address space (RLIMIT_AS; a job object's process memory on Windows).
+  double timeoutSeconds = 0;
+  std::size_t memoryLimitMb = 0;
+  bool* timedOut = nullptr;
 };
 
 // Runs args[0] (a path, not looked up in PATH) with args; returns its exit code, 128 + the signal
