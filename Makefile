@@ -57,13 +57,16 @@ docs: build
 
 LESSON ?= 01
 # Grades lesson LESSON's exercises.cpp (and exercises.glsl, where the lesson has GLSL exercises):
-# out/grades/exLESSON/{score.json, junit.xml, results.json (Gradescope)}.
+# out/grades/exLESSON/{score.json, junit.xml, results.json (Gradescope)}. Each C++ exercise runs in
+# a process of its own with a time and a memory limit (grade_isolated): a crash or an endless loop
+# costs that exercise only, with the reason in the report.
 grade: build
 	@if [ ! -x $(BUILD)/bin/grade_ex$(LESSON) ]; then \
 	  echo "make grade: LESSON=$(LESSON) has no grader; valid: $$(ls $(BUILD)/bin | sed -n 's/^grade_ex\([0-9][0-9]*\)$$/\1/p' | paste -sd ' ' -)" >&2; \
 	  exit 2; fi
 	@rm -rf out/grades/ex$(LESSON) && mkdir -p out/grades/ex$(LESSON); bin=$(BUILD)/bin; \
-	  $$bin/grade_ex$(LESSON) --results-json=out/grades/ex$(LESSON)/cpp.json >/dev/null; \
+	  $$bin/grade_isolated --reference=$$bin/grade_ex$(LESSON)_reference --results-json=out/grades/ex$(LESSON)/cpp.json \
+	    -- $$bin/grade_ex$(LESSON) >/dev/null; \
 	  glsl=$$(ls $$bin/glsl_lesson_$(LESSON)_* 2>/dev/null | head -1); \
 	  if [ -x $$bin/grade_ex$(LESSON)_glsl ] && [ -n "$$glsl" ]; then \
 	    $$bin/grade_ex$(LESSON)_glsl --lesson-binary=$$glsl --images=out/grades/ex$(LESSON)/images \

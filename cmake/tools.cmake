@@ -7,3 +7,8 @@ target_link_libraries(gen_textures PRIVATE shadowlab_core)
 # the results files the graders write (make grade, make grade-submission).
 add_executable(grade_report ${CMAKE_SOURCE_DIR}/tools/grading/grade_report.cpp)
 target_link_libraries(grade_report PRIVATE shadowlab_grading)
+
+# grade_isolated --reference=REF --results-json=FILE -- GRADER: the grader run one exercise at a
+# time, each in its own process with a time and a memory limit (make grade, make grade-submission).
+add_executable(grade_isolated ${CMAKE_SOURCE_DIR}/tools/grading/grade_isolated.cpp)
+target_link_libraries(grade_isolated PRIVATE shadowlab_grading)

@@ -112,3 +112,21 @@ if(TARGET grade_report)
     PASS_REGULAR_EXPRESSION "exercise 01\\.1: [0-9.]+ / 10 points, 1 of 3 cases \\(1 hidden\\)\n    first failing case: ex01\\.1: grazing light\n    \\| tests/grading/ex01_tests\\.cpp:20: CHECK\\( diffuse == 0\\.5 \\) is NOT correct!\n    \\|   values: CHECK\\( 0\\.25 == 0\\.5 \\)\n    \\|   logged: N = \\(0, 1, 0\\), L = \\(0\\.7, 0\\.7, 0\\)\nexercise 01\\.2: 0 / 10 points, 0 of 1 cases \\(0 hidden\\), still a stub\nscore"
     FAIL_REGULAR_EXPRESSION "SECRET")
 endif()
+
+# A class of a hundred brings crashes and endless loops: tests/grading/fixtures/faulty_ex01 has 01.1
+# right, 01.2 an endless loop, 01.3 a crash and 01.4 the untouched stub. Graded by grade_isolated
+# (one exercise per process, limits), 01.1 earns its points, 01.2 and 01.3 score 0 with their
+# reasons, and the grade is written (grading/check_isolated.cmake).
+if(TARGET grade_isolated AND TARGET grade_ex01_reference AND NOT SHADOWLAB_SUBMISSION
+   AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/faulty_ex01/exercises.cpp)
+  add_executable(grade_fixture_faulty_ex01 ${CMAKE_CURRENT_SOURCE_DIR}/grading/ex01_tests.cpp
+                                           ${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/faulty_ex01/exercises.cpp)
+  target_include_directories(grade_fixture_faulty_ex01 PRIVATE ${CMAKE_SOURCE_DIR}/lessons/01_lighting)
+  target_link_libraries(grade_fixture_faulty_ex01 PRIVATE shadowlab_test_main shadowlab_algorithms)
+  add_test(NAME grading.isolated
+           COMMAND ${CMAKE_COMMAND} -DISOLATED=$<TARGET_FILE:grade_isolated> -DREPORT=$<TARGET_FILE:grade_report>
+                   -DREFERENCE=$<TARGET_FILE:grade_ex01_reference> -DGRADER=$<TARGET_FILE:grade_fixture_faulty_ex01>
+                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/grading_isolated
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_isolated.cmake)
+  set_tests_properties(grading.isolated PROPERTIES LABELS validity)
+endif()

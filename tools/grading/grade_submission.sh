@@ -25,7 +25,7 @@ rm -rf "$out"
 mkdir -p "$out/runs" "$out/logs"
 echo "grade: $sub, seed $seed"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_SUBMISSION="$sub" >"$out/logs/configure.log"
-cmake --build "$build" -j "$jobs" --target grade_report >"$out/logs/build_report.log"
+cmake --build "$build" -j "$jobs" --target grade_report grade_isolated >"$out/logs/build_report.log"
 
 reports=()
 for ref in tests/grading/ex*_reference.cpp; do
@@ -33,8 +33,10 @@ for ref in tests/grading/ex*_reference.cpp; do
   lesson=$(basename "$(ls -d lessons/${nn}_*)")
   [ -f "$sub/lessons/$lesson/exercises.cpp" ] ||
     echo "grade: no lessons/$lesson/exercises.cpp in the submission: graded as the untouched stub"
-  if cmake --build "$build" -j "$jobs" --target "grade_ex$nn" "shadowlab_ex${nn}_reference" >"$out/logs/build_ex$nn.log" 2>&1; then
-    "$build/bin/grade_ex$nn" --seed="$seed" --results-json="$out/runs/ex$nn.json" >"$out/logs/ex$nn.log" 2>&1 || true
+  if cmake --build "$build" -j "$jobs" --target "grade_ex$nn" "grade_ex${nn}_reference" >"$out/logs/build_ex$nn.log" 2>&1; then
+    # One exercise per process, with limits: a crash or an endless loop costs that exercise only.
+    "$build/bin/grade_isolated" --reference="$build/bin/grade_ex${nn}_reference" --results-json="$out/runs/ex$nn.json" \
+      -- "$build/bin/grade_ex$nn" --seed="$seed" >"$out/logs/ex$nn.log" 2>&1 || true
     reports+=("$out/runs/ex$nn.json")
     # Calls from the student's file into what the reference calls: the answer borrowed, perhaps.
     mine=$(find "$build/tests/CMakeFiles/grade_ex$nn.dir" -path "*$sub/lessons/$lesson/exercises.cpp.o" | head -1)
