@@ -196,7 +196,7 @@ endfunction()
 # Deferred to the end of tests/: some tools are defined by modules included after this one.
 function(shadowlab_tool_cli_checks)
   foreach(tool lesson_check psm_stress frame_bench filter_sweep shadowlab_bench measure_report_demo gen_textures
-               shadowlab grade_report)
+               shadowlab grade_report grade_isolated)
     if(TARGET ${tool})
       cli_check(${tool}.help $<TARGET_FILE:${tool}> 0 "^usage: ${tool} " "" --help)
     endif()
@@ -240,4 +240,8 @@ endif()
 if(EXISTS ${CMAKE_SOURCE_DIR}/tools/grading/grade_submission.sh)  # the instructor's tree only
   cli_check(grade_submission_sh.missing bash 2 "" "^grade_submission.sh: no submission directory '/nonexistent-dir'"
             ${CMAKE_SOURCE_DIR}/tools/grading/grade_submission.sh /nonexistent-dir)
+  # One week's assignment: LESSONS names lessons with exercises, or is refused naming the valid ones.
+  cli_check(grade_submission_sh.lessons env 2 ""
+            "^grade_submission.sh: LESSONS: '11' is not a lesson with exercises; valid: 01 02 03 04 05 06 07 08 09 10"
+            LESSONS=03,11 bash ${CMAKE_SOURCE_DIR}/tools/grading/grade_submission.sh ${CMAKE_SOURCE_DIR}/lessons)
 endif()

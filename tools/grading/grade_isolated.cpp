@@ -57,6 +57,10 @@ bool parse(int argc, char** argv, Options& o) {
     };
     std::string number;
     if (a == "--") break;
+    if (a == "--help" || a == "-h") {
+      std::cout << kUsage;
+      std::exit(0);
+    }
     if (value("--reference=", o.reference) || value("--results-json=", o.results)) continue;
     if (value("--timeout=", number)) {
       o.timeout = std::atof(number.c_str());

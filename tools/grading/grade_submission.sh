@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT]
+# make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT] [LESSONS=03,05]
 #
+# LESSONS: grade only these lessons (one week's assignment); default every lesson with exercises.
 # Grades a student's submission against this (the instructor's) tree: DIR holds the student's
 # files where the handout has them, lessons/NN_name/exercises.cpp and shaders/NN_name/
 # exercises.glsl (a whole handout tree will do; a missing file is graded as the untouched stub).
@@ -21,6 +22,22 @@ seed=${SEED:-$(od -An -N4 -tu4 /dev/urandom | tr -d ' ')}
 build=$root/build/grade-submission
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 cd "$root"
+# The lessons that have exercises, and the ones asked for.
+available=$( (ls tests/grading/ex*_reference.cpp tests/grading/glsl/ex*_glsl.cpp 2>/dev/null || true) |
+  sed -E 's#.*/ex([0-9]+)_(reference\.cpp|glsl\.cpp)$#\1#' | sort -u | paste -sd ' ' -)
+wanted=" $available "
+if [ -n "${LESSONS:-}" ]; then
+  wanted=" "
+  for nn in ${LESSONS//,/ }; do
+    [ ${#nn} -eq 1 ] && nn=0$nn
+    case " $available " in
+      *" $nn "*) wanted="$wanted$nn " ;;
+      *) echo "grade_submission.sh: LESSONS: '$nn' is not a lesson with exercises; valid: $available" >&2; exit 2 ;;
+    esac
+  done
+  echo "grade: lessons$wanted(LESSONS=$LESSONS)"
+fi
+graded() { case "$wanted" in *" $1 "*) return 0 ;; *) return 1 ;; esac; }
 rm -rf "$out"
 mkdir -p "$out/runs" "$out/logs"
 echo "grade: $sub, seed $seed"
@@ -30,6 +47,7 @@ cmake --build "$build" -j "$jobs" --target grade_report grade_isolated >"$out/lo
 reports=()
 for ref in tests/grading/ex*_reference.cpp; do
   nn=$(basename "$ref" | sed -E 's/ex([0-9]+)_reference.cpp/\1/')
+  graded "$nn" || continue
   lesson=$(basename "$(ls -d lessons/${nn}_*)")
   [ -f "$sub/lessons/$lesson/exercises.cpp" ] ||
     echo "grade: no lessons/$lesson/exercises.cpp in the submission: graded as the untouched stub"
@@ -56,6 +74,7 @@ done
 
 for cases in tests/grading/glsl/ex*_glsl.cpp; do
   nn=$(basename "$cases" | sed -E 's/ex([0-9]+)_glsl.cpp/\1/')
+  graded "$nn" || continue
   lesson=$(basename "$(ls -d lessons/${nn}_*)")
   student=$sub
   if [ ! -f "$sub/shaders/$lesson/exercises.glsl" ]; then

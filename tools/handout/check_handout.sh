@@ -157,6 +157,15 @@ score() {
   failed=$(grep -m1 '"cases_failed"' "$json" | grep -oE '[0-9]+')
   hidden=$(grep -o '"hidden_passed": [0-9]*\|"hidden_failed": [0-9]*' "$json" | grep -oE '[0-9]+' | awk '{s += $1} END {print s + 0}')
   echo "score $points / $max, $failed of $cases cases failed, $hidden hidden"
+  if [ -n "${LESSONS:-}" ]; then  # one week's assignment: exactly those lessons' exercises graded
+    python3 - "$json" "$LESSONS" <<'PY' || { echo "FAIL: the grade is not exactly lessons $LESSONS"; exit 1; }
+import json, sys
+graded = sorted({e.split(".")[0] for e in json.load(open(sys.argv[1]))["exercises"]})
+wanted = sorted({n.zfill(2) for n in sys.argv[2].split(",")})
+print(f"lessons graded: {' '.join(graded)}")
+sys.exit(graded != wanted)
+PY
+  fi
   [ "$hidden" -gt 0 ] || { echo "FAIL: no hidden case ran"; exit 1; }
   case $want in
     zero) [ "$failed" = "$cases" ] && awk -v p="$points" 'BEGIN {exit !(p == 0)}' || { explain "$out" true; echo "FAIL: expected 0 points"; exit 1; } ;;
