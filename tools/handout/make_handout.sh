@@ -64,6 +64,10 @@ while IFS= read -r -d '' f; do
   kept=$((kept + 1))
 done < <(git ls-files -z)
 
+# The README is the student's: the instructor's section (grading a class) stays in this tree.
+awk '/^## Grading a class/ {skip = 1; next} /^## / {skip = 0} !skip' README.md >"$tree/README.md"
+grep -q '^## Grading a class' "$tree/README.md" && { echo "handout: the README kept its instructor section" >&2; exit 1; }
+
 # ---- 3. the libraries into lib/, without debug information ------------------------------------
 for t in shadowlab_algorithms shadowlab_sealed $refs; do
   a=$(find "$libbuild" -name "lib$t.a" | head -1)
