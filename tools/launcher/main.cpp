@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -54,9 +55,11 @@ struct LessonEntry {
 // A lesson's output (`--info`, `--list-presets`, `--exercises`, with stderr when asked), through a
 // temporary file: no shell, so no quoting that differs between sh and cmd.exe.
 std::string capture(const std::vector<std::string>& args, int& status, bool withStderr = false) {
+  // Unique to this process (two launchers run at once in the tests) and to this call (threads).
+  static const std::string token = std::to_string(std::random_device{}()) + std::to_string(std::random_device{}());
   static std::atomic<int> serial{0};
-  const fs::path file = fs::temp_directory_path() / ("shadowlab_launcher_" + std::to_string(serial++) + "_" +
-                                                     std::to_string(std::hash<std::string>{}(args[0])) + ".txt");
+  const fs::path file =
+      fs::temp_directory_path() / ("shadowlab_launcher_" + token + "_" + std::to_string(serial++) + ".txt");
   shadowlab::ProcessOptions options;
   options.stdoutPath = file.string();
   if (!withStderr) options.stderrPath = file.string() + ".err";
