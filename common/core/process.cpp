@@ -182,7 +182,8 @@ pid_t forkWithLimit(char* const* argv, char* const* envp, const ProcessOptions& 
   const struct rlimit limit { bytes, bytes };
   const pid_t pid = fork();
   if (pid != 0) return pid;  // the parent (or -1)
-  if (setrlimit(RLIMIT_AS, &limit) != 0) _exit(127);
+  // A process group of its own: what it starts and leaves running is killed with it (runProcess).
+  if (setpgid(0, 0) != 0 || setrlimit(RLIMIT_AS, &limit) != 0) _exit(127);
   const int flags = O_WRONLY | O_CREAT | O_TRUNC;
   if (!o.stdoutPath.empty()) {
     const int fd = open(o.stdoutPath.c_str(), flags, 0644);
@@ -247,6 +248,9 @@ int runProcess(const std::vector<std::string>& args, const ProcessOptions& o) {
   if (!o.wait) return 0;
   struct rusage usage {};
   const int status = waitFor(pid, o, usage);
+  // Untrusted code (limited): whatever it started and left running in its group goes with it, as a
+  // job object's processes do on Windows.
+  if (o.memoryLimitMb > 0) kill(-pid, SIGKILL);
   if (o.cpuSeconds)
     *o.cpuSeconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
                     1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);

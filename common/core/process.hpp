@@ -17,7 +17,9 @@ struct ProcessOptions {
   bool wait = true;                   // false: start it and return 0 at once (the launcher's lessons)
   // Limits for code we do not trust (a student's, in the graders): past timeoutSeconds (> 0) the
   // process is killed (SIGKILL; TerminateProcess) and *timedOut set; memoryLimitMb (> 0) caps its
-  // address space (RLIMIT_AS; a job object's process memory on Windows).
+  // address space (RLIMIT_AS; a job object's process memory on Windows) and makes it a group of
+  // its own (a process group; the job object): whatever it started and left running is killed
+  // when it ends, so nothing it leaves behind can touch files once its results are read.
   double timeoutSeconds = 0;
   std::size_t memoryLimitMb = 0;
   bool* timedOut = nullptr;

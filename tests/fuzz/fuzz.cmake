@@ -4,7 +4,7 @@
 # (tests/fuzz/NAME/regressions). Label fuzz: a short bounded run of each (make test); make fuzz
 # runs each for FUZZ_RUNS executions through tools/fuzz.sh.
 set(FUZZ_DIR ${CMAKE_CURRENT_SOURCE_DIR}/fuzz)
-set(SHADOWLAB_FUZZ_TARGETS obj presets params cli shader_source compile_log paths image)
+set(SHADOWLAB_FUZZ_TARGETS obj presets params cli shader_source compile_log paths image answers)
 # A bounded run in make test: every corpus file, then this many executions or these seconds,
 # whichever comes first (the slowest targets, on files, do about 1,000 a second under ASan).
 set(SHADOWLAB_FUZZ_TEST_RUNS 20000 CACHE STRING "executions of each fuzz target in its ctest entry")
@@ -15,6 +15,8 @@ foreach(name IN LISTS SHADOWLAB_FUZZ_TARGETS)
   set(sources ${FUZZ_DIR}/fuzz_${name}.cpp)
   if(name STREQUAL "paths")  # measure/paths alone: the rest of measure (Embree) is not a parser
     list(APPEND sources ${CMAKE_SOURCE_DIR}/common/measure/paths.cpp)
+  elseif(name STREQUAL "answers")  # grading/answers alone (and the stub markers it replays)
+    list(APPEND sources ${CMAKE_SOURCE_DIR}/common/grading/answers.cpp ${CMAKE_SOURCE_DIR}/common/grading/stub.cpp)
   endif()
   add_executable(fuzz_${name} ${sources})
   target_link_libraries(fuzz_${name} PRIVATE shadowlab_core)

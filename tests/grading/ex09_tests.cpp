@@ -165,7 +165,7 @@ TEST_CASE("ex09.3: random outside lights leave 3 to 5 faces, inside ones 6") {
     for (int f = 0; f < 6; ++f) hidden += cubeFaceVisible(f, glm::dvec4(p, 1.0)) ? 0 : 1;
     const bool inside = glm::all(glm::lessThan(glm::abs(p), glm::dvec3(1.0)));
     INFO("random case ", i, " of 300 (seed ", shadowlab::test::seed(), "): a light at ", shadowlab::grading::show(p),
-         inside ? " (inside the cube)" : " (outside the cube)", ", ", hidden, " faces not seen");
+         std::string(inside ? " (inside the cube)" : " (outside the cube)"), ", ", hidden, " faces not seen");
     if (!CHECK_TRUE(inside ? hidden == 6 : hidden >= 3 && hidden <= 5)) break;
     // Brute force: a face is visible iff the light is on the outer side of its plane.
     bool ok = true;

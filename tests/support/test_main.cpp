@@ -3,6 +3,11 @@
 //   --results-json=FILE            every case's result (grade_report merges such files)
 //   --score-json=FILE  --junit=FILE  --gradescope=FILE
 //                                  the score per exercise, JUnit XML, Gradescope's results.json
+//   --answers-record=FILE          the student's process of a graded run: the exercise functions
+//                                  answers are kept in FILE, its own checks decide nothing
+//   --answers-replay=FILE          the judging process (a reference grader): each call of an
+//                                  exercise function returns the answer FILE recorded
+//                                  (grading/answers.hpp; tools/grading/grade_isolated runs both)
 //   --expect-stub-scores-zero      grader validity on the untouched stubs: every case of every
 //                                  exercise must fail (an untouched stub earns nothing)
 // A run that executes no test case at all fails: a ctest entry whose filter matches nothing (a
@@ -16,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "grading/answers.hpp"
 #include "grading/cases.hpp"
 #include "grading/report.hpp"
 
@@ -32,7 +38,7 @@ bool parseSeed(const char* text, std::uint64_t& out) {
 }
 
 struct Options {
-  std::string resultsJson, scoreJson, junit, gradescope;
+  std::string resultsJson, scoreJson, junit, gradescope, answersRecord, answersReplay;
   bool expectStubsScoreZero = false;
   std::vector<char*> doctestArgs;
 };
@@ -57,7 +63,9 @@ int parse(int argc, char** argv, Options& o) {
   for (int i = 0; i < argc; ++i) {
     std::string value;
     if (takeValue(argv[i], "--results-json=", o.resultsJson) || takeValue(argv[i], "--score-json=", o.scoreJson) ||
-        takeValue(argv[i], "--junit=", o.junit) || takeValue(argv[i], "--gradescope=", o.gradescope))
+        takeValue(argv[i], "--junit=", o.junit) || takeValue(argv[i], "--gradescope=", o.gradescope) ||
+        takeValue(argv[i], "--answers-record=", o.answersRecord) ||
+        takeValue(argv[i], "--answers-replay=", o.answersReplay))
       continue;
     if (std::strcmp(argv[i], "--expect-stub-scores-zero") == 0) {
       o.expectStubsScoreZero = true;
@@ -74,6 +82,16 @@ int parse(int argc, char** argv, Options& o) {
     }
     o.doctestArgs.push_back(argv[i]);
   }
+  if (!o.answersRecord.empty() && !o.answersReplay.empty()) {
+    std::cerr << "--answers-record and --answers-replay: one process either answers or judges, not both\n";
+    return 2;
+  }
+  std::string error;
+  if (!o.answersReplay.empty() && !grading::replayAnswersFrom(o.answersReplay, error)) {
+    std::cerr << "--answers-replay: " << error << "\n";
+    return 2;
+  }
+  if (!o.answersRecord.empty()) grading::recordAnswersTo(o.answersRecord);
   return 0;
 }
 
@@ -92,6 +110,10 @@ int main(int argc, char** argv) {
               << " or SHADOWLAB_SEED)\n";
   const int result = context.run();
   if (listing || context.shouldExit()) return result;
+  if (std::string error; !grading::writeRecordedAnswers(error)) {
+    std::cerr << "[shadowlab] " << error << "\n";
+    return 1;
+  }
 
   grading::RunResult run = grading::lastRun();
   run.suite = std::filesystem::path(argv[0]).filename().string();

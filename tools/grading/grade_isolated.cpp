@@ -10,9 +10,17 @@
 //
 // Which cases there are comes from REFERENCE_GRADER (grade_exNN_reference: the same cases compiled
 // against the reference implementation), so listing them runs no student code: a student's static
-// initialiser that crashes cannot hide an exercise. This process itself runs no student code; the
-// children's results files are still written by the student's process, which could rewrite its
-// own exercise's (a trust boundary that compares values here is not built yet).
+// initialiser that crashes cannot hide an exercise.
+//
+// The trust boundary (common/grading/answers.hpp): the student's process only answers. It runs the
+// exercise's cases with --answers-record, keeping what each exercise function returned (or threw);
+// its own checks and exit code decide nothing, and it is given no results file to write. Then
+// REFERENCE_GRADER, which holds no student code, runs the same cases with --answers-replay (each
+// call of an exercise function returns the recorded answer) and decides every check and writes
+// the results, which this process reads before the next exercise starts. The student's process
+// runs in a process group of its own that is killed when it ends, so nothing it started is left to
+// rewrite a file afterwards. (A sandbox against reading or writing files while it runs is the
+// operating system's: run graders as a user of their own, or in a container as Gradescope does.)
 // Exit 0 when FILE was written, 1 when the reference grader cannot list its cases, 2 on bad usage.
 #include <algorithm>
 #include <csignal>
@@ -120,8 +128,9 @@ std::string crashedCase(const std::string& log) {
   return name;
 }
 
-// Why the run of one exercise gave no results of its own; "" when it did.
-std::string failure(int code, bool timedOut, const Options& o, const std::string& log, bool haveResults) {
+// Why the student's run of one exercise gave no answers to judge; "" when it ended on its own.
+// A non-zero exit is normal (its own checks failed on its answers, which decide nothing).
+std::string failure(int code, bool timedOut, const Options& o, const std::string& log) {
   if (timedOut)
     return "did not finish within " + std::to_string(int(o.timeout)) + " s (the time limit): an endless loop?";
   std::string why;
@@ -130,7 +139,7 @@ std::string failure(int code, bool timedOut, const Options& o, const std::string
   else if (unsigned(code) >= 0xC0000000u)
     why = "crashed (Windows exception code " + std::to_string(unsigned(code)) + ")";
 #endif
-  else if (!haveResults) why = "ended (exit " + std::to_string(code) + ") without writing its results";
+  else if (code < 0) why = "could not be started";
   if (why.empty()) return "";
   if (const std::string name = crashedCase(log); !name.empty()) why += " in case '" + name + "'";
   if (code == 128 + SIGABRT || code == 128 + SIGKILL)
@@ -138,15 +147,36 @@ std::string failure(int code, bool timedOut, const Options& o, const std::string
   return why;
 }
 
-// One exercise in a process of its own: its cases from the child's results, or all failed with why.
+// Every case of exercise `id` failed with `why`.
+std::vector<CaseResult> allFailed(const std::string& id, const std::vector<std::string>& names,
+                                  const std::vector<std::string>& hidden, const std::string& why) {
+  std::vector<CaseResult> cases;
+  for (const std::string& name : names) {
+    if (exerciseOf(name) != id) continue;
+    CaseResult c;
+    c.exercise = id;
+    c.name = name;
+    c.hidden = std::find(hidden.begin(), hidden.end(), name) != hidden.end();
+    c.output = why;
+    cases.push_back(c);
+  }
+  return cases;
+}
+
+// One exercise: the student's grader answers in a process of its own, with limits
+// (--answers-record); the reference grader, which holds no student code, judges those answers
+// (--answers-replay) and writes the results, read here at once.
 std::vector<CaseResult> gradeExercise(const Options& o, const std::string& id, const std::vector<std::string>& names,
                                       const std::vector<std::string>& hidden, const fs::path& scratch,
                                       RunResult& merged) {
-  const fs::path json = scratch / ("ex" + id + ".json"), log = scratch / ("ex" + id + ".log");
+  const fs::path answers = scratch / ("ex" + id + ".answers"), log = scratch / ("ex" + id + ".log");
+  const fs::path json = scratch / ("ex" + id + ".json"), judgeLog = scratch / ("ex" + id + ".judge.log");
+  fs::remove(answers);
   fs::remove(json);
+  const std::string filter = "--test-case=ex" + id + ":*";
   std::vector<std::string> args = {o.grader};
   args.insert(args.end(), o.graderArgs.begin(), o.graderArgs.end());
-  args.insert(args.end(), {"--results-json=" + json.string(), "--test-case=ex" + id + ":*"});
+  args.insert(args.end(), {"--answers-record=" + answers.string(), filter});
   ProcessOptions p;
   p.stdoutPath = log.string();
   p.timeoutSeconds = o.timeout;
@@ -154,35 +184,41 @@ std::vector<CaseResult> gradeExercise(const Options& o, const std::string& id, c
   bool timedOut = false;
   p.timedOut = &timedOut;
   const int code = runProcess(args, p);
-  RunResult child;
-  bool haveResults = false;
+  if (const std::string why = failure(code, timedOut, o, slurp(log)); !why.empty()) {
+    std::cout << "grade_isolated: exercise " << id << " " << why << "\n";
+    return allFailed(id, names, hidden,
+                     "exercise " + id + " " + why +
+                         ": every case of this exercise scores 0, the other exercises were graded on their own.");
+  }
+  std::vector<std::string> judge = {o.reference};
+  judge.insert(judge.end(), o.graderArgs.begin(), o.graderArgs.end());
+  judge.insert(judge.end(), {"--answers-replay=" + answers.string(), "--results-json=" + json.string(), filter});
+  ProcessOptions q;
+  q.stdoutPath = judgeLog.string();
+  q.timeoutSeconds = 4 * o.timeout;
+  runProcess(judge, q);
   try {
     const std::vector<RunResult> runs = runsFromJson(Json::parse(slurp(json)));
-    haveResults = runs.size() == 1;
-    if (haveResults) child = runs.front();
+    if (runs.size() == 1) {
+      merged.seed = runs.front().seed;
+      merged.testCasesRun += runs.front().testCasesRun;
+      std::vector<CaseResult> cases;
+      for (const CaseResult& c : runs.front().cases)
+        if (c.exercise == id) cases.push_back(c);
+      return cases;
+    }
   } catch (const std::exception&) {}
-  const std::string why = failure(code, timedOut, o, slurp(log), haveResults);
-  std::vector<CaseResult> cases;
-  if (why.empty()) {
-    merged.seed = child.seed;
-    merged.testCasesRun += child.testCasesRun;
-    for (const CaseResult& c : child.cases)
-      if (c.exercise == id) cases.push_back(c);
-    return cases;
-  }
-  std::cout << "grade_isolated: exercise " << id << " " << why << "\n";
-  for (const std::string& name : names) {
-    if (exerciseOf(name) != id) continue;
-    CaseResult c;
-    c.exercise = id;
-    c.name = name;
-    c.hidden = std::find(hidden.begin(), hidden.end(), name) != hidden.end();
-    c.output = "exercise " + id + " " + why +
-               ": every case of this exercise scores 0, the other exercises "
-               "were graded on their own.";
-    cases.push_back(c);
-  }
-  return cases;
+  // The judge is ours: when it cannot judge, the answers were unreadable (the student's process
+  // damaged its own file) or the grader is broken; either way nothing was earned, and we say so.
+  std::cout << "grade_isolated: exercise " << id << ": the reference grader could not judge the answers ("
+            << judgeLog.string() << ")\n";
+  std::string detail = slurp(judgeLog);
+  if (detail.size() > 400) detail.resize(400);
+  return allFailed(id, names, hidden,
+                   "exercise " + id +
+                       ": your program's answers could not be judged (the file of answers it wrote "
+                       "was missing or damaged): every case of this exercise scores 0.\n" +
+                       detail);
 }
 
 }  // namespace

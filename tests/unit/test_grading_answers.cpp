@@ -1,0 +1,124 @@
+// The grader's trust boundary (grading/answers.hpp): what the student's process records is what the
+// judging process replays, value for value, exception for exception, stub marker for stub marker;
+// a missing, reordered or damaged answer fails the call that asked, never passes it.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "grading/answers.hpp"
+#include "test_support.hpp"
+
+using namespace shadowlab;
+
+namespace answers_test {
+float half(float x) { return x / 2; }
+glm::mat4 scaled(const glm::vec3& s) {
+  return glm::mat4(glm::vec4(s.x, 0, 0, 0), glm::vec4(0, s.y, 0, 0), glm::vec4(0, 0, s.z, 0), glm::vec4(0, 0, 0, 1));
+}
+std::vector<double> ramp(int n) {
+  std::vector<double> v;
+  for (int i = 0; i < n; ++i) v.push_back(0.5 * i);
+  return v;
+}
+float picky(float x) {
+  if (x < 0) throw std::invalid_argument("x < 0: " + std::to_string(x));
+  SHADOWLAB_STUB("99.1");
+  return 1.0f;
+}
+inline constexpr grading::Graded<&half, decltype(&half)> gHalf{"answers_test::half"};
+inline constexpr grading::Graded<&scaled, decltype(&scaled)> gScaled{"answers_test::scaled"};
+inline constexpr grading::Graded<&ramp, decltype(&ramp)> gRamp{"answers_test::ramp"};
+inline constexpr grading::Graded<&picky, decltype(&picky)> gPicky{"answers_test::picky"};
+}  // namespace answers_test
+
+namespace {
+std::string answersFile(const char* name) {
+  const auto dir = std::filesystem::temp_directory_path() / "shadowlab_answers_test";
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+struct BackToDirect {
+  ~BackToDirect() { grading::useDirectAnswers(); }
+};
+}  // namespace
+
+TEST_CASE("answers: recorded values, exceptions and stub markers replay exactly, braced arguments included") {
+  using namespace answers_test;
+  BackToDirect restore;
+  const std::string path = answersFile("round_trip.bin");
+  grading::clearStubsReached();
+  grading::recordAnswersTo(path);
+  CHECK(gHalf(3.0f) == 1.5f);
+  CHECK(gScaled({2, 3, 4})[1][1] == 3.0f);
+  CHECK(gRamp(4).size() == 4);
+  CHECK_THROWS_AS(gPicky(-1.0f), std::invalid_argument);
+  CHECK(gPicky(1.0f) == 1.0f);
+  std::string error;
+  REQUIRE(grading::writeRecordedAnswers(error));
+
+  grading::clearStubsReached();
+  REQUIRE(grading::replayAnswersFrom(path, error));
+  CHECK(grading::answerMode() == grading::AnswerMode::kReplay);
+  // The replaying process would compute other values: the recorded ones come back instead.
+  CHECK(gHalf(100.0f) == 1.5f);
+  const glm::mat4 m = gScaled({9, 9, 9});
+  CHECK(m[0][0] == 2.0f);
+  CHECK(m[2][2] == 4.0f);
+  CHECK(gRamp(0) == std::vector<double>{0.0, 0.5, 1.0, 1.5});
+  CHECK(grading::stubsReached().empty());
+  CHECK_THROWS_WITH_AS(gPicky(5.0f), "x < 0: -1.000000", std::invalid_argument);
+  CHECK(gPicky(-7.0f) == 1.0f);
+  CHECK(grading::stubsReached() == std::set<std::string>{"99.1"});
+  // No answer left: the call fails, naming itself.
+  CHECK_THROWS_WITH_AS(gHalf(1.0f), doctest::Contains("no answer from your code for this call of answers_test::half"),
+                       std::runtime_error);
+  grading::clearStubsReached();
+}
+
+TEST_CASE("answers: an answer out of order or damaged fails, never passes") {
+  using namespace answers_test;
+  BackToDirect restore;
+  const std::string path = answersFile("order.bin");
+  grading::recordAnswersTo(path);
+  gHalf(2.0f);
+  std::string error;
+  REQUIRE(grading::writeRecordedAnswers(error));
+  REQUIRE(grading::replayAnswersFrom(path, error));
+  CHECK_THROWS_WITH_AS(gRamp(1), doctest::Contains("the answers do not follow the grader's calls"), std::runtime_error);
+
+  // A truncated file, a foreign file, no file: refused with the path and why.
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() - 2);
+  CHECK_FALSE(grading::replayAnswersFrom(path, error));
+  CHECK(error.find("answer 1 is truncated") != std::string::npos);
+  std::ofstream(path, std::ios::trunc) << "{\"passed\": true}";
+  CHECK_FALSE(grading::replayAnswersFrom(path, error));
+  CHECK(error == path + " is not an answers file");
+  CHECK_FALSE(grading::replayAnswersFrom(path + ".missing", error));
+  CHECK(error == "no answers file " + path + ".missing");
+
+  // A value of the wrong size (a forged file) is refused, not read past.
+  grading::recordAnswersTo(path);
+  grading::recordAnswer({"answers_test::half", {}, 0, "", "ab"});
+  REQUIRE(grading::writeRecordedAnswers(error));
+  REQUIRE(grading::replayAnswersFrom(path, error));
+  CHECK_THROWS_WITH_AS(gHalf(1.0f), "the recorded answer is shorter than its type", std::runtime_error);
+}
+
+TEST_CASE("answers: without record or replay a proxy calls the function") {
+  using namespace answers_test;
+  grading::useDirectAnswers();
+  CHECK(grading::answerMode() == grading::AnswerMode::kDirect);
+  CHECK(gHalf(8.0f) == 4.0f);
+  CHECK_THROWS_AS(gPicky(-2.0f), std::invalid_argument);
+}
