@@ -84,9 +84,9 @@ handout: configure
 SUBMISSION ?=
 GRADES ?= out/grades/submission
 grade-submission: configure
-	@if [ -z "$(SUBMISSION)" ]; then echo "usage: make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT] [LESSONS=03,05]"; exit 2; fi
+	@if [ -z "$(SUBMISSION)" ]; then echo "usage: make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT] [LESSONS=03,05] [REFERENCE_CALLS=report]"; exit 2; fi
 	@if [ ! -f tools/grading/grade_submission.sh ]; then echo "grade-submission: the instructor's tree only (the handout has no hidden cases)"; exit 2; fi
-	@SEED=$(SEED) LESSONS=$(LESSONS) bash tools/grading/grade_submission.sh $(SUBMISSION) $(GRADES)
+	@SEED=$(SEED) LESSONS=$(LESSONS) REFERENCE_CALLS=$(REFERENCE_CALLS) bash tools/grading/grade_submission.sh $(SUBMISSION) $(GRADES)
 
 # Benchmarks, apart from the tests: every lesson's frame time against its floor (out/bench/frames.{csv,html},
 # and docs/benchmarks.md: the README's one table, with the machine and date it ran on),

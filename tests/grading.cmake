@@ -216,3 +216,18 @@ if(TARGET grade_isolated AND TARGET grade_ex01_reference AND NOT SHADOWLAB_SUBMI
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_tamper.cmake)
   set_tests_properties(grading.tamper PROPERTIES LABELS validity)
 endif()
+
+# Calls into the reference answer are found by the linker and cost the exercise: the fixture
+# tests/grading/fixtures/borrowed writes 03.1 as hybrid::levelBias at level 0 (the reference's
+# shadow::slopeScaledBias under another name) and 03.2 by hand. Graded by grade-submission
+# (LESSONS=03), 03.1 scores 0 with the reason shown to the student, 03.2 its full points
+# (grading/check_borrowed.cmake). Shares build/grade-submission with the handout's grading tests.
+if(NOT SHADOWLAB_SUBMISSION AND CMAKE_SYSTEM_NAME STREQUAL "Linux"
+   AND EXISTS ${CMAKE_SOURCE_DIR}/tools/grading/grade_submission.sh
+   AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/borrowed)
+  add_test(NAME grading.reference_reach
+           COMMAND ${CMAKE_COMMAND} -DROOT=${CMAKE_SOURCE_DIR}
+                   -DSUBMISSION=${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/borrowed
+                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/grading_borrowed -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_borrowed.cmake)
+  set_tests_properties(grading.reference_reach PROPERTIES LABELS handout RESOURCE_LOCK grade_submission TIMEOUT 3600)
+endif()

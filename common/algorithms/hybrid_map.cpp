@@ -237,11 +237,11 @@ Descent descend(const HybridMap& map, int sx, int sy) {
   return d;
 }
 
+// Lesson 03's slope-scaled bias with the slope and its clamp scaled by the texel's width (a power
+// of two: the scaling is exact), so level 0 is shadow::slopeScaledBias itself.
 float levelBias(float constant, float slope, float maxBias, float cosTheta, int level) {
   const float scale = std::ldexp(1.0f, level);
-  if (cosTheta <= 0.0f) return maxBias * scale;
-  const float c = std::min(cosTheta, 1.0f);
-  return std::min(constant + slope * std::sqrt(1.0f - c * c) / c * scale, maxBias * scale);
+  return shadow::slopeScaledBias(constant, slope * scale, cosTheta, maxBias * scale);
 }
 
 float hybridLookup(const HybridMap& map, const glm::vec3& uvz, const Bias& bias, float cosTheta) {

@@ -1,5 +1,7 @@
-// grade_report --out DIR [--build-failed=LOG] RESULTS.json...
+// grade_report --out DIR [--reference-calls=FILE] [--build-failed=LOG] RESULTS.json...
 //
+// --reference-calls=FILE: exercises that borrowed the reference answer (tools/grading/
+// reference_reach.sh: one "NN.k<TAB>why" a line): every case of each scores 0, with why.
 // Merges the results files that graders write (--results-json: grade_exNN, grade_exNN_glsl) into
 // one grade. --build-failed=LOG applies to the next file: a run of the reference grader standing
 // in for a student's grader that did not compile; each of its cases counts as failed, with LOG
@@ -31,6 +33,33 @@ void failAll(RunResult& run, const std::string& logPath) {
   }
 }
 
+// Exercises found calling into the reference answer: every case fails, the reason first. Returns
+// false (and says why) when FILE cannot be read or a line is not "NN.k<TAB>why".
+bool failBorrowed(std::vector<RunResult>& runs, const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return std::cerr << "grade_report: cannot read --reference-calls file " << path << "\n", false;
+  int n = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++n;
+    if (line.empty()) continue;
+    const std::size_t tab = line.find('\t');
+    const std::string id = line.substr(0, tab);
+    if (tab == std::string::npos || id.size() < 4 || id.find('.') == std::string::npos) {
+      std::cerr << "grade_report: " << path << ":" << n << ": expected 'NN.k<TAB>why', found '" << line << "'\n";
+      return false;
+    }
+    for (RunResult& run : runs)
+      for (CaseResult& c : run.cases)
+        if (c.exercise == id) {
+          c.passed = false;
+          c.stub = false;
+          c.output =
+              "exercise " + id + " scores 0: " + line.substr(tab + 1) + (c.output.empty() ? "" : "\n" + c.output);
+        }
+  }
+  return true;
+}
+
 // Under a failing exercise that is not a stub: its first failing public case, the name and the
 // first lines of why (inputs, expected, actual), so `make grade` alone shows what to fix.
 void printFirstFailure(const std::vector<RunResult>& runs, const std::string& id) {
@@ -50,8 +79,8 @@ void printFirstFailure(const std::vector<RunResult>& runs, const std::string& id
 }  // namespace
 
 int main(int argc, char** argv) {
-  const char* usage = "usage: grade_report --out DIR [--build-failed=LOG] RESULTS.json...\n";
-  std::string out, failedLog;
+  const char* usage = "usage: grade_report --out DIR [--reference-calls=FILE] [--build-failed=LOG] RESULTS.json...\n";
+  std::string out, failedLog, borrowed;
   std::vector<std::pair<std::string, std::string>> inputs;  // results file, build log ("" when it built)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -60,8 +89,10 @@ int main(int argc, char** argv) {
       return 0;
     } else if (a == "--out" && i + 1 < argc) out = argv[++i];
     else if (a.rfind("--build-failed=", 0) == 0) failedLog = a.substr(15);
+    else if (a.rfind("--reference-calls=", 0) == 0) borrowed = a.substr(18);
     else if (a.rfind("--", 0) == 0) {
-      std::cerr << "grade_report: unknown flag '" << a << "'; valid: --out DIR, --build-failed=LOG\n";
+      std::cerr << "grade_report: unknown flag '" << a
+                << "'; valid: --out DIR, --reference-calls=FILE, --build-failed=LOG\n";
       return 2;
     } else {
       inputs.push_back({a, failedLog});
@@ -89,6 +120,7 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
+  if (!borrowed.empty() && !failBorrowed(runs, borrowed)) return 1;
   if (!writeReports({"", out + "/score.json", out + "/junit.xml", out + "/results.json"}, runs, std::cerr)) return 1;
   const Grade g = grade(runs);
   for (const ExerciseGrade& e : g.exercises) {

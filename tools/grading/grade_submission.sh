@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT] [LESSONS=03,05]
+# make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT] [LESSONS=03,05] [REFERENCE_CALLS=report]
 #
 # LESSONS: grade only these lessons (one week's assignment); default every lesson with exercises.
+# REFERENCE_CALLS: zero (default: an exercise that reaches the reference answer scores 0, with the
+# reason) or report (listed in logs/reference_calls.txt only, for an instructor who reads them).
 # Grades a student's submission against this (the instructor's) tree: DIR holds the student's
 # files where the handout has them, lessons/NN_name/exercises.cpp and shaders/NN_name/
 # exercises.glsl (a whole handout tree will do; a missing file is graded as the untouched stub).
@@ -10,7 +12,8 @@
 # into every report); the GLSL graders render the lessons with the student's shaders. A file that
 # does not compile scores 0 on its lesson's cases, with the compiler's errors in the report.
 # Writes OUT (default out/grades/submission): score.json, junit.xml, results.json (Gradescope),
-# runs/ (each grader's results), logs/ (builds, graders, and calls into the reference library).
+# runs/ (each grader's results), logs/ (builds, graders, and reference_calls.txt: the exercises
+# whose code reaches the reference answer, which score 0).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 usage="usage: grade_submission.sh SUBMISSION_DIR [OUT_DIR]"
@@ -37,11 +40,32 @@ if [ -n "${LESSONS:-}" ]; then
   done
   echo "grade: lessons$wanted(LESSONS=$LESSONS)"
 fi
+reference_calls=${REFERENCE_CALLS:-zero}
+case $reference_calls in
+  zero | report) ;;
+  *) echo "grade_submission.sh: REFERENCE_CALLS='$reference_calls'; valid: zero, report" >&2; exit 2 ;;
+esac
+# The object file a target compiled from a source (compile_commands.json knows; stale objects of
+# earlier submissions share the folder).
+object_of() {
+  python3 - "$build/compile_commands.json" "$1" "$2" <<'PY'
+import json, os, shlex, sys
+for e in json.load(open(sys.argv[1])):
+    args = e["arguments"] if "arguments" in e else shlex.split(e["command"])
+    out = args[args.index("-o") + 1] if "-o" in args else ""
+    if os.path.realpath(e["file"]) == os.path.realpath(sys.argv[3]) and f"/{sys.argv[2]}/" in f"/{out}":
+        print(os.path.join(e["directory"], out))
+        break
+PY
+}
 graded() { case "$wanted" in *" $1 "*) return 0 ;; *) return 1 ;; esac; }
 rm -rf "$out"
 mkdir -p "$out/runs" "$out/logs"
 echo "grade: $sub, seed $seed"
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_SUBMISSION="$sub" >"$out/logs/configure.log"
+# -ffunction-sections: one section per function, so the reference-call check can link a student's
+# function alone and see exactly which library functions it reaches.
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_SUBMISSION="$sub" \
+  -DCMAKE_CXX_FLAGS=-ffunction-sections -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >"$out/logs/configure.log"
 cmake --build "$build" -j "$jobs" --target grade_report grade_isolated >"$out/logs/build_report.log"
 
 reports=()
@@ -51,18 +75,22 @@ for ref in tests/grading/ex*_reference.cpp; do
   lesson=$(basename "$(ls -d lessons/${nn}_*)")
   [ -f "$sub/lessons/$lesson/exercises.cpp" ] ||
     echo "grade: no lessons/$lesson/exercises.cpp in the submission: graded as the untouched stub"
+  student_cpp=$sub/lessons/$lesson/exercises.cpp
+  [ -f "$student_cpp" ] || student_cpp=$root/lessons/$lesson/exercises.cpp
   if cmake --build "$build" -j "$jobs" --target "grade_ex$nn" "grade_ex${nn}_reference" >"$out/logs/build_ex$nn.log" 2>&1; then
     # One exercise per process, with limits: a crash or an endless loop costs that exercise only.
     "$build/bin/grade_isolated" --reference="$build/bin/grade_ex${nn}_reference" --results-json="$out/runs/ex$nn.json" \
       -- "$build/bin/grade_ex$nn" --seed="$seed" >"$out/logs/ex$nn.log" 2>&1 || true
     reports+=("$out/runs/ex$nn.json")
-    # Calls from the student's file into what the reference calls: the answer borrowed, perhaps.
-    mine=$(find "$build/tests/CMakeFiles/grade_ex$nn.dir" -path "*$sub/lessons/$lesson/exercises.cpp.o" | head -1)
-    theirs=$(find "$build" -path "*shadowlab_ex${nn}_reference.dir*" -name "ex${nn}_reference.cpp.o" | head -1)
+    # An exercise whose function reaches, directly or through any library function, what the
+    # reference answer calls borrowed the answer: decided by the linker (reference_reach.sh), it
+    # scores 0 with the reason in the student's report.
+    mine=$(object_of "grade_ex$nn.dir" "$student_cpp")
+    theirs=$(object_of "shadowlab_ex${nn}_reference.dir" "$root/tests/grading/ex${nn}_reference.cpp")
     if [ -n "$mine" ] && [ -n "$theirs" ]; then
-      comm -12 <(nm -C -u "$mine" | grep -o 'shadowlab::[a-z]*::[a-z][A-Za-z_]*' | grep -v '::grading::' | sort -u) \
-               <(nm -C -u "$theirs" | grep -o 'shadowlab::[a-z]*::[a-z][A-Za-z_]*' | sort -u) |
-        sed "s|^|ex$nn: exercises.cpp calls the reference library's |" >>"$out/logs/reference_calls.txt" || true
+      bash tools/grading/reference_reach.sh "$mine" "$theirs" "lessons/$lesson/exercises.cpp" \
+        "$build/libshadowlab_algorithms.a" "$build/libshadowlab_core.a" >>"$out/logs/reference_calls.txt" \
+        2>>"$out/logs/reference_reach.log" || echo "grade: the reference-call check of lesson $nn failed (logs/reference_reach.log)"
     fi
   else
     echo "grade: lessons/$lesson/exercises.cpp does not compile: its cases score 0 (logs/build_ex$nn.log)"
@@ -88,5 +116,15 @@ for cases in tests/grading/glsl/ex*_glsl.cpp; do
   reports+=("$out/runs/ex${nn}_glsl.json")
 done
 
-[ -s "$out/logs/reference_calls.txt" ] && { echo "grade: look at these calls:"; cat "$out/logs/reference_calls.txt"; }
-"$build/bin/grade_report" --out "$out" "${reports[@]}"
+touch "$out/logs/reference_calls.txt"
+zeroed=()
+if [ -s "$out/logs/reference_calls.txt" ]; then
+  if [ "$reference_calls" = zero ]; then
+    echo "grade: these exercises reach the reference answer and score 0:"
+    zeroed=(--reference-calls="$out/logs/reference_calls.txt")
+  else
+    echo "grade: these exercises reach the reference answer (REFERENCE_CALLS=report: listed, not scored):"
+  fi
+  cut -f1 "$out/logs/reference_calls.txt" | sed 's/^/  /'
+fi
+"$build/bin/grade_report" --out "$out" "${zeroed[@]}" "${reports[@]}"

@@ -224,10 +224,30 @@ grade() {
     submission=$out.submission
     reference_submission "$submission"
   fi
-  bash tools/grading/grade_submission.sh "$submission" "$out" >"$out.log" 2>&1 || { cat "$out.log"; exit 1; }
+  # The reference exercises forward to the library's answers: every one of them must be found
+  # reaching it (REFERENCE_CALLS=report lists them without scoring them 0); the stubs reach none.
+  local calls=zero
+  [ "$want" = full ] && calls=report
+  REFERENCE_CALLS=$calls bash tools/grading/grade_submission.sh "$submission" "$out" >"$out.log" 2>&1 ||
+    { cat "$out.log"; exit 1; }
   grep -m1 '^grade: .*, seed [0-9]*$' "$out.log" || true
   tail -3 "$out.log"
   score "$out" "$want"
+  reference_calls "$out" "$want"
+}
+
+# Exactly the C++ exercises of the graded lessons (full: the reference) or none (zero: the stubs)
+# are found reaching the reference answer.
+reference_calls() {
+  local out=$1 want=$2 expected found nn
+  expected=$(for nn in $(sed -nE 's/^ *"([0-9]+)\.[0-9]+": \{$/\1/p' "$out/score.json" | sort -u); do
+    grep -ho 'SHADOWLAB_STUB("[0-9.]*")' lessons/${nn}_*/exercises.cpp | grep -o '[0-9][0-9.]*'
+  done | sort -u | paste -sd ' ' -)
+  found=$(cut -f1 "$out/logs/reference_calls.txt" | sort -u | paste -sd ' ' -)
+  [ "$want" = zero ] && expected=""
+  [ "$found" = "$expected" ] ||
+    { echo "FAIL: exercises found reaching the reference answer: '$found', expected '$expected'"; exit 1; }
+  echo "reference calls found: ${found:-none}"
 }
 
 leak() {

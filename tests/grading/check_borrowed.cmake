@@ -1,0 +1,38 @@
+# grading.reference_reach (cmake -P): -DROOT=source tree -DSUBMISSION=fixture folder -DOUT=DIR
+# grade-submission with LESSONS=03 on a submission whose 03.1 reaches the reference answer through
+# another library function and whose 03.2 is written by hand: 03.1 scores 0 with the reason (in
+# the report a student sees: results.json), 03.2 earns its 10 points.
+file(REMOVE_RECURSE ${OUT})
+execute_process(COMMAND ${CMAKE_COMMAND} -E env LESSONS=03 SEED=3
+                        bash ${ROOT}/tools/grading/grade_submission.sh ${SUBMISSION} ${OUT}
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT EXISTS ${OUT}/score.json)
+  message(FATAL_ERROR "grade_submission.sh exited ${code}:\n${out}${err}")
+endif()
+file(READ ${OUT}/score.json score)
+file(READ ${OUT}/results.json results)
+set(failures "")
+string(JSON p1 GET "${score}" exercises 03.1 points)
+string(JSON p2 GET "${score}" exercises 03.2 points)
+if(NOT p1 EQUAL 0)
+  string(APPEND failures "\n  03.1 (borrowed through hybrid::levelBias) scored ${p1}, expected 0")
+endif()
+if(NOT p2 EQUAL 10)
+  string(APPEND failures "\n  03.2 (written by hand) scored ${p2}, expected 10")
+endif()
+foreach(reason IN ITEMS "exercise 03.1 scores 0: your slopeScaledBias reaches shadowlab::shadow::slopeScaledBias(float, float, float, float)")
+  string(FIND "${results}" "${reason}" at)
+  if(at EQUAL -1)
+    string(APPEND failures "\n  results.json does not tell the student '${reason}'")
+  endif()
+endforeach()
+file(READ ${OUT}/logs/reference_calls.txt calls)
+string(REGEX MATCHALL "(^|\n)[0-9]+\\.[0-9]+" ids "${calls}")
+list(LENGTH ids n)
+if(NOT n EQUAL 1)
+  string(APPEND failures "\n  expected exactly one exercise found (03.1), found:\n${calls}")
+endif()
+if(failures)
+  message(FATAL_ERROR "a borrowed answer was not caught exercise by exercise:${failures}\n${out}")
+endif()
+message(STATUS "03.1 borrowed: 0 points with the reason; 03.2 by hand: 10 points\n${out}")
