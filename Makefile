@@ -2,13 +2,14 @@
 #   make run    the course: a launcher window, or without a display every lesson rendered into out/tour/
 #   make test   every test through ctest, headless
 # Also: make build, make slides, make docs, make grade LESSON=01, make bench, make soak, make fuzz, make stub-hashes, make format, make clean;
-# instructors: make handout (the student tree), make grade-submission SUBMISSION=DIR (public + hidden cases).
+# instructors: make handout (the student tree), make grade-submission SUBMISSION=DIR (public + hidden cases),
+# make gradescope [LESSONS=03,05] (the Gradescope autograder zip).
 PRESET ?= default
 BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: run test build deps configure web slides docs grade bench soak fuzz fuzz-build stub-hashes clean tour format handout grade-submission
+.PHONY: run test build deps configure web slides docs grade bench soak fuzz fuzz-build stub-hashes clean tour format handout grade-submission gradescope
 
 deps:
 	@bash tools/install-deps.sh
@@ -83,6 +84,12 @@ handout: configure
 # to fix it): out/grades/submission/{score.json, junit.xml, results.json}.
 SUBMISSION ?=
 GRADES ?= out/grades/submission
+# The Gradescope autograder zip of this tree (tools/grading/make_gradescope.sh): out/gradescope/.
+GRADESCOPE ?= out/gradescope
+gradescope:
+	@if [ ! -f tools/grading/make_gradescope.sh ]; then echo "make gradescope: the instructor's tree only; this is the student handout, which has no hidden cases to grade with" >&2; exit 2; fi
+	@LESSONS=$(LESSONS) bash tools/grading/make_gradescope.sh $(GRADESCOPE)
+
 grade-submission: configure
 	@if [ -z "$(SUBMISSION)" ]; then echo "usage: make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT] [LESSONS=03,05] [REFERENCE_CALLS=report]"; exit 2; fi
 	@if [ ! -f tools/grading/grade_submission.sh ]; then echo "grade-submission: the instructor's tree only (the handout has no hidden cases)"; exit 2; fi

@@ -231,3 +231,14 @@ if(NOT SHADOWLAB_SUBMISSION AND CMAKE_SYSTEM_NAME STREQUAL "Linux"
                    -DOUT=${CMAKE_CURRENT_BINARY_DIR}/grading_borrowed -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_borrowed.cmake)
   set_tests_properties(grading.reference_reach PROPERTIES LABELS handout RESOURCE_LOCK grade_submission TIMEOUT 3600)
 endif()
+
+# Gradescope as shipped (tools/grading/check_gradescope.sh): make gradescope LESSONS=01,03, the zip
+# unpacked into a folder standing for /autograder, setup.sh, then run_autograder on the reference
+# (a nested handout tree), the untouched stubs, a flat upload and the crash fixture, each compiling
+# only the student's files.
+if(NOT SHADOWLAB_SUBMISSION AND CMAKE_SYSTEM_NAME STREQUAL "Linux"
+   AND EXISTS ${CMAKE_SOURCE_DIR}/tools/grading/make_gradescope.sh)
+  add_test(NAME grading.gradescope COMMAND bash ${CMAKE_SOURCE_DIR}/tools/grading/check_gradescope.sh
+                                           ${CMAKE_CURRENT_BINARY_DIR}/gradescope)
+  set_tests_properties(grading.gradescope PROPERTIES LABELS handout RESOURCE_LOCK grade_submission TIMEOUT 3600)
+endif()

@@ -2,6 +2,7 @@
 # make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT] [LESSONS=03,05] [REFERENCE_CALLS=report]
 #
 # LESSONS: grade only these lessons (one week's assignment); default every lesson with exercises.
+# GRADE_TIMEOUT: seconds each C++ exercise may run (default 60).
 # REFERENCE_CALLS: zero (default: an exercise that reaches the reference answer scores 0, with the
 # reason) or report (listed in logs/reference_calls.txt only, for an instructor who reads them).
 # Grades a student's submission against this (the instructor's) tree: DIR holds the student's
@@ -16,14 +17,9 @@
 # whose code reaches the reference answer, which score 0).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-usage="usage: grade_submission.sh SUBMISSION_DIR [OUT_DIR]"
+usage="usage: grade_submission.sh SUBMISSION_DIR [OUT_DIR]  (or --lessons: print LESSONS checked, as NN,NN)"
 [ $# -ge 1 ] || { echo "$usage" >&2; exit 2; }
-[ -d "$1" ] || { echo "grade_submission.sh: no submission directory '$1'; $usage" >&2; exit 2; }
-sub=$(cd "$1" && pwd)
-out=${2:-$root/out/grades/submission}
-seed=${SEED:-$(od -An -N4 -tu4 /dev/urandom | tr -d ' ')}
-build=$root/build/grade-submission
-jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+caller=$PWD  # relative paths are the caller's
 cd "$root"
 # The lessons that have exercises, and the ones asked for.
 available=$( (ls tests/grading/ex*_reference.cpp tests/grading/glsl/ex*_glsl.cpp 2>/dev/null || true) |
@@ -38,8 +34,20 @@ if [ -n "${LESSONS:-}" ]; then
       *) echo "grade_submission.sh: LESSONS: '$nn' is not a lesson with exercises; valid: $available" >&2; exit 2 ;;
     esac
   done
-  echo "grade: lessons$wanted(LESSONS=$LESSONS)"
+  [ "$1" = --lessons ] || echo "grade: lessons$wanted(LESSONS=$LESSONS)"
 fi
+if [ "$1" = --lessons ]; then
+  [ -z "${LESSONS:-}" ] || { echo "$wanted" | xargs | tr ' ' ','; }
+  exit 0
+fi
+sub=$1 out=${2:-$root/out/grades/submission}
+[[ "$sub" = /* ]] || sub=$caller/$sub
+[[ "$out" = /* ]] || out=$caller/$out
+[ -d "$sub" ] || { echo "grade_submission.sh: no submission directory '$1'; $usage" >&2; exit 2; }
+sub=$(cd "$sub" && pwd)
+seed=${SEED:-$(od -An -N4 -tu4 /dev/urandom | tr -d ' ')}
+build=$root/build/grade-submission
+jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 reference_calls=${REFERENCE_CALLS:-zero}
 case $reference_calls in
   zero | report) ;;
@@ -80,6 +88,7 @@ for ref in tests/grading/ex*_reference.cpp; do
   if cmake --build "$build" -j "$jobs" --target "grade_ex$nn" "grade_ex${nn}_reference" >"$out/logs/build_ex$nn.log" 2>&1; then
     # One exercise per process, with limits: a crash or an endless loop costs that exercise only.
     "$build/bin/grade_isolated" --reference="$build/bin/grade_ex${nn}_reference" --results-json="$out/runs/ex$nn.json" \
+      --timeout="${GRADE_TIMEOUT:-60}" \
       -- "$build/bin/grade_ex$nn" --seed="$seed" >"$out/logs/ex$nn.log" 2>&1 || true
     reports+=("$out/runs/ex$nn.json")
     # An exercise whose function reaches, directly or through any library function, what the

@@ -145,12 +145,15 @@ build() {
     { tail -40 "$work/ctest.log"; exit 1; }
   # The student's README and make: no instructor section, and `make handout` says where it works.
   if grep -q '^## Grading a class' "$tree/README.md"; then echo "FAIL: the handout's README has the instructor's section"; exit 1; fi
-  set +e
-  msg=$(make -C "$tree" --no-print-directory handout 2>&1 >/dev/null)
-  code=$?
-  set -e
-  [[ $code -ne 0 && "$msg" == *"the instructor's tree only"* ]] ||
-    { echo "FAIL: make handout in the handout: exit $code, '$msg'"; exit 1; }
+  local target msg code
+  for target in handout gradescope; do
+    set +e
+    msg=$(make -C "$tree" --no-print-directory $target 2>&1 >/dev/null)
+    code=$?
+    set -e
+    [[ $code -ne 0 && "$msg" == *"the instructor's tree only"* ]] ||
+      { echo "FAIL: make $target in the handout: exit $code, '$msg'"; exit 1; }
+  done
   echo "the handout built from $tarball, ran $n lessons with impl=reference and passed its $(grep -o '[0-9]* tests passed\|out of [0-9]*' "$work/ctest.log" | tail -1) unit and validity tests"
 }
 
