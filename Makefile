@@ -3,13 +3,13 @@
 #   make test   every test through ctest, headless
 # Also: make build, make slides, make docs, make grade LESSON=01, make bench, make soak, make fuzz, make stub-hashes, make format, make clean;
 # instructors: make handout (the student tree), make grade-submission SUBMISSION=DIR (public + hidden cases),
-# make gradescope [LESSONS=03,05] (the Gradescope autograder zip).
+# make gradescope [LESSONS=03,05] (the Gradescope autograder zip), make grade-class SUBMISSIONS=DIR.
 PRESET ?= default
 BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: run test build deps configure web slides docs grade bench soak fuzz fuzz-build stub-hashes clean tour format handout grade-submission gradescope
+.PHONY: run test build deps configure web slides docs grade bench soak fuzz fuzz-build stub-hashes clean tour format handout grade-submission gradescope grade-class
 
 deps:
 	@bash tools/install-deps.sh
@@ -84,6 +84,13 @@ handout: configure
 # to fix it): out/grades/submission/{score.json, junit.xml, results.json}.
 SUBMISSION ?=
 GRADES ?= out/grades/submission
+# A class: every submission in SUBMISSIONS (folders or archives), two at a time, with a CSV and an
+# HTML summary (tools/grading/grade_class.sh): out/grades/class/.
+grade-class: configure
+	@if [ -z "$(SUBMISSIONS)" ]; then echo "usage: make grade-class SUBMISSIONS=DIR [LESSONS=03,05] [GRADES=OUT]" >&2; exit 2; fi
+	@if [ ! -f tools/grading/grade_class.sh ]; then echo "make grade-class: the instructor's tree only" >&2; exit 2; fi
+	@LESSONS=$(LESSONS) SEED=$(SEED) bash tools/grading/grade_class.sh $(SUBMISSIONS) $(if $(filter out/grades/submission,$(GRADES)),out/grades/class,$(GRADES))
+
 # The Gradescope autograder zip of this tree (tools/grading/make_gradescope.sh): out/gradescope/.
 GRADESCOPE ?= out/gradescope
 gradescope:

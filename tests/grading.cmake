@@ -1,7 +1,7 @@
 # Exercise graders. For every lessons/NN_name/exercises.cpp with tests/grading/exNN_tests.cpp:
 #   grade_exNN            the tests against the student's exercises.cpp; ctest label exNN
-#                         (students: ctest --test-dir build/default -L exNN; `make grade LESSON=NN`
-#                         also writes out/grades/exNN.json and exNN.xml)
+#                         (students: `make grade LESSON=NN`, which rebuilds first and writes
+#                         out/grades/exNN/; ctest -L exNN runs the same cases in place)
 #   grade_exNN_reference  the same tests against the reference in common/ (exNN_reference.cpp)
 # The public cases are grading/exNN_tests.cpp; the hidden ones, grading/hidden/exNN_hidden.cpp
 # (doctest suite "hidden"), exist only in the instructor's tree: the student handout (make
@@ -241,4 +241,14 @@ if(NOT SHADOWLAB_SUBMISSION AND CMAKE_SYSTEM_NAME STREQUAL "Linux"
   add_test(NAME grading.gradescope COMMAND bash ${CMAKE_SOURCE_DIR}/tools/grading/check_gradescope.sh
                                            ${CMAKE_CURRENT_BINARY_DIR}/gradescope)
   set_tests_properties(grading.gradescope PROPERTIES LABELS handout RESOURCE_LOCK grade_submission TIMEOUT 3600)
+endif()
+
+# A class (tools/grading/check_grade_class.sh): make grade-class on a folder, a zip and a tarball
+# (a crash, borrowed answers, a compile error), each in its own build folder; class.csv and
+# class.html checked.
+if(NOT SHADOWLAB_SUBMISSION AND CMAKE_SYSTEM_NAME STREQUAL "Linux"
+   AND EXISTS ${CMAKE_SOURCE_DIR}/tools/grading/grade_class.sh)
+  add_test(NAME grading.grade_class COMMAND bash ${CMAKE_SOURCE_DIR}/tools/grading/check_grade_class.sh
+                                            ${CMAKE_CURRENT_BINARY_DIR}/grade_class)
+  set_tests_properties(grading.grade_class PROPERTIES LABELS handout RESOURCE_LOCK grade_submission TIMEOUT 3600)
 endif()

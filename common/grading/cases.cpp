@@ -6,6 +6,7 @@
 #include "grading/cases.hpp"
 
 #include <functional>
+#include <optional>
 #include <sstream>
 
 #include "core/paths.hpp"
@@ -15,6 +16,7 @@ namespace shadowlab::grading {
 namespace {
 
 std::uint64_t g_seed = 20261122;
+std::optional<std::uint64_t> g_hiddenSeed;  // the hidden cases' own seed (--hidden-seed); else g_seed
 RunResult g_run;
 constexpr int kShownFailures = 3;  // per case: enough to see the pattern, not a page of output
 
@@ -112,8 +114,11 @@ DOCTEST_REGISTER_REPORTER("shadowlab-quiet", 1, QuietReporter);
 
 std::uint64_t seed() { return g_seed; }
 void setSeed(std::uint64_t s) { g_seed = s; }
+std::uint64_t hiddenSeed() { return g_hiddenSeed.value_or(g_seed); }
+void setHiddenSeed(std::uint64_t s) { g_hiddenSeed = s; }
 std::uint64_t seedFor(const std::string& salt) {
-  return g_seed ^ (std::hash<std::string>{}(salt)*0x9E3779B97F4A7C15ull);
+  const bool hidden = g_case.active && !g_run.cases.empty() && g_run.cases.back().hidden;
+  return (hidden ? hiddenSeed() : g_seed) ^ (std::hash<std::string>{}(salt)*0x9E3779B97F4A7C15ull);
 }
 
 std::string exerciseOf(const std::string& name) {
@@ -141,6 +146,7 @@ RunResult runCasesQuietly(const std::string& filter) {
   const RunResult saved = g_run;
   g_run = RunResult{};
   g_run.seed = g_seed;
+  g_run.hiddenSeed = hiddenSeed();
   doctest::Context context;
   context.setOption("reporters", "shadowlab-quiet");
   context.setOption("test-case", filter.c_str());

@@ -26,7 +26,8 @@ struct CaseResult {
 struct RunResult {
   std::string suite;  // which grader ran: "grade_ex01", "grade_ex02_glsl", ...
   std::uint64_t seed = 0;
-  int testCasesRun = 0;  // cases that passed the filters and ran (0 fails every run: see test_main)
+  std::uint64_t hiddenSeed = 0;  // the hidden cases' seed (the same as seed unless set apart)
+  int testCasesRun = 0;          // cases that passed the filters and ran (0 fails every run: see test_main)
   std::vector<CaseResult> cases;
 };
 
@@ -34,7 +35,12 @@ struct RunResult {
 // 20261122 otherwise. Printed by graders so a failure can be replayed.
 std::uint64_t seed();
 void setSeed(std::uint64_t seed);
-// A seed derived from the run's seed and a case-local salt, so cases stay independent.
+// The hidden cases' seed: --hidden-seed=N sets it apart (grading a submission: public cases with
+// the seed the student ran them with, hidden ones with the assignment's), else seed().
+std::uint64_t hiddenSeed();
+void setHiddenSeed(std::uint64_t seed);
+// A seed derived from the run's seed (the hidden seed inside a hidden case) and a case-local salt,
+// so cases stay independent.
 std::uint64_t seedFor(const std::string& salt);
 
 // "ex01.1: head-on light" -> "01.1"; "" for a name that is not an exercise case.

@@ -79,7 +79,11 @@ Json resultsJson(const RunResult& run) {
                      {"hidden", c.hidden},
                      {"stub", c.stub},
                      {"output", c.output}});
-  Json j = {{"suite", run.suite}, {"seed", run.seed}, {"test_cases_run", run.testCasesRun}, {"cases", cases}};
+  Json j = {{"suite", run.suite},
+            {"seed", run.seed},
+            {"hidden_seed", run.hiddenSeed},
+            {"test_cases_run", run.testCasesRun},
+            {"cases", cases}};
   return j;
 }
 
@@ -87,6 +91,7 @@ RunResult runFromJson(const Json& j) {
   RunResult r;
   r.suite = j.at("suite").get<std::string>();
   r.seed = j.at("seed").get<std::uint64_t>();
+  r.hiddenSeed = j.value("hidden_seed", r.seed);
   r.testCasesRun = j.value("test_cases_run", 0);
   for (const auto& c : j.at("cases")) {
     CaseResult k;
@@ -118,7 +123,10 @@ Json scoreJson(const std::vector<RunResult>& runs, const Grade& g) {
     complete += e.cases() > 0 && e.failed + e.hiddenFailed == 0;
   }
   Json seeds = Json::object();
-  for (const RunResult& r : runs) seeds[r.suite] = r.seed;
+  for (const RunResult& r : runs) {
+    seeds[r.suite] = r.seed;
+    if (r.hiddenSeed != r.seed) seeds[r.suite + " hidden"] = r.hiddenSeed;
+  }
   Json j = {{"score", g.points},
             {"max_score", g.maxPoints},
             {"exercises_complete", complete},
@@ -174,11 +182,18 @@ Json gradescopeJson(const std::vector<RunResult>& runs, const Grade& g) {
                        {"visibility", c.hidden ? "after_published" : "visible"},
                        {"tags", {run.suite}}});
     }
+  // What a student sees before publication: the visible cases only. Points and hidden cases
+  // (which share an exercise's points) would let resubmissions probe the hidden ones.
   std::string summary;
   for (const ExerciseGrade& e : g.exercises)
-    summary += "exercise " + e.id + ": " + scoreText(e.points) + " / " + scoreText(e.maxPoints) + " points (" +
-               std::to_string(e.passed + e.hiddenPassed) + " of " + std::to_string(e.cases()) + " cases)\n";
-  for (const RunResult& run : runs) summary += run.suite + ": seed " + std::to_string(run.seed) + "\n";
+    summary += "exercise " + e.id + ": " + std::to_string(e.passed) + " of " + std::to_string(e.passed + e.failed) +
+               " visible cases passed" + (e.stub ? ", still a stub" : "") + "\n";
+  if (std::any_of(g.exercises.begin(), g.exercises.end(),
+                  [](const ExerciseGrade& e) { return e.hiddenPassed + e.hiddenFailed > 0; }))
+    summary += "Hidden cases are graded too; they and the points appear when the grades are published.\n";
+  for (const RunResult& run : runs)
+    summary += run.suite + ": seed " + std::to_string(run.seed) +
+               (run.hiddenSeed != run.seed ? " (hidden cases: their own seed)" : "") + "\n";
   Json j = {{"score", g.points},
             {"output", summary},
             {"visibility", "visible"},

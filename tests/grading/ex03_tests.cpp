@@ -1,4 +1,4 @@
-// Graders for lesson 03 (ctest -L ex03): the public cases. Expected values are worked out by hand
+// Graders for lesson 03 (make grade LESSON=03): the public cases. Expected values are worked out by hand
 // in the comments; the randomised cases check properties any correct answer has, or compare with
 // the reference implementation (compiled into the course library). More cases, with seeds the
 // grader chooses, run when your work is graded.

@@ -1,4 +1,4 @@
-// Graders for lesson 05 (ctest -L ex05): the public cases. Expected values are worked out by hand
+// Graders for lesson 05 (make grade LESSON=05): the public cases. Expected values are worked out by hand
 // in the comments; the randomised cases compare with the reference implementation (compiled into
 // the course library) and check properties any correct answer has. More cases, with seeds the
 // grader chooses, run when your work is graded.

@@ -1,4 +1,4 @@
-// Graders for lesson 07 (ctest -L ex07): the public cases. Expected values are worked out by hand
+// Graders for lesson 07 (make grade LESSON=07): the public cases. Expected values are worked out by hand
 // in the comments; the randomised cases compare with the reference implementation (compiled into
 // the course library). More cases, with seeds the grader chooses, run when your work is graded.
 #include <doctest/doctest.h>

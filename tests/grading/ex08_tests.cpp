@@ -1,4 +1,4 @@
-// Grader for lesson 08 (ctest -L ex08): the public cases. Hand-computed cases, then seeded random
+// Grader for lesson 08 (make grade LESSON=08): the public cases. Hand-computed cases, then seeded random
 // ones that check properties any correct answer has. More cases, with seeds the grader chooses,
 // run when your work is graded.
 #include <doctest/doctest.h>

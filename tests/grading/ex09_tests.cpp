@@ -1,4 +1,4 @@
-// Grader for lesson 09 (ctest -L ex09): the public cases. Hand-computed cases, then seeded random
+// Grader for lesson 09 (make grade LESSON=09): the public cases. Hand-computed cases, then seeded random
 // ones that check the statement's formulas and properties. More cases, with seeds the grader
 // chooses, run when your work is graded.
 #include <doctest/doctest.h>

@@ -1,4 +1,4 @@
-// Grader for lesson 10 (ctest -L ex10): the public cases. Hand-computed cases first (worked out in
+// Grader for lesson 10 (make grade LESSON=10): the public cases. Hand-computed cases first (worked out in
 // the comments), then seeded random ones that check the statement's formulas and properties. More
 // cases, with seeds the grader chooses, run when your work is graded.
 #include <doctest/doctest.h>

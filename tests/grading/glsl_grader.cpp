@@ -288,6 +288,7 @@ grading::RunResult grade(const Options& o, const std::string& lesson) {
   grading::RunResult run;
   run.suite = "grade_ex" + lesson.substr(0, 2) + "_glsl";
   run.seed = grading::seed();
+  run.hiddenSeed = grading::hiddenSeed();
   if (!set) return run;
   auto selected = [&](const std::string& name) {
     return o.exercise.empty() || grading::exerciseOf(name) == o.exercise;

@@ -1,5 +1,7 @@
 // The main() of every doctest binary (graders, unit, stress, gpu): our flags, then doctest.
 //   --seed=N                       seed of the randomised cases (also SHADOWLAB_SEED)
+//   --hidden-seed=N                the hidden cases' own seed (grading a submission: the public
+//                                  cases keep the seed the student ran them with)
 //   --results-json=FILE            every case's result (grade_report merges such files)
 //   --score-json=FILE  --junit=FILE  --gradescope=FILE
 //                                  the score per exercise, JUnit XML, Gradescope's results.json
@@ -71,6 +73,15 @@ int parse(int argc, char** argv, Options& o) {
       o.expectStubsScoreZero = true;
       continue;
     }
+    if (takeValue(argv[i], "--hidden-seed=", value)) {
+      std::uint64_t s = 0;
+      if (!parseSeed(value.c_str(), s)) {
+        std::cerr << "--hidden-seed='" << value << "' is not a non-negative integer\n";
+        return 2;
+      }
+      grading::setHiddenSeed(s);
+      continue;
+    }
     if (takeValue(argv[i], "--seed=", value)) {
       std::uint64_t s = 0;
       if (!parseSeed(value.c_str(), s)) {
@@ -107,7 +118,8 @@ int main(int argc, char** argv) {
               std::strncmp(arg, "-ltc", 4) == 0 || std::strcmp(arg, "--help") == 0 || std::strcmp(arg, "-h") == 0;
   if (!listing)
     std::cout << "[shadowlab] seed " << grading::seed() << " (replay with --seed=" << grading::seed()
-              << " or SHADOWLAB_SEED)\n";
+              << " or SHADOWLAB_SEED)"
+              << (grading::hiddenSeed() != grading::seed() ? "; hidden cases with their own seed" : "") << "\n";
   const int result = context.run();
   if (listing || context.shouldExit()) return result;
   if (std::string error; !grading::writeRecordedAnswers(error)) {
@@ -118,6 +130,7 @@ int main(int argc, char** argv) {
   grading::RunResult run = grading::lastRun();
   run.suite = std::filesystem::path(argv[0]).filename().string();
   run.seed = grading::seed();
+  run.hiddenSeed = grading::hiddenSeed();
   if (!grading::writeReports({o.resultsJson, o.scoreJson, o.junit, o.gradescope}, {run}, std::cerr)) return 1;
   if (run.testCasesRun == 0) {
     std::cerr << "[shadowlab] no test case ran: the filter matches none of this binary's cases "

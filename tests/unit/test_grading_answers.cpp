@@ -122,3 +122,33 @@ TEST_CASE("answers: without record or replay a proxy calls the function") {
   CHECK(gHalf(8.0f) == 4.0f);
   CHECK_THROWS_AS(gPicky(-2.0f), std::invalid_argument);
 }
+
+#include "grading/report.hpp"
+
+TEST_CASE("gradescope: the visible summary counts visible cases only, never a hidden one or points") {
+  grading::RunResult run;
+  run.suite = "grade_ex01";
+  auto add = [&](const char* name, bool passed, bool hidden) {
+    grading::CaseResult c;
+    c.name = name;
+    c.exercise = grading::exerciseOf(name);
+    c.passed = passed;
+    c.hidden = hidden;
+    c.output = passed ? "" : "SECRET inputs of this case";
+    run.cases.push_back(c);
+  };
+  add("ex01.1: a", true, false);
+  add("ex01.1: b", false, false);
+  add("ex01.1: hidden one", false, true);
+  add("ex01.1: hidden two", true, true);
+  const std::vector<grading::RunResult> runs = {run};
+  const grading::Json j = grading::gradescopeJson(runs, grading::grade(runs));
+  const std::string summary = j.at("output").get<std::string>();
+  CHECK(summary.find("exercise 01.1: 1 of 2 visible cases passed\n") != std::string::npos);
+  CHECK(summary.find("Hidden cases are graded too") != std::string::npos);
+  CHECK(summary.find("points (") == std::string::npos);  // no score per exercise: it holds the hidden cases
+  CHECK(summary.find("of 4") == std::string::npos);
+  for (const auto& t : j.at("tests"))
+    if (t.at("name").get<std::string>().find("hidden") != std::string::npos)
+      CHECK(t.at("visibility") == "after_published");
+}

@@ -201,6 +201,7 @@ std::vector<CaseResult> gradeExercise(const Options& o, const std::string& id, c
     const std::vector<RunResult> runs = runsFromJson(Json::parse(slurp(json)));
     if (runs.size() == 1) {
       merged.seed = runs.front().seed;
+      merged.hiddenSeed = runs.front().hiddenSeed;
       merged.testCasesRun += runs.front().testCasesRun;
       std::vector<CaseResult> cases;
       for (const CaseResult& c : runs.front().cases)
@@ -245,7 +246,8 @@ int main(int argc, char** argv) {
 
   RunResult merged;
   merged.suite = fs::path(o.grader).filename().string();
-  merged.seed = seed();  // replaced by the children's (--seed=N, SHADOWLAB_SEED) once one reports
+  merged.seed = seed();  // replaced by the judge's (--seed=N, SHADOWLAB_SEED) once one reports
+  merged.hiddenSeed = merged.seed;
   if (const char* env = std::getenv("SHADOWLAB_SEED")) merged.seed = std::strtoull(env, nullptr, 10);
   for (const std::string& a : o.graderArgs)
     if (a.rfind("--seed=", 0) == 0) merged.seed = std::strtoull(a.c_str() + 7, nullptr, 10);

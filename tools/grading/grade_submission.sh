@@ -2,15 +2,17 @@
 # make grade-submission SUBMISSION=DIR [SEED=N] [GRADES=OUT] [LESSONS=03,05] [REFERENCE_CALLS=report]
 #
 # LESSONS: grade only these lessons (one week's assignment); default every lesson with exercises.
-# GRADE_TIMEOUT: seconds each C++ exercise may run (default 60).
+# GRADE_TIMEOUT: seconds each C++ exercise may run (default 60). GRADE_BUILD: the build folder
+# (default build/grade-submission; make grade-class gives each submission its own).
 # REFERENCE_CALLS: zero (default: an exercise that reaches the reference answer scores 0, with the
 # reason) or report (listed in logs/reference_calls.txt only, for an instructor who reads them).
 # Grades a student's submission against this (the instructor's) tree: DIR holds the student's
 # files where the handout has them, lessons/NN_name/exercises.cpp and shaders/NN_name/
 # exercises.glsl (a whole handout tree will do; a missing file is graded as the untouched stub).
 # Each grader is built from the student's file (build/grade-submission, -DSHADOWLAB_SUBMISSION)
-# and runs its public AND hidden cases with a seed the grader chooses (SEED, else random, written
-# into every report); the GLSL graders render the lessons with the student's shaders. A file that
+# and runs its public AND hidden cases: the hidden ones (and the GLSL graders' random cases) with
+# the assignment's seed (SEED, else fixed by its lessons; written into every report), the public
+# C++ cases with the seed the student's own `make grade` used; the GLSL graders render the lessons with the student's shaders. A file that
 # does not compile scores 0 on its lesson's cases, with the compiler's errors in the report.
 # Writes OUT (default out/grades/submission): score.json, junit.xml, results.json (Gradescope),
 # runs/ (each grader's results), logs/ (builds, graders, and reference_calls.txt: the exercises
@@ -45,8 +47,10 @@ sub=$1 out=${2:-$root/out/grades/submission}
 [[ "$out" = /* ]] || out=$caller/$out
 [ -d "$sub" ] || { echo "grade_submission.sh: no submission directory '$1'; $usage" >&2; exit 2; }
 sub=$(cd "$sub" && pwd)
-seed=${SEED:-$(od -An -N4 -tu4 /dev/urandom | tr -d ' ')}
-build=$root/build/grade-submission
+# The same code scores the same: the hidden cases' seed is fixed per assignment (SEED, else drawn
+# from its lessons), the public C++ cases keep the seed `make grade` ran them with for the student.
+seed=${SEED:-$(printf 'shadowlab assignment%s' "$wanted" | cksum | cut -d' ' -f1)}
+build=${GRADE_BUILD:-$root/build/grade-submission}  # make grade-class: one per submission
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 reference_calls=${REFERENCE_CALLS:-zero}
 case $reference_calls in
@@ -69,7 +73,7 @@ PY
 graded() { case "$wanted" in *" $1 "*) return 0 ;; *) return 1 ;; esac; }
 rm -rf "$out"
 mkdir -p "$out/runs" "$out/logs"
-echo "grade: $sub, seed $seed"
+echo "grade: $sub, seed $seed (the assignment's hidden cases; public C++ cases as the student ran them)"
 # -ffunction-sections: one section per function, so the reference-call check can link a student's
 # function alone and see exactly which library functions it reaches.
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_SUBMISSION="$sub" \
@@ -89,7 +93,7 @@ for ref in tests/grading/ex*_reference.cpp; do
     # One exercise per process, with limits: a crash or an endless loop costs that exercise only.
     "$build/bin/grade_isolated" --reference="$build/bin/grade_ex${nn}_reference" --results-json="$out/runs/ex$nn.json" \
       --timeout="${GRADE_TIMEOUT:-60}" \
-      -- "$build/bin/grade_ex$nn" --seed="$seed" >"$out/logs/ex$nn.log" 2>&1 || true
+      -- "$build/bin/grade_ex$nn" --hidden-seed="$seed" >"$out/logs/ex$nn.log" 2>&1 || true
     reports+=("$out/runs/ex$nn.json")
     # An exercise whose function reaches, directly or through any library function, what the
     # reference answer calls borrowed the answer: decided by the linker (reference_reach.sh), it
@@ -104,7 +108,7 @@ for ref in tests/grading/ex*_reference.cpp; do
   else
     echo "grade: lessons/$lesson/exercises.cpp does not compile: its cases score 0 (logs/build_ex$nn.log)"
     cmake --build "$build" -j "$jobs" --target "grade_ex${nn}_reference" >>"$out/logs/build_ex$nn.log" 2>&1
-    "$build/bin/grade_ex${nn}_reference" --seed="$seed" --results-json="$out/runs/ex$nn.json" >/dev/null 2>&1 || true
+    "$build/bin/grade_ex${nn}_reference" --hidden-seed="$seed" --results-json="$out/runs/ex$nn.json" >/dev/null 2>&1 || true
     reports+=("--build-failed=$out/logs/build_ex$nn.log" "$out/runs/ex$nn.json")
   fi
 done
