@@ -305,6 +305,25 @@ grading::RunResult grade(const Options& o, const std::string& lesson) {
   return run;
 }
 
+// Messages name the files a student can open: the staged copy of their exercises.glsl is their
+// own file, the rest of the staged tree is this tree (the staged folder is gone by then).
+void unstage(grading::RunResult& run, const std::string& root, const std::string& studentGlsl,
+             const std::string& lesson, const std::string& tree) {
+  auto replaceAll = [](std::string& text, const std::string& from, const std::string& to) {
+    std::string out;
+    std::size_t start = 0;
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, start)) {
+      out.append(text, start, at - start).append(to);
+      start = at + from.size();
+    }
+    text = out.append(text, start, std::string::npos);
+  };
+  for (grading::CaseResult& c : run.cases) {
+    replaceAll(c.output, root + "/shaders/" + lesson + "/exercises.glsl", studentGlsl);
+    replaceAll(c.output, root, tree);
+  }
+}
+
 void print(const grading::RunResult& run) {
   int failed = 0;
   for (const grading::CaseResult& c : run.cases) {
@@ -360,8 +379,11 @@ int main(int argc, char** argv) {
               << "\n";
     return bad == 0 ? 0 : 1;
   }
-  const grading::RunResult run = grade(o, lesson);
-  if (!root.empty()) fs::remove_all(root);
+  grading::RunResult run = grade(o, lesson);
+  if (!root.empty()) {
+    fs::remove_all(root);
+    unstage(run, root, studentFile(o.student, lesson).string(), lesson, o.tree);
+  }
   print(run);
   if (!grading::writeReports(o.reports, {run}, std::cerr)) return 1;
   if (run.cases.empty()) {
