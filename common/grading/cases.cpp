@@ -5,6 +5,7 @@
 
 #include "grading/cases.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <sstream>
@@ -23,6 +24,7 @@ constexpr int kShownFailures = 3;  // per case: enough to see the pattern, not a
 struct CaseState {
   bool active = false;
   int failures = 0;
+  bool threw = false;
 };
 CaseState g_case;
 
@@ -63,8 +65,9 @@ struct CaseRecorder : doctest::IReporter {
     c.file = repositoryRelative(tc.m_file.c_str());
     c.line = int(tc.m_line);
     c.hidden = std::string(tc.m_test_suite) == "hidden";
+    c.partialCredit = tc.m_description && std::string(tc.m_description) == kIndependentChecks;
     g_run.cases.push_back(std::move(c));
-    g_case = {true, 0};
+    g_case = {true, 0, false};
     clearStubsReached();
   }
   void test_case_reenter(const doctest::TestCaseData&) override {}
@@ -73,12 +76,16 @@ struct CaseRecorder : doctest::IReporter {
     CaseResult& c = g_run.cases.back();
     c.passed = stats.testCaseSuccess;
     c.stub = !c.exercise.empty() && stubsReached().count(c.exercise) > 0;
+    c.checks = stats.numAssertsCurrentTest;
+    c.checksFailed = stats.numAssertsFailedCurrentTest;
+    c.partialCredit = c.partialCredit && !g_case.threw;  // checks that never ran cannot be counted
     if (g_case.failures > kShownFailures)
       c.output += "\n(" + std::to_string(g_case.failures - kShownFailures) + " more failed checks in this case)";
     if (!c.passed && c.output.empty()) c.output = "failed";
     g_case.active = false;
   }
   void test_case_exception(const doctest::TestCaseException& e) override {
+    g_case.threw = true;
     addFailure(std::string(e.is_crash ? "crashed: " : "threw: ") + e.error_string.c_str());
   }
   void subcase_start(const doctest::SubcaseSignature&) override {}
@@ -119,6 +126,12 @@ void setHiddenSeed(std::uint64_t s) { g_hiddenSeed = s; }
 std::uint64_t seedFor(const std::string& salt) {
   const bool hidden = g_case.active && !g_run.cases.empty() && g_run.cases.back().hidden;
   return (hidden ? hiddenSeed() : g_seed) ^ (std::hash<std::string>{}(salt)*0x9E3779B97F4A7C15ull);
+}
+
+double caseCredit(const CaseResult& c) {
+  if (c.passed) return 1.0;
+  if (!c.partialCredit || c.stub || c.checks <= 0) return 0.0;
+  return double(std::max(0, c.checks - c.checksFailed)) / double(c.checks);
 }
 
 std::string exerciseOf(const std::string& name) {

@@ -10,7 +10,13 @@
 #include <string>
 #include <vector>
 
+// TEST_CASE("ex03.1: ..." * SHADOWLAB_INDEPENDENT_CHECKS): the case's checks are separate
+// situations (six hand-worked inputs), so each that holds earns its share of the case.
+#define SHADOWLAB_INDEPENDENT_CHECKS doctest::description(::shadowlab::grading::kIndependentChecks)
+
 namespace shadowlab::grading {
+
+inline constexpr const char* kIndependentChecks = "independent checks: partial credit";
 
 struct CaseResult {
   std::string exercise;  // "01.1"; "" for a case that belongs to no exercise
@@ -21,7 +27,15 @@ struct CaseResult {
   bool hidden = false;  // doctest suite "hidden": instructor-only
   bool stub = false;    // the exercise's SHADOWLAB_STUB marker ran during the case
   std::string output;   // why it failed: location, check, captured inputs (a few lines); "" when passed
+  // A case whose checks are independent (SHADOWLAB_INDEPENDENT_CHECKS) earns the share of them that
+  // held; any other case, and one that threw or reached a stub, all or nothing.
+  bool partialCredit = false;
+  int checks = 0, checksFailed = 0;
 };
+
+// The credit a case earns, 0..1: 1 passed, the share of its checks that held for a partial-credit
+// case that ran to its end without reaching a stub, else 0.
+double caseCredit(const CaseResult& c);
 
 struct RunResult {
   std::string suite;  // which grader ran: "grade_ex01", "grade_ex02_glsl", ...

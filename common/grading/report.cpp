@@ -49,6 +49,7 @@ std::string scoreText(double v) {
 Grade grade(const std::vector<RunResult>& runs) {
   std::map<std::string, ExerciseGrade> byId;
   Grade g;
+  std::map<std::string, double> credit;  // per exercise: cases passed, partial ones by their share
   for (const RunResult& run : runs)
     for (const CaseResult& c : run.cases) {
       ++g.cases;
@@ -58,9 +59,10 @@ Grade grade(const std::vector<RunResult>& runs) {
       e.id = c.exercise;
       (c.hidden ? (c.passed ? e.hiddenPassed : e.hiddenFailed) : (c.passed ? e.passed : e.failed)) += 1;
       e.stub = e.stub || c.stub;
+      credit[c.exercise] += caseCredit(c);
     }
   for (auto& [id, e] : byId) {
-    e.points = e.maxPoints * double(e.passed + e.hiddenPassed) / double(std::max(1, e.cases()));
+    e.points = e.maxPoints * credit[id] / double(std::max(1, e.cases()));
     g.points += e.points;
     g.maxPoints += e.maxPoints;
     g.exercises.push_back(e);
@@ -78,6 +80,9 @@ Json resultsJson(const RunResult& run) {
                      {"passed", c.passed},
                      {"hidden", c.hidden},
                      {"stub", c.stub},
+                     {"partial_credit", c.partialCredit},
+                     {"checks", c.checks},
+                     {"checks_failed", c.checksFailed},
                      {"output", c.output}});
   Json j = {{"suite", run.suite},
             {"seed", run.seed},
@@ -102,6 +107,9 @@ RunResult runFromJson(const Json& j) {
     k.passed = c.at("passed").get<bool>();
     k.hidden = c.value("hidden", false);
     k.stub = c.value("stub", false);
+    k.partialCredit = c.value("partial_credit", false);
+    k.checks = c.value("checks", 0);
+    k.checksFailed = c.value("checks_failed", 0);
     k.output = c.value("output", "");
     r.cases.push_back(std::move(k));
   }
@@ -175,7 +183,7 @@ Json gradescopeJson(const std::vector<RunResult>& runs, const Grade& g) {
       if (c.stub) output += "\n(the exercise's SHADOWLAB_STUB marker is still in place)";
       tests.push_back({{"name", c.name},
                        {"number", c.exercise},
-                       {"score", c.passed ? max : 0.0},
+                       {"score", max * caseCredit(c)},
                        {"max_score", max},
                        {"status", c.passed ? "passed" : "failed"},
                        {"output", output},

@@ -16,7 +16,7 @@
 using namespace shadowlab;
 using grading::kApprox;
 
-TEST_CASE("ex03.1: slope-scaled bias by hand") {
+TEST_CASE("ex03.1: slope-scaled bias by hand" * SHADOWLAB_INDEPENDENT_CHECKS) {
   CHECK_NEAR(ex03::slopeScaledBias(0.002f, 0.01f, 1.0f, 1.0f), 0.002f, 1e-7);          // head-on: tan 0 = 0
   CHECK_NEAR(ex03::slopeScaledBias(0.0f, 0.01f, std::sqrt(0.5f), 1.0f), 0.01f, 1e-7);  // 45 degrees: tan = 1
   // 60 degrees: cos 0.5, tan = sqrt(0.75) / 0.5 = 1.7320508 -> 0.001 + 0.017320508.
@@ -26,7 +26,7 @@ TEST_CASE("ex03.1: slope-scaled bias by hand") {
   CHECK_NEAR(ex03::slopeScaledBias(0.001f, 0.01f, -0.7f, 0.03f), 0.03f, 1e-7);  // facing away
 }
 
-TEST_CASE("ex03.2: bilinear PCF weights by hand") {
+TEST_CASE("ex03.2: bilinear PCF weights by hand" * SHADOWLAB_INDEPENDENT_CHECKS) {
   // A texel centre (4.5, 7.5): t = (4, 7), f = 0: everything on texel (4, 7).
   CHECK_NEAR(ex03::bilinearPcfWeights({4.5f, 7.5f}), glm::vec4(1, 0, 0, 0), 1e-5);
   // (5.0, 8.0): t = (4.5, 7.5), f = (0.5, 0.5): a quarter each.

@@ -152,3 +152,32 @@ TEST_CASE("gradescope: the visible summary counts visible cases only, never a hi
     if (t.at("name").get<std::string>().find("hidden") != std::string::npos)
       CHECK(t.at("visibility") == "after_published");
 }
+
+TEST_CASE("scores: a case of independent checks earns the share that held; others, stubs and throws all or nothing") {
+  auto make = [](const char* name, bool passed, bool partial, int checks, int failed, bool stub = false) {
+    grading::CaseResult c;
+    c.name = name;
+    c.exercise = grading::exerciseOf(name);
+    c.passed = passed;
+    c.partialCredit = partial;
+    c.checks = checks;
+    c.checksFailed = failed;
+    c.stub = stub;
+    return c;
+  };
+  grading::RunResult run;
+  run.cases = {make("ex03.1: by hand", false, true, 6, 2),        // 4 of 6 held: 2/3 of its share
+               make("ex03.1: random", true, false, 200, 0),       // passed: its whole share
+               make("ex03.2: by hand", false, false, 3, 1),       // not marked independent: nothing
+               make("ex03.2: random", false, true, 3, 1, true)};  // a stub earns nothing, marked or not
+  const grading::Grade g = grading::grade({run});
+  REQUIRE(g.exercises.size() == 2);
+  CHECK(g.exercises[0].points == doctest::Approx(10.0 * (2.0 / 3.0 + 1.0) / 2.0));
+  CHECK(g.exercises[1].points == 0.0);
+  CHECK(grading::caseCredit(run.cases[0]) == doctest::Approx(2.0 / 3.0));
+  // The results file keeps what the score needs, so grade_report scores the same.
+  const grading::RunResult back = grading::runFromJson(grading::resultsJson(run));
+  CHECK(grading::grade({back}).points == doctest::Approx(g.points));
+  const grading::Json gs = grading::gradescopeJson({run}, g);
+  CHECK(gs.at("tests")[0].at("score").get<double>() == doctest::Approx(5.0 * 2.0 / 3.0));
+}

@@ -29,6 +29,7 @@ void failAll(RunResult& run, const std::string& logPath) {
   for (CaseResult& c : run.cases) {
     c.passed = false;
     c.stub = false;
+    c.partialCredit = false;  // the reference's checks held, not the student's
     c.output = "your exercises.cpp does not compile, so no case could run:\n" + text;
   }
 }
@@ -53,6 +54,7 @@ bool failBorrowed(std::vector<RunResult>& runs, const std::string& path) {
         if (c.exercise == id) {
           c.passed = false;
           c.stub = false;
+          c.partialCredit = false;
           c.output =
               "exercise " + id + " scores 0: " + line.substr(tab + 1) + (c.output.empty() ? "" : "\n" + c.output);
         }
