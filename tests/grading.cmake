@@ -235,20 +235,16 @@ endif()
 # Gradescope as shipped (tools/grading/check_gradescope.sh): make gradescope LESSONS=01,03, the zip
 # unpacked into a folder standing for /autograder, setup.sh, then run_autograder on the reference
 # (a nested handout tree), the untouched stubs, a flat upload and the crash fixture, each compiling
-# only the student's files.
-if(NOT SHADOWLAB_SUBMISSION AND CMAKE_SYSTEM_NAME STREQUAL "Linux"
-   AND EXISTS ${CMAKE_SOURCE_DIR}/tools/grading/make_gradescope.sh)
-  add_test(NAME grading.gradescope COMMAND bash ${CMAKE_SOURCE_DIR}/tools/grading/check_gradescope.sh
-                                           ${CMAKE_CURRENT_BINARY_DIR}/gradescope)
-  set_tests_properties(grading.gradescope PROPERTIES LABELS handout RESOURCE_LOCK grade_submission TIMEOUT 3600)
-endif()
-
-# A class (tools/grading/check_grade_class.sh): make grade-class on a folder, a zip and a tarball
-# (a crash, borrowed answers, a compile error), each in its own build folder; class.csv and
-# class.html checked.
-if(NOT SHADOWLAB_SUBMISSION AND CMAKE_SYSTEM_NAME STREQUAL "Linux"
-   AND EXISTS ${CMAKE_SOURCE_DIR}/tools/grading/grade_class.sh)
-  add_test(NAME grading.grade_class COMMAND bash ${CMAKE_SOURCE_DIR}/tools/grading/check_grade_class.sh
-                                            ${CMAKE_CURRENT_BINARY_DIR}/grade_class)
-  set_tests_properties(grading.grade_class PROPERTIES LABELS handout RESOURCE_LOCK grade_submission TIMEOUT 3600)
-endif()
+# only the student's files. A class (tools/grading/check_grade_class.sh): make grade-class on a
+# folder, a zip and a tarball (a crash, borrowed answers, a compile error), each in its own build
+# folder; class.csv and class.html checked.
+# Both are instructor's tools in a work folder of their own (tools/grading/check_NAME.sh).
+function(shadowlab_grading_tool_test name tool)
+  if(NOT SHADOWLAB_SUBMISSION AND CMAKE_SYSTEM_NAME STREQUAL "Linux" AND EXISTS ${CMAKE_SOURCE_DIR}/tools/grading/${tool})
+    add_test(NAME grading.${name} COMMAND bash ${CMAKE_SOURCE_DIR}/tools/grading/check_${name}.sh
+                                          ${CMAKE_CURRENT_BINARY_DIR}/${name})
+    set_tests_properties(grading.${name} PROPERTIES LABELS handout RESOURCE_LOCK grade_submission TIMEOUT 3600)
+  endif()
+endfunction()
+shadowlab_grading_tool_test(gradescope make_gradescope.sh)
+shadowlab_grading_tool_test(grade_class grade_class.sh)

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "grading/answers.hpp"
@@ -73,24 +74,19 @@ int parse(int argc, char** argv, Options& o) {
       o.expectStubsScoreZero = true;
       continue;
     }
-    if (takeValue(argv[i], "--hidden-seed=", value)) {
+    bool isSeed = false;
+    for (auto [flag, set] :
+         {std::pair{"--seed=", &grading::setSeed}, std::pair{"--hidden-seed=", &grading::setHiddenSeed}}) {
+      if (!takeValue(argv[i], flag, value)) continue;
       std::uint64_t s = 0;
       if (!parseSeed(value.c_str(), s)) {
-        std::cerr << "--hidden-seed='" << value << "' is not a non-negative integer\n";
+        std::cerr << std::string(flag, std::strlen(flag) - 1) << "='" << value << "' is not a non-negative integer\n";
         return 2;
       }
-      grading::setHiddenSeed(s);
-      continue;
+      set(s);
+      isSeed = true;
     }
-    if (takeValue(argv[i], "--seed=", value)) {
-      std::uint64_t s = 0;
-      if (!parseSeed(value.c_str(), s)) {
-        std::cerr << "--seed='" << value << "' is not a non-negative integer\n";
-        return 2;
-      }
-      grading::setSeed(s);
-      continue;
-    }
+    if (isSeed) continue;
     o.doctestArgs.push_back(argv[i]);
   }
   if (!o.answersRecord.empty() && !o.answersReplay.empty()) {
