@@ -85,7 +85,7 @@ TEST_CASE("ex01.2: it is affine and keeps w, so it composes with a projection") 
   CHECK_NEAR(m[3][0], 0.5f, 1e-6);
 }
 
-TEST_CASE("ex01.3: attenuation by hand") {
+TEST_CASE("ex01.3: attenuation by hand" * SHADOWLAB_INDEPENDENT_CHECKS) {
   CHECK_NEAR(ex01::attenuation({1, 0.5f, 0.25f}, 2), 1.0f / 3.0f, 1e-6);  // 1 + 1 + 1
   CHECK_NEAR(ex01::attenuation({0, 0, 1}, 4), 1.0f / 16.0f, 1e-6);        // inverse square
   CHECK_NEAR(ex01::attenuation({0, 2, 0}, 5), 0.1f, 1e-6);

@@ -20,7 +20,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-TEST_CASE("ex05.1: the penumbra half-width by hand") {
+TEST_CASE("ex05.1: the penumbra half-width by hand" * SHADOWLAB_INDEPENDENT_CHECKS) {
   CHECK_NEAR(ex05::penumbraHalfWidth(2.0f, 1.0f, 0.5f, 8.0f), 0.125f, kApprox);  // 2 * 0.5 / 8
   CHECK_NEAR(ex05::penumbraHalfWidth(2.0f, 0.5f, 0.5f, 8.0f), 0.25f, kApprox);   // n.L = 1/2 doubles it
   CHECK_NEAR(ex05::penumbraHalfWidth(0.0f, 1.0f, 0.5f, 8.0f), 0.0f, kApprox);    // contact: hard
@@ -39,7 +39,7 @@ TEST_CASE("ex05.1: random geometry against the reference") {
   }
 }
 
-TEST_CASE("ex05.2: A_frac and its linear approximation by hand") {
+TEST_CASE("ex05.2: A_frac and its linear approximation by hand" * SHADOWLAB_INDEPENDENT_CHECKS) {
   CHECK_NEAR(ex05::visibleFraction(-1.0f), 0.0f, kApprox);
   CHECK_NEAR(ex05::visibleFraction(0.0f), 0.5f, kApprox);
   CHECK_NEAR(ex05::visibleFraction(1.0f), 1.0f, kApprox);
@@ -69,7 +69,7 @@ TEST_CASE("ex05.2: random t against the reference, symmetric") {
   }
 }
 
-TEST_CASE("ex05.3: the PCSS filter radius by hand") {
+TEST_CASE("ex05.3: the PCSS filter radius by hand" * SHADOWLAB_INDEPENDENT_CHECKS) {
   // Receiver 10 along the axis, blocker at 8, R = 0.5: w = 2 / 8 * 0.5 = 0.125; one uv unit at the
   // receiver is 2 * 10 * 0.5 = 10 m (tan(fov/2) = 0.5), so 0.0125.
   CHECK_NEAR(ex05::pcssFilterRadiusUv(0.5f, 10.0f, 8.0f, 0.5f), 0.0125f, kApprox);
@@ -95,7 +95,7 @@ TEST_CASE("ex05.3: random depths against the reference") {
   }
 }
 
-TEST_CASE("ex05.4: Poisson tap rotation by hand") {
+TEST_CASE("ex05.4: Poisson tap rotation by hand" * SHADOWLAB_INDEPENDENT_CHECKS) {
   // A quarter turn: x to y.
   CHECK_NEAR(ex05::rotateTap({1.0f, 0.0f}, float(kPi / 2)), glm::vec2(0.0f, 1.0f), 1e-6);
   // Half a turn: the point reflected.

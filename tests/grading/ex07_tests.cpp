@@ -58,7 +58,7 @@ bool sameDescent(const hybrid::Descent& got, const hybrid::Descent& expected) {
 
 }  // namespace
 
-TEST_CASE("ex07.1: the merge criterion by hand") {
+TEST_CASE("ex07.1: the merge criterion by hand" * SHADOWLAB_INDEPENDENT_CHECKS) {
   hybrid::BlockMerge b = ex07::mergeBlock({0.5f, 0.5f, 0.5f, 0.5f}, 0.0f);  // all equal: merged even at eps0 = 0
   CHECK_EXACT(b.merged, true);
   CHECK_EXACT(b.mean, 0.5f);
@@ -162,7 +162,7 @@ TEST_CASE("ex07.3: random maps against the reference") {
   }
 }
 
-TEST_CASE("ex07.4: linear depth by hand") {
+TEST_CASE("ex07.4: linear depth by hand" * SHADOWLAB_INDEPENDENT_CHECKS) {
   // n = 1, f = 100: d = 0 is the near plane, d = 1 the far one.
   CHECK_NEAR(ex07::linearDepth(0.0f, 1.0f, 100.0f), 1.0f, kApprox);
   CHECK_NEAR(ex07::linearDepth(1.0f, 1.0f, 100.0f), 100.0f, kApprox);

@@ -217,7 +217,7 @@ TEST_CASE("ex09.4: random perspective maps: moves away from the light by a + b L
   }
 }
 
-TEST_CASE("ex09.5: LiSPSM's n_opt by hand") {
+TEST_CASE("ex09.5: LiSPSM's n_opt by hand" * SHADOWLAB_INDEPENDENT_CHECKS) {
   // z0 = 1, z1 = 100: z0 + sqrt(z0 z1) = 11; gamma = 90 degrees: sin = 1.
   CHECK_NEAR(lispsmOptimalN(1.0, 100.0, std::numbers::pi / 2.0), 11.0, kApprox);
   // gamma = 30 degrees: sin = 1/2, n doubles.
