@@ -174,24 +174,33 @@ endif()
 # right, 01.2 an endless loop, 01.3 a crash and 01.4 the untouched stub. Graded by grade_isolated
 # (one exercise per process, limits), 01.1 earns its points, 01.2 and 01.3 score 0 with their
 # reasons, and the grade is written (grading/check_isolated.cmake).
-if(TARGET grade_isolated AND TARGET grade_ex01_reference AND NOT SHADOWLAB_SUBMISSION
-   AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/faulty_ex01/exercises.cpp
-   AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/grading/hidden/ex01_hidden.cpp)
-  # The same cases as the judge (grade_ex01_reference), hidden ones included: every call it asks for
-  # must have been answered.
+# A lesson 01 grader built from a fixture's files (with the same cases as its judge,
+# grade_ex01_reference, hidden ones included: every call the judge asks for must have been
+# answered), graded by grading/check_NAME.cmake as the test grading.NAME.
+function(shadowlab_fixture_grading_test name)
+  if(NOT TARGET grade_isolated OR NOT TARGET grade_ex01_reference OR SHADOWLAB_SUBMISSION
+     OR NOT EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/grading/hidden/ex01_hidden.cpp)
+    return()
+  endif()
+  foreach(source IN LISTS ARGN)
+    if(NOT EXISTS ${source})
+      return()  # the fixture is not in this tree (the student handout)
+    endif()
+  endforeach()
   shadowlab_graded_sources(01 ${CMAKE_SOURCE_DIR}/lessons/01_lighting graded_cases
                            ${CMAKE_CURRENT_SOURCE_DIR}/grading/ex01_tests.cpp
                            ${CMAKE_CURRENT_SOURCE_DIR}/grading/hidden/ex01_hidden.cpp)
-  add_executable(grade_fixture_faulty_ex01 ${graded_cases} ${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/faulty_ex01/exercises.cpp)
-  target_include_directories(grade_fixture_faulty_ex01 PRIVATE ${CMAKE_SOURCE_DIR}/lessons/01_lighting)
-  target_link_libraries(grade_fixture_faulty_ex01 PRIVATE shadowlab_test_main shadowlab_algorithms)
-  add_test(NAME grading.isolated
+  add_executable(grade_fixture_${name}_ex01 ${graded_cases} ${ARGN})
+  target_include_directories(grade_fixture_${name}_ex01 PRIVATE ${CMAKE_SOURCE_DIR}/lessons/01_lighting)
+  target_link_libraries(grade_fixture_${name}_ex01 PRIVATE shadowlab_test_main shadowlab_algorithms)
+  add_test(NAME grading.${name}
            COMMAND ${CMAKE_COMMAND} -DISOLATED=$<TARGET_FILE:grade_isolated> -DREPORT=$<TARGET_FILE:grade_report>
-                   -DREFERENCE=$<TARGET_FILE:grade_ex01_reference> -DGRADER=$<TARGET_FILE:grade_fixture_faulty_ex01>
-                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/grading_isolated
-                   -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_isolated.cmake)
-  set_tests_properties(grading.isolated PROPERTIES LABELS validity)
-endif()
+                   -DREFERENCE=$<TARGET_FILE:grade_ex01_reference> -DGRADER=$<TARGET_FILE:grade_fixture_${name}_ex01>
+                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/grading_${name}
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_${name}.cmake)
+  set_tests_properties(grading.${name} PROPERTIES LABELS validity)
+endfunction()
+shadowlab_fixture_grading_test(isolated ${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/faulty_ex01/exercises.cpp)
 
 # Student code cannot touch its grade: tests/grading/fixtures/tamper/tamper.cpp, linked with lesson
 # 01's untouched stubs, forges every results file it can find from a static destructor and from a
@@ -199,22 +208,9 @@ endif()
 # (proof that the fixture attacks); graded by grade_isolated (the student's process only answers,
 # the reference grader judges, the leftover process is killed) the stubs score 0
 # (grading/check_tamper.cmake).
-if(TARGET grade_isolated AND TARGET grade_ex01_reference AND NOT SHADOWLAB_SUBMISSION
-   AND CMAKE_SYSTEM_NAME STREQUAL "Linux" AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/tamper/tamper.cpp
-   AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/grading/hidden/ex01_hidden.cpp)
-  shadowlab_graded_sources(01 ${CMAKE_SOURCE_DIR}/lessons/01_lighting graded_cases
-                           ${CMAKE_CURRENT_SOURCE_DIR}/grading/ex01_tests.cpp
-                           ${CMAKE_CURRENT_SOURCE_DIR}/grading/hidden/ex01_hidden.cpp)
-  add_executable(grade_fixture_tamper_ex01 ${graded_cases} ${CMAKE_SOURCE_DIR}/lessons/01_lighting/exercises.cpp
-                                           ${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/tamper/tamper.cpp)
-  target_include_directories(grade_fixture_tamper_ex01 PRIVATE ${CMAKE_SOURCE_DIR}/lessons/01_lighting)
-  target_link_libraries(grade_fixture_tamper_ex01 PRIVATE shadowlab_test_main shadowlab_algorithms)
-  add_test(NAME grading.tamper
-           COMMAND ${CMAKE_COMMAND} -DISOLATED=$<TARGET_FILE:grade_isolated> -DREPORT=$<TARGET_FILE:grade_report>
-                   -DREFERENCE=$<TARGET_FILE:grade_ex01_reference> -DGRADER=$<TARGET_FILE:grade_fixture_tamper_ex01>
-                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/grading_tamper
-                   -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_tamper.cmake)
-  set_tests_properties(grading.tamper PROPERTIES LABELS validity)
+if(CMAKE_SYSTEM_NAME STREQUAL "Linux")  # the forger reads /proc
+  shadowlab_fixture_grading_test(tamper ${CMAKE_SOURCE_DIR}/lessons/01_lighting/exercises.cpp
+                                 ${CMAKE_CURRENT_SOURCE_DIR}/grading/fixtures/tamper/tamper.cpp)
 endif()
 
 # Calls into the reference answer are found by the linker and cost the exercise: the fixture
