@@ -78,7 +78,7 @@ grade: build
 HANDOUT ?= out/handout
 handout: configure
 	@if [ ! -f tools/handout/make_handout.sh ]; then echo "make handout: the instructor's tree only; this is the student handout, which has no reference sources to make one from" >&2; exit 2; fi
-	@bash tools/handout/make_handout.sh $(HANDOUT)
+	@SHADOWLAB_BUILD=$(CURDIR)/$(BUILD) bash tools/handout/make_handout.sh $(HANDOUT)
 
 # Grades a student's files against this tree with the hidden cases and a seed it chooses (SEED=N
 # to fix it): out/grades/submission/{score.json, junit.xml, results.json}.

@@ -1,7 +1,8 @@
 # shadowlab_sealed: the shader files tools/handout/sealed_shaders.txt lists, compiled in (obscured)
-# by tools/seal_files. The #include preprocessor falls back on them when a file is absent on disk
-# (core/shader_files.hpp). In this tree every file is on disk as well, so they change nothing; the
-# student handout ships the library prebuilt (lib/) and leaves the files out.
+# by tools/seal_files, and the names of the withheld ones (their text is not compiled in). The
+# #include preprocessor falls back on them when a file is absent on disk (core/shader_files.hpp).
+# In this tree every file is on disk as well, so they change nothing; the student handout ships
+# the library prebuilt (lib/) and leaves the files out.
 set(SEALED_MANIFEST ${CMAKE_SOURCE_DIR}/tools/handout/sealed_shaders.txt)
 if(EXISTS ${CMAKE_SOURCE_DIR}/lib/libshadowlab_sealed.a)
   add_library(shadowlab_sealed STATIC IMPORTED GLOBAL)
@@ -14,6 +15,7 @@ set(sealed_files "")
 foreach(line IN LISTS sealed_lines)
   string(REGEX REPLACE "#.*" "" line "${line}")
   string(STRIP "${line}" line)
+  string(REGEX REPLACE "^withheld[ \t]+" "" line "${line}")
   if(line)
     list(APPEND sealed_files ${CMAKE_SOURCE_DIR}/shaders/${line})
   endif()

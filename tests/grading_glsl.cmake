@@ -62,6 +62,25 @@ foreach(cases IN LISTS GLSL_CASE_FILES)
     add_test(NAME validity.ex${nn}_glsl.reference COMMAND ${grade_glsl} --student=reference)
     set_tests_properties(validity.ex${nn}_glsl.reference PROPERTIES LABELS validity)
   endif()
+  # The handout's path: against what --record-reference recorded, the reference passes, a tampered
+  # recording fails (grading/check_glsl_precomputed.cmake).
+  if(EXISTS ${CMAKE_SOURCE_DIR}/shaders/${lesson}/exercises_reference.glsl)
+    add_test(NAME validity.ex${nn}_glsl.precomputed COMMAND ${CMAKE_COMMAND}
+             "-DGRADER=$<TARGET_FILE:grade_ex${nn}_glsl>" "-DLESSON_BINARY=$<TARGET_FILE:${grading_lesson}>"
+             -DLESSON=${lesson} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/glsl_precomputed_${nn}
+             -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_glsl_precomputed.cmake)
+    set_tests_properties(validity.ex${nn}_glsl.precomputed PROPERTIES LABELS validity)
+  endif()
+  # Known slips each render must see (grading/check_glsl_mutant.cmake).
+  if(nn STREQUAL "03" AND EXISTS ${CMAKE_SOURCE_DIR}/shaders/${lesson}/exercises_reference.glsl)
+    add_test(NAME validity.ex03_glsl.mutant_no_receiver_plane COMMAND ${CMAKE_COMMAND}
+             "-DGRADER=$<TARGET_FILE:grade_ex${nn}_glsl>" "-DLESSON_BINARY=$<TARGET_FILE:${grading_lesson}>"
+             -DLESSON=${lesson} -DSOURCE=${CMAKE_SOURCE_DIR} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/glsl_mutant_03
+             "-DFROM=depth + dot(dzduv, o)" -DTO=depth
+             "-DEXPECT=ex03.6: the pcf_5x5 preset, the receiver plane in place of the slope bias"
+             -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_glsl_mutant.cmake)
+    set_tests_properties(validity.ex03_glsl.mutant_no_receiver_plane PROPERTIES LABELS validity)
+  endif()
   # A student file that does not compile: every case fails and the report carries the error.
   add_test(NAME validity.ex${nn}_glsl.compile_error COMMAND ${CMAKE_COMMAND}
            "-DGRADER=$<TARGET_FILE:grade_ex${nn}_glsl>" "-DLESSON_BINARY=$<TARGET_FILE:${grading_lesson}>"
@@ -78,6 +97,10 @@ foreach(cases IN LISTS GLSL_CASE_FILES)
     # Each of 10 seeds, the cases without the renders (those redraw placements that show too
     # little to grade, grading::renderInformative, unit-tested, or where the untouched stub's
     # render matches the reference's: no seed can give the stub a render it passes).
+    # (The instructor's tree only: the handout's reference values are recorded at one seed.)
+    if(NOT EXISTS ${CMAKE_SOURCE_DIR}/shaders/${lesson}/exercises_reference.glsl)
+      continue()
+    endif()
     add_test(NAME validity.ex${nn}_glsl.stubs_seeds COMMAND ${grade_glsl} --expect-stub-scores-zero --cases-only
                                                              --seeds=1-10)
     set_tests_properties(validity.ex${nn}_glsl.stubs_seeds PROPERTIES LABELS validity)
@@ -156,5 +179,18 @@ foreach(lesson IN ITEMS 01_lighting 02_shadow_maps 03_shadow_quality 04_shadow_v
              --all-presets --png ${shots}/${lesson}_sealed.png --golden ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/${lesson}
              -- --headless --frames 2 --size 320x180 --screenshot ${shots}/${lesson}_sealed.png)
     set_tests_properties(gpu.${lesson}.sealed_shaders PROPERTIES LABELS gpu)
+  endif()
+endforeach()
+
+# The student handout withholds the reference GLSL of the exercises (`withheld` in the manifest):
+# without those files each lesson still runs, says whose GLSL draws, and gives the driver no line of
+# them (grading/check_withheld.cmake, with a run in this tree proving the check can fail).
+foreach(lesson IN ITEMS 02_shadow_maps 03_shadow_quality 04_shadow_volumes 05_soft_shadows 06_texture_filtering
+                        07_hybrid_maps 08_psm 09_psm_fixes 10_showdown)
+  if(TARGET lesson_${lesson} AND EXISTS ${CMAKE_SOURCE_DIR}/shaders/${lesson}/exercises_reference.glsl)
+    add_test(NAME gpu.${lesson}.withheld COMMAND ${CMAKE_COMMAND} -DLESSON_BINARY=$<TARGET_FILE:lesson_${lesson}>
+             -DLESSON=${lesson} -DSOURCE=${CMAKE_SOURCE_DIR} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/withheld_${lesson}
+             -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_withheld.cmake)
+    set_tests_properties(gpu.${lesson}.withheld PROPERTIES LABELS gpu)
   endif()
 endforeach()

@@ -16,7 +16,8 @@ if(SHADOWLAB_UNIT_ONLY OR SHADOWLAB_SUBMISSION OR NOT EXISTS ${CMAKE_SOURCE_DIR}
 endif()
 set(handout ${CMAKE_BINARY_DIR}/handout)
 set(check bash ${CMAKE_SOURCE_DIR}/tools/handout/check_handout.sh)
-add_test(NAME handout.make COMMAND bash ${CMAKE_SOURCE_DIR}/tools/handout/make_handout.sh ${handout})
+add_test(NAME handout.make COMMAND ${CMAKE_COMMAND} -E env SHADOWLAB_BUILD=${CMAKE_BINARY_DIR}
+                                   bash ${CMAKE_SOURCE_DIR}/tools/handout/make_handout.sh ${handout})
 set_tests_properties(handout.make PROPERTIES FIXTURES_SETUP handout)
 add_test(NAME handout.no_reference_bodies COMMAND ${check} bodies ${handout}/shadowlab)
 add_test(NAME handout.leak_detected COMMAND ${check} leak ${CMAKE_BINARY_DIR}/handout-leak)

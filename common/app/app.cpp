@@ -32,6 +32,7 @@
 #include "core/model_file.hpp"
 #include "core/param_checks.hpp"
 #include "core/paths.hpp"
+#include "core/shader_files.hpp"
 #include "gl/caps.hpp"
 #include "gl/debug.hpp"
 #include "gl/gl.hpp"
@@ -42,8 +43,7 @@ namespace shadowlab {
 namespace {
 
 double nowSeconds() {
-  using namespace std::chrono;
-  return duration<double>(steady_clock::now().time_since_epoch()).count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 using Exit = std::optional<int>;  // a process exit code, or nothing: go on
@@ -192,15 +192,17 @@ class Runner {
   }
 
   // Every 30 frames: the cases again when asked or when exercises.glsl was saved; with the
-  // student's code in use, the banner for the stubs and how black the frame is (headless: once,
-  // on stdout: it is a warning, not an error).
+  // student's code in use, the banner for the stubs and how black the frame is, and in the student
+  // handout whose GLSL draws where the reference's is withheld (headless: once, on stdout).
   void watchExercises(const FrameInfo& fi, int frame) {
     Exercises& ex = lesson_.exercises;
     if (ex.empty() || (frame % 30 != 0 && !rerunExercises_)) return;
     if (rerunExercises_ || ex.glslChanged()) ex.evaluate(info_.name);
     rerunExercises_ = false;
-    banner_ =
+    const std::string stubs =
         studentCode() && !ex.stubBanner(0).empty() ? ex.stubBanner(blackShare(fi.framebuffer, width_, height_)) : "";
+    const std::string withheld = withheldBanner(withheldReplaced(), info_.name);
+    banner_ = stubs + (stubs.empty() || withheld.empty() ? "" : "\n") + withheld;
     if (cl_.headless && !banner_.empty() && !bannerPrinted_) std::cout << info_.name << ": " << banner_ << '\n';
     bannerPrinted_ = bannerPrinted_ || !banner_.empty();
   }

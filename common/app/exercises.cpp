@@ -4,9 +4,11 @@
 #include <cctype>
 #include <cstdio>
 #include <fstream>
+#include <regex>
 
 #include "app/glsl_cases.hpp"
 #include "core/paths.hpp"
+#include "core/shader_files.hpp"
 
 namespace shadowlab {
 namespace {
@@ -135,6 +137,21 @@ std::string Exercises::stubBanner(double blackShare) const {
   const std::string files = std::string(cpp ? "lessons/" + lesson_ + "/exercises.cpp" : "") +
                             (cpp && glsl ? " and " : "") + (glsl ? "shaders/" + lesson_ + "/exercises.glsl" : "");
   return s + "\nWrite them in " + files + ", or set " + param_ + "=reference.";
+}
+
+std::string withheldBanner(const std::vector<std::string>& replaced, const std::string& lesson) {
+  if (replaced.empty()) return "";
+  std::string s = "Handout: your GLSL draws where the reference's is withheld";
+  const std::regex marker(R"(SHADOWLAB_STUB ([0-9]+\.[0-9]+))");
+  for (const std::string& path : replaced) {
+    std::ifstream in(shaderRoot() + "/" + withheldStandIn(path));
+    std::string stubs;
+    std::smatch m;
+    for (std::string line; std::getline(in, line);)
+      if (std::regex_search(line, m, marker)) stubs += (stubs.empty() ? "" : ", ") + m[1].str();
+    s += "\n  shaders/" + withheldStandIn(path) + (stubs.empty() ? ": your answers" : ": " + stubs + " still a stub");
+  }
+  return s + "\nThe reference's picture of each preset: tests/data/golden/" + lesson + "/";
 }
 
 }  // namespace shadowlab

@@ -36,6 +36,11 @@ struct Exercise {
   std::string function() const;
 };
 
+// The banner of the student handout, where the preprocessor put the student's exercises.glsl in
+// place of withheld reference GLSL (core/shader_files.hpp, withheldReplaced()): whose code draws,
+// which of its exercises are still stubs, and where the reference's pictures are. "" for none.
+std::string withheldBanner(const std::vector<std::string>& replaced, const std::string& lesson);
+
 // Where a student writes exercise `e` of `lesson` ("03_shadow_quality"): the repository-relative
 // file (lessons/NN_name/exercises.cpp or shaders/NN_name/exercises.glsl) and the line of its
 // "EXERCISE NN.k" tag in the source tree (0 when the tag is not found).

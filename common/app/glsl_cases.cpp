@@ -6,6 +6,8 @@
 #include <map>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "core/paths.hpp"
 #include "core/shader_files.hpp"
 #include "gl/objects.hpp"
@@ -90,6 +92,29 @@ std::vector<glm::vec4> evaluate(gl::Program& program, const GlslExerciseSet& set
   return gl::readFloatPixels(fbo.id(), 0, 0, 0, int(count), 1);
 }
 
+std::string g_precomputedDir;  // setPrecomputedGlslDir: forces the precomputed reference
+
+// The precomputed reference values of `lesson`, by expression; `error` says why there are none.
+std::map<std::string, glm::vec4> precomputedValues(const std::string& lesson, std::uint64_t& seed, std::string& error) {
+  const std::string file = precomputedGlslDir() + "/" + lesson + ".json";
+  std::ifstream in(file);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  std::map<std::string, glm::vec4> values;
+  if (!in.is_open() || j.is_discarded() || !j.is_object() || !j.contains("cases") || !j["cases"].is_array()) {
+    error = "the reference GLSL is withheld from this handout and its precomputed values are missing or unreadable: " +
+            file + " (`make handout` writes them in the instructor's tree)";
+    return values;
+  }
+  seed = j.value("seed", std::uint64_t(0));
+  for (const nlohmann::json& c : j["cases"]) {
+    const nlohmann::json v = c.value("value", nlohmann::json::array());
+    if (!c.contains("expression") || !c["expression"].is_string() || !v.is_array() || v.size() != 4) continue;
+    values[c["expression"].get<std::string>()] = {v[0].get<float>(), v[1].get<float>(), v[2].get<float>(),
+                                                  v[3].get<float>()};
+  }
+  return values;
+}
+
 grading::CaseResult judge(const GlslExerciseSet& set, const GlslCase& c, const glm::vec4& actual,
                           const glm::vec4& reference) {
   grading::CaseResult r;
@@ -109,9 +134,11 @@ grading::CaseResult judge(const GlslExerciseSet& set, const GlslCase& c, const g
     return s + ")";
   };
   r.output = set.lesson + "/exercises.glsl: " + c.expression + "\n  expected  " + shown(expected) +
-             (c.expected ? "" : " (the reference GLSL's value)") + "\n  actual    " + shown(actual) + "\n  tolerance " +
-             grading::show(double(c.tolerance)) + (c.components > 1 ? " per component" : "") + ", difference " +
-             grading::show(worst);
+             (c.expected                          ? ""
+              : glslReferenceWithheld(set.lesson) ? " (the reference GLSL's value, precomputed)"
+                                                  : " (the reference GLSL's value)") +
+             "\n  actual    " + shown(actual) + "\n  tolerance " + grading::show(double(c.tolerance)) +
+             (c.components > 1 ? " per component" : "") + ", difference " + grading::show(worst);
   if (!c.note.empty()) r.output += "\n  " + c.note;
   return r;
 }
@@ -162,8 +189,13 @@ std::optional<GlslExerciseSet> glslExercises(const std::string& lesson, bool wit
   GlslExerciseSet set = it->second();
   set.lesson = lesson;
   if (!withHidden) return set;
+  // The hidden makers draw with the hidden cases' seed (--hidden-seed: the assignment's), the
+  // public ones above with the run's (the seed the student graded with).
+  const std::uint64_t publicSeed = grading::seed();
   for (const auto& make : registry().hidden[lesson]) {
+    grading::setSeed(grading::hiddenSeed());
     HiddenGlsl h = make();
+    grading::setSeed(publicSeed);
     for (GlslCase& c : h.cases) c.hidden = true;
     for (GlslRender& r : h.renders) r.hidden = true;
     set.cases.insert(set.cases.end(), h.cases.begin(), h.cases.end());
@@ -172,13 +204,39 @@ std::optional<GlslExerciseSet> glslExercises(const std::string& lesson, bool wit
   return set;
 }
 
+bool glslReferenceWithheld(const std::string& lesson) {
+  const std::string answer = lesson + "/exercises_reference.glsl";
+  std::error_code ec;
+  return !g_precomputedDir.empty() ||
+         (shaderWithheld(answer) && !std::filesystem::exists(shaderRoot() + "/" + answer, ec));
+}
+
+std::string precomputedGlslDir() {
+  return g_precomputedDir.empty() ? sourceRoot() + "/tests/grading/glsl/reference" : g_precomputedDir;
+}
+void setPrecomputedGlslDir(const std::string& dir) { g_precomputedDir = dir; }
+
+std::vector<std::pair<const GlslCase*, glm::vec4>> glslReferenceValues(const GlslExerciseSet& set, std::string& error) {
+  const std::vector<glm::vec4> values = evaluateAll(set, false, error);
+  std::vector<std::pair<const GlslCase*, glm::vec4>> out;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!set.cases[i].expected) out.emplace_back(&set.cases[i], values[i]);
+  return out;
+}
+
 grading::RunResult runGlslCases(const GlslExerciseSet& set) {
   GLint framebuffer = 0, program = 0, viewport[4] = {0, 0, 0, 0};
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
   glGetIntegerv(GL_CURRENT_PROGRAM, &program);
   glGetIntegerv(GL_VIEWPORT, viewport);
+  // The reference's values: its own GLSL's, or where the handout withholds it, precomputed ones.
   std::string studentError, referenceError;
-  const std::vector<glm::vec4> reference = evaluateAll(set, false, referenceError);
+  const bool withheld = glslReferenceWithheld(set.lesson);
+  std::uint64_t precomputedSeed = 0;
+  const std::map<std::string, glm::vec4> precomputed =
+      withheld ? precomputedValues(set.lesson, precomputedSeed, referenceError) : std::map<std::string, glm::vec4>{};
+  const std::vector<glm::vec4> reference =
+      withheld ? std::vector<glm::vec4>{} : evaluateAll(set, false, referenceError);
   const std::vector<glm::vec4> student =
       referenceError.empty() ? evaluateAll(set, true, studentError) : std::vector<glm::vec4>{};
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
@@ -187,11 +245,27 @@ grading::RunResult runGlslCases(const GlslExerciseSet& set) {
 
   grading::RunResult run;
   if (!referenceError.empty())
-    run = failAll(set, "the reference GLSL does not compile (a grader bug): " + referenceError);
+    run = failAll(set,
+                  withheld ? referenceError : "the reference GLSL does not compile (a grader bug): " + referenceError);
   else if (!studentError.empty()) run = failAll(set, "your exercises.glsl does not compile:\n" + studentError);
   else
-    for (std::size_t i = 0; i < set.cases.size(); ++i)
-      run.cases.push_back(judge(set, set.cases[i], student[i], reference[i]));
+    for (std::size_t i = 0; i < set.cases.size(); ++i) {
+      const GlslCase& c = set.cases[i];
+      if (!withheld || c.expected) {
+        run.cases.push_back(judge(set, c, student[i], withheld ? *c.expected : reference[i]));
+        continue;
+      }
+      const auto found = precomputed.find(c.expression);
+      if (found != precomputed.end()) {
+        run.cases.push_back(judge(set, c, student[i], found->second));
+        continue;
+      }
+      grading::CaseResult r{grading::exerciseOf(c.name), c.name, set.source, 0, false, c.hidden, false, ""};
+      r.output = "no precomputed reference value for " + c.expression + " (" + precomputedGlslDir() + "/" + set.lesson +
+                 ".json): the handout's values were computed at seed " + std::to_string(precomputedSeed) +
+                 ", this run's seed is " + std::to_string(grading::seed()) + "; grade without --seed or SHADOWLAB_SEED";
+      run.cases.push_back(std::move(r));
+    }
   for (grading::CaseResult& c : run.cases) c.stub = glslStubPresent(set.lesson, c.exercise);
   run.suite = set.lesson + " GLSL";
   run.seed = grading::seed();

@@ -14,6 +14,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -92,8 +93,26 @@ std::string glslVec(const glm::vec2& v);
 std::string glslVec(const glm::vec4& v);
 
 // Evaluates every case (a GL 4.1 context must be current); restores the framebuffer, viewport and
-// program bindings it changed. The suite is "<lesson> GLSL".
+// program bindings it changed. The suite is "<lesson> GLSL". A case without a literal expected
+// value takes the reference GLSL's, or where the reference is withheld (glslReferenceWithheld) the
+// precomputed one for the same expression; a case with none fails, saying why.
 grading::RunResult runGlslCases(const GlslExerciseSet& set);
+
+// The student handout withholds every exercise's reference GLSL (tools/handout/sealed_shaders.txt):
+// its graders and panel then use what `make handout` precomputed in the instructor's tree, the
+// reference's value of each public case and its render of each public render, in
+// precomputedGlslDir()/<lesson>.json (and the images beside it). True where the lesson's
+// exercises_reference.glsl is withheld and absent, or setPrecomputedGlslDir forced the precomputed
+// path (the grader's --precomputed=DIR: proof, in the instructor's tree, that the path grades).
+bool glslReferenceWithheld(const std::string& lesson);
+std::string precomputedGlslDir();  // default: sourceRoot()/tests/grading/glsl/reference
+void setPrecomputedGlslDir(const std::string& dir);
+
+// The reference's values of every case of `set` that has no literal expected value, evaluated from
+// exercises_reference.glsl (a GL context current; the instructor's tree), as precomputedGlslDir's
+// JSON holds them: {"lesson", "seed", "cases": [{"name", "expression", "value": [4]}]}. On a
+// compile error, empty with `error` set.
+std::vector<std::pair<const GlslCase*, glm::vec4>> glslReferenceValues(const GlslExerciseSet& set, std::string& error);
 
 // True while the exercise's block of shaders/<lesson>/exercises.glsl still holds "SHADOWLAB_STUB <id>".
 bool glslStubPresent(const std::string& lesson, const std::string& id);

@@ -2,6 +2,7 @@
 
 #include <map>
 #include <mutex>
+#include <set>
 
 #include "core/sealed_files.hpp"
 
@@ -11,6 +12,10 @@ std::mutex g_mutex;
 std::map<std::string, std::string>& registered() {
   static std::map<std::string, std::string> texts;
   return texts;
+}
+std::set<std::string>& replaced() {
+  static std::set<std::string> paths;
+  return paths;
 }
 }  // namespace
 
@@ -34,6 +39,29 @@ std::optional<std::string> virtualShaderText(const std::string& relativePath) {
     return text;
   }
   return std::nullopt;
+}
+
+bool shaderWithheld(const std::string& relativePath) {
+  std::size_t count = 0;
+  const char* const* paths = sealed::withheld(count);
+  for (std::size_t i = 0; i < count; ++i)
+    if (relativePath == paths[i]) return true;
+  return false;
+}
+
+std::string withheldStandIn(const std::string& relativePath) {
+  const auto slash = relativePath.rfind('/');
+  return (slash == std::string::npos ? std::string() : relativePath.substr(0, slash + 1)) + "exercises.glsl";
+}
+
+void noteWithheldReplaced(const std::string& relativePath) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  replaced().insert(relativePath);
+}
+
+std::vector<std::string> withheldReplaced() {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  return {replaced().begin(), replaced().end()};
 }
 
 }  // namespace shadowlab

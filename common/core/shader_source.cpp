@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -98,15 +99,17 @@ class Expander {
 
  private:
   void expand(const fs::path& file, bool top) {
-    const std::string name = file.string();
+    const auto standIn = standIns_.find(file);
+    const fs::path source = standIn != standIns_.end() ? standIn->second : file;  // what is read
+    const std::string name = source.string();
     std::string content;
     // Stamp before reading: an edit landing between the two is then seen as a change by the
     // next poll instead of being missed.
     std::error_code ec;
-    const fs::file_time_type stamp = fs::last_write_time(file, ec);
-    const std::optional<std::string> text = ec ? virtualText(file) : std::nullopt;
+    const fs::file_time_type stamp = fs::last_write_time(source, ec);
+    const std::optional<std::string> text = ec ? virtualText(source) : std::nullopt;
     if (text) content = *text;
-    else if (ec || !readFile(file, content)) throw ShaderSourceError("cannot read shader file '" + name + "'");
+    else if (ec || !readFile(source, content)) throw ShaderSourceError("cannot read shader file '" + name + "'");
 
     const std::size_t index = result_.files.size();
     result_.files.push_back(name);
@@ -223,6 +226,8 @@ class Expander {
     }
     for (const fs::path& base : bases)
       if (std::optional<fs::path> v = virtualPath(base / relative)) return *v;
+    for (const fs::path& base : bases)
+      if (std::optional<fs::path> v = standIn(base / relative)) return *v;
     throw ShaderSourceError(location(includer.string(), lineNumber) + ": cannot find include \"" + target +
                             "\" (searched " + searched + ")");
   }
@@ -236,6 +241,25 @@ class Expander {
       if (ec || rel.empty() || *rel.begin() == "..") continue;
       if (std::optional<std::string> text = virtualShaderText(rel.generic_string()))
         return std::make_pair(root / rel, std::move(*text));
+    }
+    return std::nullopt;
+  }
+  // A withheld file (absent: the student handout) resolves to its own path, read from its stand-in
+  // on disk, the student's exercises.glsl beside it: include-once keeps the two apart as in the
+  // instructor's tree (`#ifdef STUDENT #include "exercises.glsl" #else #include
+  // "exercises_reference.glsl"` expands the student's text in both branches). Noted, so the lesson
+  // says whose code it draws.
+  std::optional<fs::path> standIn(const fs::path& p) {
+    for (const std::string& dir : includeDirs_) {
+      std::error_code ec;
+      const fs::path root = fs::weakly_canonical(dir, ec);
+      const fs::path rel = fs::weakly_canonical(p, ec).lexically_relative(root);
+      if (ec || rel.empty() || *rel.begin() == ".." || !shaderWithheld(rel.generic_string())) continue;
+      const fs::path file = root / withheldStandIn(rel.generic_string());
+      if (!fs::is_regular_file(file, ec)) continue;
+      noteWithheldReplaced(rel.generic_string());
+      standIns_[root / rel] = fs::canonical(file, ec);
+      return root / rel;
     }
     return std::nullopt;
   }
@@ -256,8 +280,9 @@ class Expander {
 
   const std::vector<std::string>& includeDirs_;
   ShaderSource result_;
-  std::vector<fs::path> stack_;  // files being expanded, outermost first: the cycle check
-  std::set<fs::path> expanded_;  // every file expanded so far: include-once
+  std::vector<fs::path> stack_;            // files being expanded, outermost first: the cycle check
+  std::set<fs::path> expanded_;            // every file expanded so far: include-once
+  std::map<fs::path, fs::path> standIns_;  // a withheld file's path -> the stand-in read in its place
   std::size_t versionLine_ = static_cast<std::size_t>(-1);
 };
 

@@ -1,4 +1,4 @@
-// Lesson 02, GLSL exercises: the reference (sealed in the student handout; exercises.glsl says
+// Lesson 02, GLSL exercises: the reference (withheld from the student handout; exercises.glsl says
 // what each function does). scene.frag includes this file unless SHADOWLAB_STUDENT_GLSL is set.
 
 float shadowCompare(float fragmentDepth, float storedDepth, float bias) {

@@ -38,7 +38,7 @@ out vec4 fragColor;
 #endif
 
 // compare=manual: the lookup and comparison written in the shader, exercises 02.4 and 02.5 (yours
-// with impl=student; the reference's is sealed in the student handout).
+// with impl=student; the reference's is withheld from the student handout).
 #ifdef SHADOWLAB_STUDENT_GLSL
 #include "exercises.glsl"
 #else

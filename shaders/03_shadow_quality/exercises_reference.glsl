@@ -1,4 +1,4 @@
-// Lesson 03, GLSL exercise: the reference (sealed in the student handout; exercises.glsl says what
+// Lesson 03, GLSL exercise: the reference (withheld from the student handout; exercises.glsl says what
 // the function does). shadow_uniform.frag includes this file unless SHADOWLAB_STUDENT_PCF is set.
 
 float pcfKernel(int map, vec2 uv, float depth, vec2 dzduv, float texel, int n) {

@@ -1,4 +1,4 @@
-// Lesson 04, GLSL exercise: the reference (sealed in the student handout; exercises.glsl says what
+// Lesson 04, GLSL exercise: the reference (withheld from the student handout; exercises.glsl says what
 // the function does). volume.geom includes this file unless SHADOWLAB_STUDENT_GLSL is set. The body
 // is the expression volume.geom's atInfinity held, on a line of its own so that the handout check
 // (tools/handout/check_handout.sh) finds it wherever it ships.

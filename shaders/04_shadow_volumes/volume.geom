@@ -22,7 +22,7 @@ bool facesLight(vec3 a, vec3 b, vec3 c) {
 }
 // The extrusion, extrudeToInfinity(p, light): exercise 04.5 (GLSL). The student's with
 // impl=student in lesson 04 (StencilVolumes::student.glslExtrusion builds this shader with
-// SHADOWLAB_STUDENT_GLSL), else the reference (sealed in the student handout).
+// SHADOWLAB_STUDENT_GLSL), else the reference (withheld from the student handout).
 #ifdef SHADOWLAB_STUDENT_GLSL
 #include "04_shadow_volumes/exercises.glsl"
 #else

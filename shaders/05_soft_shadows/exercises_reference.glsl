@@ -1,4 +1,4 @@
-// Lesson 05, GLSL exercise: the reference (sealed in the student handout; exercises.glsl says what
+// Lesson 05, GLSL exercise: the reference (withheld from the student handout; exercises.glsl says what
 // the function does). shadow_pcss.frag includes this file unless SHADOWLAB_STUDENT_PCSS is set.
 
 vec2 blockerSearch(int light, vec2 uv, float z, vec2 plane, float bias, float radius, mat2 turn) {

@@ -41,7 +41,7 @@ uniform float uMinFilter;      // PCSS: the smallest filter radius, texels (a co
 
 // The blocker search, blockerSearch: exercise 05.6 (GLSL). The student's with impl=student in
 // lesson 05 (the technique's shaderDefines() add SHADOWLAB_STUDENT_PCSS), else the reference
-// (sealed in the student handout).
+// (withheld from the student handout).
 #ifdef SHADOWLAB_STUDENT_PCSS
 #include "05_soft_shadows/exercises.glsl"
 #else

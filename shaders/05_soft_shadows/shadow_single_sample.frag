@@ -27,7 +27,7 @@ uniform mat4 uSoftViewInverse[MAX_LIGHTS];
 uniform float uPlaneHeight;  // Haines: the receiving plane y = h
 uniform float uPlaneTolerance;
 
-// PCSS's blocker search, blockerSearch (exercise 05.6's reference, sealed in the student handout).
+// PCSS's blocker search, blockerSearch (exercise 05.6's reference, withheld from the student handout).
 #include "05_soft_shadows/exercises_reference.glsl"
 
 #ifdef HAINES

@@ -1,4 +1,4 @@
-// Lesson 06, GLSL exercises: the reference (sealed in the student handout; exercises.glsl says
+// Lesson 06, GLSL exercises: the reference (withheld from the student handout; exercises.glsl says
 // what each function does). scene.frag includes this file unless SHADOWLAB_STUDENT_GLSL is set.
 
 vec2 ripLevelOfDetail(vec2 dUVdx, vec2 dUVdy, ivec2 texSize) {

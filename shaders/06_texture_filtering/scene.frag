@@ -72,7 +72,7 @@ vec4 ripTexel(ivec2 level, ivec2 t) {  // texel t of a level, wrapped (REPEAT)
   return texelFetch(uRip, ivec2(uRipOffsetX[level.x], uRipOffsetY[level.y]) + t, 0);
 }
 // The level of detail per axis and the filter inside a level: exercises 06.8 and 06.9 (yours with
-// impl=student; the reference's is sealed in the student handout).
+// impl=student; the reference's is withheld from the student handout).
 #ifdef SHADOWLAB_STUDENT_GLSL
 #include "exercises.glsl"
 #else

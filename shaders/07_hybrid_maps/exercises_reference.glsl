@@ -1,4 +1,4 @@
-// Lesson 07, GLSL exercise: the reference (sealed in the student handout; exercises.glsl says what
+// Lesson 07, GLSL exercise: the reference (withheld from the student handout; exercises.glsl says what
 // the function does). 07_hybrid_maps/hybrid_descent.glsl includes this file unless SHADOWLAB_STUDENT_DESCENT
 // is set.
 

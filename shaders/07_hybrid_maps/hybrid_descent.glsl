@@ -6,7 +6,7 @@
 
 // The descent, hybridDescend(root, records, levels, s): exercise 07.5 (GLSL). The student's with
 // impl=student in lesson 07 (the technique's shaderDefines() add SHADOWLAB_STUDENT_DESCENT when the
-// lesson sets student.glslDescent), else the reference (sealed in the student handout).
+// lesson sets student.glslDescent), else the reference (withheld from the student handout).
 #ifdef SHADOWLAB_STUDENT_DESCENT
 #include "07_hybrid_maps/exercises.glsl"
 #else

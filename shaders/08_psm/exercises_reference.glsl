@@ -1,4 +1,4 @@
-// Lesson 08, GLSL exercise: the reference (sealed in the student handout; exercises.glsl says what
+// Lesson 08, GLSL exercise: the reference (withheld from the student handout; exercises.glsl says what
 // the function does). projective_maps.glsl includes this file unless SHADOWLAB_STUDENT_PSM_LOOKUP
 // is set.
 

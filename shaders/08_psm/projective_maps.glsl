@@ -25,7 +25,7 @@ uniform Light uLights[MAX_LIGHTS];
 
 // A point's place in a map, psmMapCoords: exercise 08.3 (GLSL). The student's with impl=student in
 // lesson 08 (the maps' shaderDefines() add SHADOWLAB_STUDENT_PSM_LOOKUP), else the reference
-// (sealed in the student handout).
+// (withheld from the student handout).
 #ifdef SHADOWLAB_STUDENT_PSM_LOOKUP
 #include "08_psm/exercises.glsl"
 #else

@@ -17,7 +17,7 @@ uniform int uPsmLayerOfFace[PSM_LIGHTS * 6];    // faces 0 +x, 1 -x, 2 +y, 3 -y,
 // The hidden face the ray from the light through the point leaves the cube by (for a direction:
 // the ray through the point along -direction), cubeFaceLayer: exercise 09.6 (GLSL). The student's
 // with impl=student in lesson 09 (the maps' shaderDefines() add SHADOWLAB_STUDENT_PSM_FACES), else
-// the reference (sealed in the student handout).
+// the reference (withheld from the student handout).
 #ifdef SHADOWLAB_STUDENT_PSM_FACES
 #include "09_psm_fixes/exercises.glsl"
 #else

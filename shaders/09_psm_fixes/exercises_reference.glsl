@@ -1,4 +1,4 @@
-// Lesson 09, GLSL exercise: the reference (sealed in the student handout; exercises.glsl says what
+// Lesson 09, GLSL exercise: the reference (withheld from the student handout; exercises.glsl says what
 // the function does). shadow_psm.frag includes this file unless SHADOWLAB_STUDENT_PSM_FACES is set.
 
 int cubeFaceLayer(vec3 q, vec4 light, int layerOfFace[6]) {  // algorithms/psm/cube_faces.cpp, cubeFaceOf

@@ -1,4 +1,4 @@
-// Lesson 10, GLSL exercise: the reference (sealed in the student handout; exercises.glsl says what
+// Lesson 10, GLSL exercise: the reference (withheld from the student handout; exercises.glsl says what
 // the function does). shadow_cascades.frag includes this file unless SHADOWLAB_STUDENT_CASCADES is
 // set; it reads that shader's uniforms. Mirrors shadow::cascadeAt (common/algorithms/cascades.cpp);
 // keep them in step.

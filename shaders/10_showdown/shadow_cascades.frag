@@ -16,7 +16,7 @@ uniform float uCsmBand;            // the blend band: this fraction of a cascade
 // cascadeAt(light, depth, out nextWeight): the cascade of a view depth and the next one's weight in
 // the blend band: exercise 10.4 (GLSL), exercise 10.3's answer in the shader. The student's with
 // impl=student in lesson 10 (the cascades' shaderDefines() add SHADOWLAB_STUDENT_CASCADES), else the
-// reference (sealed in the student handout).
+// reference (withheld from the student handout).
 #ifdef SHADOWLAB_STUDENT_CASCADES
 #include "10_showdown/exercises.glsl"
 #else

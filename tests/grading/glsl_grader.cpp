@@ -5,8 +5,16 @@
 // lesson built with the REFERENCE C++ exercises, so only the GLSL is the student's.
 //
 //   grade_exNN_glsl --lesson-binary=PATH [--student=tree|reference|DIR] [--exercise=NN.k]
-//                   [--seed=N] [--images=DIR] [--results-json=F] [--score-json=F] [--junit=F]
-//                   [--gradescope=F] [--expect-stub-scores-zero] [--cases-only] [--seeds=FROM-TO]
+//                   [--seed=N] [--hidden-seed=N] [--images=DIR] [--results-json=F] [--score-json=F]
+//                   [--junit=F] [--gradescope=F] [--expect-stub-scores-zero] [--cases-only]
+//                   [--seeds=FROM-TO] [--record-reference=DIR] [--precomputed=DIR]
+//
+// The student handout withholds the reference GLSL: there the reference's side of every public
+// case and render is what `make handout` recorded in the instructor's tree (--record-reference=DIR:
+// DIR/<lesson>.json and DIR/<lesson>/render_K.{png,json}, the public cases and renders only) and
+// ships in tests/grading/glsl/reference/ (app/glsl_cases.hpp, glslReferenceWithheld).
+// --precomputed=DIR grades against such a recording in this tree (its validity tests), public
+// cases only.
 //
 // --student: whose exercises.glsl: this tree's (default), the reference file (validity), or
 // DIR/shaders/<lesson>/exercises.glsl (a submission). The last two run against a copy of the
@@ -24,6 +32,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -48,7 +57,7 @@ using namespace shadowlab;
 namespace {
 
 struct Options {
-  std::string lessonBinary, student = "tree", exercise, images;
+  std::string lessonBinary, student = "tree", exercise, images, recordDir, precomputed;
   std::string tree;            // this tree's root (its shaders hold the untouched stubs)
   bool studentIsStub = false;  // the student's exercises.glsl is this tree's untouched file
   grading::ReportFiles reports;
@@ -78,19 +87,22 @@ int parse(int argc, char** argv, Options& o) {
     if (value(a, "--lesson-binary", o.lessonBinary) || value(a, "--student", o.student) ||
         value(a, "--exercise", o.exercise) || value(a, "--images", o.images) ||
         value(a, "--results-json", o.reports.results) || value(a, "--score-json", o.reports.score) ||
-        value(a, "--junit", o.reports.junit) || value(a, "--gradescope", o.reports.gradescope))
+        value(a, "--junit", o.reports.junit) || value(a, "--gradescope", o.reports.gradescope) ||
+        value(a, "--record-reference", o.recordDir) || value(a, "--precomputed", o.precomputed))
       continue;
     if (a == "--expect-stub-scores-zero") {
       o.expectStubsScoreZero = true;
     } else if (a == "--cases-only") {
       o.casesOnly = true;
-    } else if (value(a, "--seed", seed)) {
+    } else if (const char* flag = value(a, "--seed", seed)          ? "--seed"
+                                  : value(a, "--hidden-seed", seed) ? "--hidden-seed"
+                                                                    : nullptr) {
       std::uint64_t s = 0;
       if (!parseSeed(seed, s)) {
-        std::cerr << "--seed='" << seed << "' is not a non-negative integer\n";
+        std::cerr << flag << "='" << seed << "' is not a non-negative integer\n";
         return 2;
       }
-      grading::setSeed(s);
+      (flag[2] == 's' ? grading::setSeed : grading::setHiddenSeed)(s);
     } else if (value(a, "--seeds", seeds)) {
       const auto dash = seeds.find('-');
       if (dash == std::string::npos || !parseSeed(seeds.substr(0, dash), o.seedFrom) ||
@@ -99,9 +111,9 @@ int parse(int argc, char** argv, Options& o) {
         return 2;
       }
     } else {
-      std::cerr << "unknown argument '" << a << "'; valid: --lesson-binary --student --exercise --seed --seeds "
-                << "--images --results-json --score-json --junit --gradescope --expect-stub-scores-zero "
-                << "--cases-only\n";
+      std::cerr << "unknown argument '" << a << "'; valid: --lesson-binary --student --exercise --seed "
+                << "--hidden-seed --seeds --images --results-json --score-json --junit --gradescope "
+                << "--expect-stub-scores-zero --cases-only --record-reference --precomputed\n";
       return 2;
     }
   }
@@ -223,6 +235,36 @@ bool informative(const Render& ref, std::string& why) {
   return grading::renderInformative(nlohmann::json::parse(in, nullptr, false), why);
 }
 
+// The precomputed reference render of a public render (the handout, app/glsl_cases.hpp): the image
+// and figures --record-reference wrote for the same name and command line, or why there is none.
+std::optional<Render> precomputedRender(const std::string& lesson, const GlslRender& r, std::string& why) {
+  const fs::path dir = precomputedGlslDir();
+  std::ifstream in(dir / (lesson + ".json"));
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object() || !j.contains("renders") || !j["renders"].is_array()) {
+    why = "no precomputed reference renders in " + (dir / (lesson + ".json")).string() +
+          " (`make handout` writes them in the instructor's tree)";
+    return std::nullopt;
+  }
+  for (const nlohmann::json& e : j["renders"]) {
+    if (e.value("name", "") != r.name) continue;
+    if (e.value("args", std::vector<std::string>{}) != r.args) {
+      why = "the precomputed reference render was made with other arguments than" + commandLine(r);
+      return std::nullopt;
+    }
+    Render ref;
+    ref.png = (dir / e.value("image", "")).string();
+    ref.measure = e.value("measure", "").empty() ? "" : (dir / e.value("measure", "")).string();
+    if (!fs::is_regular_file(ref.png)) {
+      why = "the precomputed reference image " + ref.png + " is missing";
+      return std::nullopt;
+    }
+    return ref;
+  }
+  why = "no precomputed reference render named '" + r.name + "' in " + (dir / (lesson + ".json")).string();
+  return std::nullopt;
+}
+
 grading::CaseResult renderCase(const Options& o, const std::string& lesson, GlslRender r, int index) {
   grading::CaseResult c;
   c.name = r.name;
@@ -240,7 +282,18 @@ grading::CaseResult renderCase(const Options& o, const std::string& lesson, Glsl
   // pass. The placement follows from the seed alone, never from the student's answer.
   const bool random = r.redraw && r.measure;
   const std::string stubSide = o.studentIsStub ? "student" : "stub";
-  Render ref = renderLesson(o, r, "reference", false, caseDir), stub;
+  // Where the reference GLSL is withheld (the handout) its render is the precomputed one.
+  const bool withheld = glslReferenceWithheld(lesson);
+  std::string missing = random && withheld ? "a random placement has no precomputed reference render" : "";
+  std::optional<Render> precomputed = withheld && !random ? precomputedRender(lesson, r, missing) : std::nullopt;
+  if (withheld) {
+    if (!precomputed) {
+      c.output = "lesson " + lesson + commandLine(r) + "\n  " + missing;
+      return c;
+    }
+    fs::copy_file(precomputed->png, caseDir / "reference.png", fs::copy_options::overwrite_existing);
+  }
+  Render ref = withheld ? *precomputed : renderLesson(o, r, "reference", false, caseDir), stub;
   bool haveStub = false;
   std::string why, redrawn;
   auto gradable = [&] {
@@ -265,7 +318,8 @@ grading::CaseResult renderCase(const Options& o, const std::string& lesson, Glsl
   }
   const bool uninformative = !ok;
   const Render mine = haveStub && o.studentIsStub ? stub : renderLesson(o, r, "student", true, caseDir);
-  const std::string what = "lesson " + lesson + commandLine(r) + ", impl=student against impl=reference (320x180)";
+  const std::string what = "lesson " + lesson + commandLine(r) + ", impl=student against impl=reference (320x180" +
+                           (withheld ? ", the reference's render precomputed)" : ")");
   if (uninformative)
     c.output = what + "\n  no placement in " + std::to_string(kDraws + 1) + " draws can grade (a grader bug): " + why +
                redrawn;
@@ -277,14 +331,20 @@ grading::CaseResult renderCase(const Options& o, const std::string& lesson, Glsl
   c.passed = c.output.empty();
   if (!c.passed && c.output.rfind("lesson ", 0) != 0) {
     savePng((caseDir / "difference.png").string(), diffImage(loadImage(mine.png, 3), loadImage(ref.png, 3), 4.0f));
-    c.output = what + c.output + "\n  images: " + caseDir.string() + "/{student,reference,difference}.png" + redrawn;
+    c.output = what + c.output +
+               (o.images.empty() ? "\n  images: grade with --images=DIR to keep them (make grade LESSON=NN keeps them "
+                                   "in out/grades/exNN/images)"
+                                 : "\n  images: " + caseDir.string() + "/{student,reference,difference}.png") +
+               redrawn;
   }
   if (o.images.empty()) fs::remove_all(dir);
   return c;
 }
 
 grading::RunResult grade(const Options& o, const std::string& lesson) {
-  std::optional<GlslExerciseSet> set = glslExercises(lesson, /*withHidden=*/true);
+  // Against precomputed reference values (the handout, --precomputed) the public cases only: the
+  // hidden ones are the instructor's, who grades them with the reference GLSL.
+  std::optional<GlslExerciseSet> set = glslExercises(lesson, /*withHidden=*/!glslReferenceWithheld(lesson));
   grading::RunResult run;
   run.suite = "grade_ex" + lesson.substr(0, 2) + "_glsl";
   run.seed = grading::seed();
@@ -303,6 +363,56 @@ grading::RunResult grade(const Options& o, const std::string& lesson) {
     run.cases.push_back(renderCase(o, lesson, set->renders[i], int(i)));
   run.testCasesRun = int(run.cases.size());
   return run;
+}
+
+// --record-reference=DIR: the reference's side of every public case and render, for the student
+// handout, which withholds the reference GLSL (app/glsl_cases.hpp). Needs this tree's reference.
+int record(const Options& o, const std::string& lesson) {
+  if (glslReferenceWithheld(lesson)) {
+    std::cerr << "--record-reference needs the reference GLSL (the instructor's tree); this tree withholds " << lesson
+              << "/exercises_reference.glsl\n";
+    return 2;
+  }
+  const std::optional<GlslExerciseSet> set = glslExercises(lesson, /*withHidden=*/false);
+  if (!set) {
+    std::cerr << "lesson " << lesson << " has no GLSL exercises to record\n";
+    return 1;
+  }
+  nlohmann::json j = {{"lesson", lesson},
+                      {"seed", grading::seed()},
+                      {"cases", nlohmann::json::array()},
+                      {"renders", nlohmann::json::array()}};
+  {
+    auto context = createHeadlessContext({64, 64, "GLSL reference values", false, false});
+    std::string error;
+    for (const auto& [c, v] : glslReferenceValues(*set, error))
+      j["cases"].push_back({{"name", c->name}, {"expression", c->expression}, {"value", {v.x, v.y, v.z, v.w}}});
+    if (!error.empty()) {
+      std::cerr << "the reference GLSL does not compile: " << error << "\n";
+      return 1;
+    }
+  }
+  const fs::path dir = fs::path(o.recordDir) / lesson;
+  fs::create_directories(dir);
+  for (std::size_t i = 0; i < set->renders.size(); ++i) {
+    const GlslRender& r = set->renders[i];
+    const std::string side = "render_" + std::to_string(i);
+    const Render ref = renderLesson(o, r, side, false, dir);
+    for (const fs::directory_entry& e : fs::directory_iterator(dir))  // the log, --measure's other images
+      if (e.path().stem().string().rfind(side + "_", 0) == 0 || e.path().extension() == ".log") fs::remove(e.path());
+    if (ref.exit != 0) {
+      std::cerr << "the reference render of '" << r.name << "' failed, exit " << ref.exit << ": " << ref.log << "\n";
+      return 1;
+    }
+    j["renders"].push_back({{"name", r.name},
+                            {"args", r.args},
+                            {"image", lesson + "/" + side + ".png"},
+                            {"measure", r.measure ? lesson + "/" + side + ".json" : ""}});
+  }
+  std::ofstream(fs::path(o.recordDir) / (lesson + ".json")) << j.dump(1) << "\n";
+  std::cout << "[shadowlab] recorded " << j["cases"].size() << " reference values and " << j["renders"].size()
+            << " reference renders of " << lesson << " in " << o.recordDir << "\n";
+  return 0;
 }
 
 // Messages name the files a student can open: the staged copy of their exercises.glsl is their
@@ -345,6 +455,8 @@ int main(int argc, char** argv) {
   if (int e = parse(argc, argv, o)) return e;
   if (const char* env = std::getenv("SHADOWLAB_SEED")) grading::setSeed(std::strtoull(env, nullptr, 10));
   const std::string lesson = SHADOWLAB_GLSL_LESSON;
+  if (!o.precomputed.empty()) setPrecomputedGlslDir(fs::absolute(o.precomputed).string());
+  if (!o.recordDir.empty()) return record(o, lesson);
   std::string error;
   o.tree = sourceRoot();
   o.studentIsStub = o.student == "tree" || sameContents(studentFile(o.student, lesson),

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -71,12 +72,21 @@ TEST_CASE("shader files: a missing include that is nowhere virtual still names w
 TEST_CASE("shader files: every file the handout seals is in the program, byte for byte the file on disk") {
   std::ifstream manifest(sourceRoot() + "/tools/handout/sealed_shaders.txt");
   REQUIRE(manifest);
-  int sealed = 0;
+  int sealed = 0, withheld = 0;
   for (std::string line; std::getline(manifest, line);) {
     line = line.substr(0, line.find('#'));
     line.erase(line.find_last_not_of(" \t") + 1);
     if (line.empty()) continue;
+    if (line.rfind("withheld ", 0) == 0) {  // an answer: its name only, never its text
+      line = line.substr(line.find_first_not_of(' ', 9));
+      INFO("withheld file ", line);
+      CHECK(shaderWithheld(line));
+      CHECK_FALSE(virtualShaderText(line).has_value());
+      ++withheld;
+      continue;
+    }
     INFO("sealed file ", line);
+    CHECK_FALSE(shaderWithheld(line));
     const std::optional<std::string> text = virtualShaderText(line);
     REQUIRE(text.has_value());
     CHECK(text->size() > 100);
@@ -85,4 +95,32 @@ TEST_CASE("shader files: every file the handout seals is in the program, byte fo
     ++sealed;
   }
   CHECK(sealed >= 3);
+  CHECK(withheld >= 9);  // every lesson's GLSL exercise, 02 to 10
+}
+
+// The student handout: the reference GLSL of an exercise is absent; the student's exercises.glsl
+// stands in, in both branches of the shaders' `#ifdef STUDENT ... #else ... #endif`, and the
+// preprocessor notes it. A file that is not withheld still fails to resolve.
+TEST_CASE("shader files: a withheld answer, absent, is the student's exercises.glsl beside it, and noted") {
+  const fs::path root = scratch("withheld");
+  const std::string lesson = "03_shadow_quality";
+  REQUIRE(shaderWithheld(lesson + "/exercises_reference.glsl"));
+  CHECK(withheldStandIn(lesson + "/exercises_reference.glsl") == lesson + "/exercises.glsl");
+  write(root / lesson / "exercises.glsl", "float pcfKernel() { return 0.25; } // the student's\n");
+  write(root / lesson / "top.frag", "#version 410 core\n#ifdef STUDENT\n#include \"" + lesson +
+                                        "/exercises.glsl\"\n#else\n#include \"" + lesson +
+                                        "/exercises_reference.glsl\"\n#endif\nvoid main() {}\n");
+  const ShaderSource s = loadShaderSource((root / lesson / "top.frag").string(), {root.string()});
+  std::size_t copies = 0;
+  for (auto at = s.text.find("the student's"); at != std::string::npos; at = s.text.find("the student's", at + 1))
+    ++copies;
+  CHECK(copies == 2);  // the #ifdef branch and the #else branch
+  for (std::size_t i = 1; i < s.files.size(); ++i) CHECK(s.files[i] == (root / lesson / "exercises.glsl").string());
+  const std::vector<std::string> replaced = withheldReplaced();
+  CHECK(std::find(replaced.begin(), replaced.end(), lesson + "/exercises_reference.glsl") != replaced.end());
+
+  write(root / "other.frag", "#version 410 core\n#include \"" + lesson + "/answers.glsl\"\nvoid main() {}\n");
+  CHECK_THROWS_WITH_AS(loadShaderSource((root / "other.frag").string(), {root.string()}),
+                       doctest::Contains("cannot find include"), ShaderSourceError);
+  fs::remove_all(root);
 }

@@ -48,7 +48,8 @@ sub=$1 out=${2:-$root/out/grades/submission}
 [ -d "$sub" ] || { echo "grade_submission.sh: no submission directory '$1'; $usage" >&2; exit 2; }
 sub=$(cd "$sub" && pwd)
 # The same code scores the same: the hidden cases' seed is fixed per assignment (SEED, else drawn
-# from its lessons), the public C++ cases keep the seed `make grade` ran them with for the student.
+# from its lessons), the public cases, C++ and GLSL, keep the seed `make grade` ran them with for the
+# student (the default: the handout's GLSL reference values were recorded at it).
 seed=${SEED:-$(printf 'shadowlab assignment%s' "$wanted" | cksum | cut -d' ' -f1)}
 build=${GRADE_BUILD:-$root/build/grade-submission}  # make grade-class: one per submission
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
@@ -124,7 +125,7 @@ for cases in tests/grading/glsl/ex*_glsl.cpp; do
   fi
   cmake --build "$build" -j "$jobs" --target "grade_ex${nn}_glsl" >"$out/logs/build_ex${nn}_glsl.log" 2>&1
   "$build/bin/grade_ex${nn}_glsl" --lesson-binary="$build/bin/glsl_lesson_$lesson" --student="$student" \
-    --seed="$seed" --images="$out/images/ex$nn" --results-json="$out/runs/ex${nn}_glsl.json" \
+    --hidden-seed="$seed" --images="$out/images/ex$nn" --results-json="$out/runs/ex${nn}_glsl.json" \
     >"$out/logs/ex${nn}_glsl.log" 2>&1 || true
   reports+=("$out/runs/ex${nn}_glsl.json")
 done

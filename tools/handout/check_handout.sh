@@ -74,7 +74,7 @@ fingerprints() {
   sources=$(git ls-files 'common/algorithms/*.cpp')
   for f in $(referenceFunctions); do bodyOf "$f" $sources; done >"$work.bodies"
   bodyOf '[A-Za-z_]+' tests/grading/ex*_reference.cpp >>"$work.bodies"
-  sealed=$(sed -E 's/#.*//; s/^\s+|\s+$//g' tools/handout/sealed_shaders.txt | grep . | sed 's|^|shaders/|')
+  sealed=$(sed -E 's/#.*//; s/^withheld\s+//; s/^\s+|\s+$//g' tools/handout/sealed_shaders.txt | grep . | sed 's|^|shaders/|')
   # shellcheck disable=SC2086
   { bodyOf '[A-Za-z_]+' $sealed; oneLinersOf '[A-Za-z_]+' $sealed; } >>"$work.bodies"
   # shellcheck disable=SC2086

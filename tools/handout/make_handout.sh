@@ -7,8 +7,13 @@
 #     reference.cpp) and the sealed shader files (tools/handout/sealed_shaders.txt) are compiled
 #     into lib/*.a (optimised as make build, debug information stripped; the shaders obscured, see
 #     core/sealed_files.hpp), their source left out;
+#   - the reference GLSL of the GLSL exercises is withheld (`withheld` in sealed_shaders.txt): in
+#     no form in the handout; the reference's side of their public cases and renders is recorded
+#     here instead (grade_exNN_glsl --record-reference, into tests/grading/glsl/reference/), and
+#     in the lessons the student's exercises.glsl stands in for it, which the banner says;
 #   - tools/handout/exclude.txt lists what else stays in the instructor's tree: the hidden cases,
 #     the references' own unit tests, this script and the submission grader.
+# The GLSL recordings use this tree's build (SHADOWLAB_BUILD, else build/default), built first.
 # Only files git tracks go in (no build folders, no node_modules).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -38,7 +43,8 @@ done < tools/handout/exclude.txt
 while IFS= read -r line; do
   line=${line%%#*}
   line=$(echo "$line" | xargs)
-  [ -n "$line" ] && patterns+=("shaders/$line")
+  line=${line#withheld }
+  [ -n "$line" ] && patterns+=("shaders/$(echo "$line" | xargs)")
 done < tools/handout/sealed_shaders.txt
 
 excluded() {
@@ -84,6 +90,33 @@ exercises `libshadowlab_exNN_reference.a` (the graders' proof of validity and th
 lesson builds) and `libshadowlab_sealed.a` (the reference GLSL, which the shader preprocessor finds
 when the file is absent). CMake links them instead of the sources, which this handout leaves out.
 Built for Debian 12 / Ubuntu 22.04+ (x86-64, GCC's libstdc++).
+TXT
+
+# ---- 3b. the reference's side of the GLSL exercises, which the handout withholds ----------------
+build=${SHADOWLAB_BUILD:-$root/build/default}
+recorded=$tree/tests/grading/glsl/reference
+glsl_targets=()
+for cases in tests/grading/glsl/ex*_glsl.cpp; do
+  nn=$(basename "$cases" | sed -E 's/ex([0-9]+)_glsl.cpp/\1/')
+  glsl_targets+=("grade_ex${nn}_glsl")
+done
+echo "handout: recording the reference GLSL's values and renders with $build"
+cmake --build "$build" --target "${glsl_targets[@]}" >/dev/null
+for target in "${glsl_targets[@]}"; do
+  nn=${target#grade_ex}
+  nn=${nn%_glsl}
+  lesson=$(basename "$(ls -d lessons/"${nn}"_*)")
+  env -u SHADOWLAB_ROOT -u SHADOWLAB_SEED "$build/bin/$target" --lesson-binary="$build/bin/glsl_lesson_$lesson" \
+    --record-reference="$recorded" >/dev/null
+done
+cat > "$recorded/README.md" <<'TXT'
+# The reference side of the GLSL exercises, precomputed
+
+This handout does not contain the reference GLSL of the exercises. The instructor's tree recorded
+what it computes for every public case and render (`make handout`): `NN_name.json` (the values, and
+which render is which) and `NN_name/render_K.png` with its ground-truth figures (`render_K.json`).
+`make grade LESSON=NN` and the lesson's exercises panel compare your exercises.glsl with these. They
+were recorded at the default seed: grade without `--seed` or `SHADOWLAB_SEED`.
 TXT
 
 # ---- 4. the tarball ---------------------------------------------------------------------------
