@@ -194,3 +194,24 @@ foreach(lesson IN ITEMS 02_shadow_maps 03_shadow_quality 04_shadow_volumes 05_so
     set_tests_properties(gpu.${lesson}.withheld PROPERTIES LABELS gpu)
   endif()
 endforeach()
+# ... and there F4 shows the reference's picture of the preset in view (app/reference_picture.hpp):
+# the golden image itself, whatever the student's stubs draw live (in manual_compare and pcf_5x5
+# the stubs draw no shadow: without F4 those differ from the golden).
+set(without_answers "")
+foreach(line IN LISTS sealed_lines)
+  if(line MATCHES "^withheld[ \t]+([^ \t#]+)" AND EXISTS ${CMAKE_SOURCE_DIR}/shaders/${CMAKE_MATCH_1})
+    list(APPEND without_answers --without shaders/${CMAKE_MATCH_1})
+  endif()
+endforeach()
+set(reference_picture_presets_02_shadow_maps default,manual_compare)
+set(reference_picture_presets_03_shadow_quality default,pcf_5x5)
+foreach(lesson IN ITEMS 02_shadow_maps 03_shadow_quality)
+  if(TARGET lesson_${lesson} AND without_answers)
+    set(png ${shots}/${lesson}_reference_picture.png)
+    add_test(NAME gpu.${lesson}.reference_picture COMMAND lesson_check $<TARGET_FILE:lesson_${lesson}> ${without_answers}
+             --presets ${reference_picture_presets_${lesson}} --png ${png} --golden ${CMAKE_CURRENT_SOURCE_DIR}/data/golden/${lesson}
+             -- --headless --frames 2 --size 320x180 --keys F4 --screenshot ${png})
+    set_tests_properties(gpu.${lesson}.reference_picture PROPERTIES LABELS gpu)
+  endif()
+endforeach()
+

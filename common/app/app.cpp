@@ -13,10 +13,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
-#include <iomanip>
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "app/ab_split.hpp"
 #include "app/context.hpp"
@@ -27,6 +27,7 @@
 #include "app/lesson_setup.hpp"
 #include "app/model_choice.hpp"
 #include "app/outputs.hpp"
+#include "app/reference_picture.hpp"
 #include "app/ui.hpp"
 #include "core/cli.hpp"
 #include "core/model_file.hpp"
@@ -107,8 +108,7 @@ class Runner {
   // back here. --set camera.target or camera.distance on the command line wins over it.
   void aimAtModel() {
     const ModelFraming f = frameModel(placeOnGround(*currentModel()), lesson_.camera.fovY);
-    lesson_.camera.target = f.target;
-    lesson_.camera.distance = f.distance;
+    std::tie(lesson_.camera.target, lesson_.camera.distance) = std::tie(f.target, f.distance);
     homeCamera_ = lesson_.camera;
   }
   bool cameraSetOnCommandLine() const {
@@ -272,6 +272,7 @@ class Runner {
     drawCalls_ = gl::drawCalls();
     budget_.end(context_->framebuffer(), width_, height_);
     fi.framebuffer = context_->framebuffer();
+    reference_.frame(input_.referencePicture, params_, presets_, info_.name, fi.framebuffer, width_, height_);  // F4
     watchExercises(fi, frame);
     lesson_.timers.collect();
     if (uiVisible_ && input_.uiHidden < 2) {
@@ -457,7 +458,7 @@ class Runner {
     ui_.legends(legends);  // bottom right, above the labels and the insets there; the panel stops above it
     if (panels) drawPanels(shown, errors);
     lesson_.gui();
-    ui_.banner(banner_);
+    ui_.banner(reference_.label().empty() ? banner_ : reference_.label());
     if (panels) ui_.help(info_, params_, &helpOpen_);
     input_.help = helpOpen_;
     ui_.render(draw);
@@ -570,6 +571,7 @@ class Runner {
   ParamRegistry params_;
   PresetFile presets_;
   Measurement measurement_;
+  ReferencePicture reference_;
   GodView godView_;
   AbSplit ab_;
   FrameBudget budget_;
@@ -583,8 +585,7 @@ class Runner {
        rerunExercises_ = false;
   OrbitCamera homeCamera_;  // the pose after the preset and --set: Home returns to it
   std::string initError_, status_, banner_;
-  int width_ = 0, height_ = 0;
-  int drawCalls_ = 0;
+  int width_ = 0, height_ = 0, drawCalls_ = 0;
   glm::mat4 lastView_{0.0f};
   unsigned lastRevision_ = ~0u;
   double frameMsAvg_ = 0, time_ = 0, last_ = 0;
@@ -593,8 +594,7 @@ class Runner {
 }  // namespace
 
 int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, char** argv) {
-  Runner runner(make());
-  return runner.run(argc, argv);
+  return Runner(make()).run(argc, argv);
 }
 
 }  // namespace shadowlab

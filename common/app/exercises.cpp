@@ -151,7 +151,7 @@ std::string withheldBanner(const std::vector<std::string>& replaced, const std::
       if (std::regex_search(line, m, marker)) stubs += (stubs.empty() ? "" : ", ") + m[1].str();
     s += "\n  shaders/" + withheldStandIn(path) + (stubs.empty() ? ": your answers" : ": " + stubs + " still a stub");
   }
-  return s + "\nThe reference's picture of each preset: tests/data/golden/" + lesson + "/";
+  return s + "\nF4: the reference's picture of the preset in view (tests/data/golden/" + lesson + "/)";
 }
 
 }  // namespace shadowlab

@@ -40,6 +40,7 @@ void pressKey(Input& input, int key, int mods) {
   if (key == GLFW_KEY_F1) input.help = !input.help;
   else if (key == GLFW_KEY_F2) input.stats = !input.stats;
   else if (key == GLFW_KEY_F3) input.panel = !input.panel;
+  else if (key == GLFW_KEY_F4) input.referencePicture = !input.referencePicture;
   else if (key == GLFW_KEY_F11) input.toggleFullscreen = true;
   else if (key == GLFW_KEY_F12) input.screenshot = true;
   else if (ctrl && (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD)) ++input.uiScaleSteps;
@@ -61,6 +62,7 @@ int scriptedKeyCode(const std::string& name) {
   if (name == "F1") return GLFW_KEY_F1;
   if (name == "F2") return GLFW_KEY_F2;
   if (name == "F3") return GLFW_KEY_F3;
+  if (name == "F4") return GLFW_KEY_F4;
   if (name.size() == 1 && name[0] >= 'A' && name[0] <= 'Z') return GLFW_KEY_A + (name[0] - 'A');
   if (name.size() == 1 && name[0] >= '0' && name[0] <= '9') return GLFW_KEY_0 + (name[0] - '0');
   return GLFW_KEY_UNKNOWN;  // core/cli's parseKeyScript accepts no other name

@@ -21,8 +21,9 @@ struct Input {
   bool haveLast = false;
   float scroll = 0;
   bool help = false;
-  bool stats = false;  // F2: the renderer, the pass table and every counter, under the header
-  bool panel = false;  // F3: the parameter panel open (else a title bar: the picture first)
+  bool stats = false;             // F2: the renderer, the pass table and every counter, under the header
+  bool panel = false;             // F3: the parameter panel open (else a title bar: the picture first)
+  bool referencePicture = false;  // F4: the reference's picture of the preset in view (app/reference_picture.hpp)
   bool screenshot = false;
   int uiHidden = 0;          // H: 1 the panels hidden (the labels and legends that explain the picture stay), 2 none
   bool fly = false;          // Tab: WASD + mouse look instead of orbiting the target

@@ -296,11 +296,9 @@ void Ui::help(const LessonInfo& info, const ParamRegistry& params, bool* open) {
   ImGui::Separator();
   ImGui::TextUnformatted(info.help.c_str());
   ImGui::Separator();
-  ImGui::TextUnformatted(
-      "Mouse: left drag orbit (fly: look), right drag pan, wheel zoom (fly: speed)\n"
-      "F1 help   F2 stats   F3 parameters   F11 fullscreen   F12 screenshot   Ctrl +/- UI scale   Tab orbit <-> fly   "
-      "Home camera reset   "
-      "Esc quit");
+  ImGui::TextUnformatted(("Mouse: left drag orbit (fly: look), right drag pan, wheel zoom (fly: speed)\n" +
+                          functionKeys("   ") + "   Esc quit")
+                             .c_str());
   for (const FrameworkKey& k : frameworkKeys()) ImGui::Text("%-3s %s", k.key, k.action);
   bool any = false;
   for (const auto& p : params.params()) {

@@ -1,4 +1,5 @@
 #include "core/cli.hpp"
+#include "core/hotkeys.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -34,7 +35,7 @@ constexpr Flag kFlags[] = {
     {"--show-panel", nullptr, "draw the parameter panel open (F3) and the UI from the first frame"},
     {"--keys", "LIST",
      "press keys through the window's key handler, one after the other from the first frame: \"Tab,W*10,Home\" "
-     "(KEY*N: held N frames; A-Z, 0-9, Tab, Home, F1, F2, F3); tests and slides script the fly camera and hotkeys"},
+     "(KEY*N: held N frames; A-Z, 0-9, Tab, Home, F1, F2, F3, F4); tests and slides script the fly camera and hotkeys"},
     {"--drop", "FILE[@N]", "drop FILE on the window before frame N (default 1), as dragging it there does"},
     {"--fullscreen", nullptr, "start fullscreen (F11 toggles)"},
     {"--strict-gl", nullptr, "fail (exit 3) on any OpenGL error (tests set it)"},
@@ -64,7 +65,7 @@ int toInt(const std::string& flag, const std::string& v, int lo, int hi) {
 
 bool keyNameValid(const std::string& k) {
   if (k.size() == 1) return (k[0] >= 'A' && k[0] <= 'Z') || (k[0] >= '0' && k[0] <= '9');
-  return k == "Tab" || k == "Home" || k == "F1" || k == "F2" || k == "F3";
+  return k == "Tab" || k == "Home" || k == "F1" || k == "F2" || k == "F3" || k == "F4";
 }
 
 }  // namespace
@@ -79,7 +80,7 @@ std::vector<ScriptedKey> parseKeyScript(const std::string& list) {
     ScriptedKey k{step.substr(0, star)};
     if (!keyNameValid(k.name))
       throw CliError("--keys: '" + step +
-                     "' is not a key (valid: A-Z, 0-9, Tab, Home, F1, F2, F3, each as KEY or KEY*N to " +
+                     "' is not a key (valid: A-Z, 0-9, Tab, Home, F1, F2, F3, F4, each as KEY or KEY*N to " +
                      "hold it N frames, separated by commas, e.g. \"Tab,W*10,Home\")");
     if (star != std::string::npos) k.frames = toInt("--keys " + k.name, step.substr(star + 1), 1, kMaxKeyFrames);
     keys.push_back(k);
@@ -199,10 +200,9 @@ std::string commandLineHelp(const std::string& program) {
     if (left.size() < 26) left.resize(26, ' ');
     s += left + " " + f.help + "\n";
   }
-  s += "Keys (windowed): F1 help, F2 stats, F3 parameters, F11 fullscreen, F12 screenshot, Ctrl +/- UI scale, R reload "
-       "shaders,\n"
-       "H hide the UI, Tab orbit <-> fly camera (WASD, Q/E, mouse look), Home camera reset; --list-hotkeys\n"
-       "lists the lesson's own keys.\n";
+  s += "Keys (windowed): " + functionKeys(", ") +
+       ",\nR reload shaders, H hide the UI, WASD Q/E and the mouse fly the camera; --list-hotkeys lists the lesson's "
+       "own keys.\n";
   return s;
 }
 

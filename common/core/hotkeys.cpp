@@ -38,6 +38,16 @@ std::string numberProblem(const Param& p) {
 
 std::span<const FrameworkKey> frameworkKeys() { return kFrameworkKeys; }
 
+std::string functionKeys(const std::string& separator) {
+  static const char* const kKeys[] = {
+      "F1 help",          "F2 stats",       "F3 parameters",     "F4 the reference's picture of the preset in view",
+      "F11 fullscreen",   "F12 screenshot", "Ctrl +/- UI scale", "Tab camera orbit <-> fly",
+      "Home camera reset"};
+  std::string s;
+  for (const char* k : kKeys) s += (s.empty() ? "" : separator) + k;
+  return s;
+}
+
 std::string hotkeyAction(const Param& p) {
   switch (p.kind) {
     case ParamKind::Bool: return "toggle";
@@ -92,9 +102,7 @@ bool applyHotkey(ParamRegistry& params, const std::string& key) {
 std::string describeHotkeys(const ParamRegistry& params) {
   std::ostringstream out;
   for (const FrameworkKey& k : kFrameworkKeys) out << k.key << "  (framework)  " << k.action << '\n';
-  out << "F1  (framework)  help;  F2 stats;  F3 parameters;  F11 fullscreen;  F12 screenshot;  Ctrl +/- UI scale;  Tab "
-         "camera orbit <-> fly;  "
-         "Home camera reset\n";
+  out << "F1  (framework)  " << functionKeys(";  ").substr(3) << '\n';
   std::vector<const Param*> bound;
   for (const Param& p : params.params())
     if (!p.hotkey.empty()) bound.push_back(&p);

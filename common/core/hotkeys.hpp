@@ -21,6 +21,10 @@ struct FrameworkKey {
 // camera's movement. Function keys, Tab, Home, Esc and Ctrl +/- are not letter keys.
 std::span<const FrameworkKey> frameworkKeys();
 
+// The function keys and the other non-letter keys, in words, joined by `separator` ("F1 help, F2
+// stats, ..."): one list for --help, --list-hotkeys and the help window.
+std::string functionKeys(const std::string& separator);
+
 // What pressing `p.hotkey` does, in words ("toggle", "next choice", "0 <-> 0.5"); "" when the kind
 // cannot be driven by a key.
 std::string hotkeyAction(const Param& p);

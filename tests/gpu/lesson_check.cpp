@@ -163,12 +163,13 @@ int main(int argc, char** argv) {
       for (std::string n; std::getline(list, n, ',');)
         if (!n.empty()) chosen.push_back(n);
     } else if ((a == "--without" && i + 1 < argc) || (a == "--write" && i + 2 < argc)) {
-      // A doctored copy of the data the lessons read: shaders, textures, lesson presets.
+      // A doctored copy of the data the lessons read: shaders, textures, lesson presets, and the
+      // golden images (F4 shows them: app/reference_picture.hpp).
       const fs::path copy = fs::temp_directory_path() / ("lesson_check_root_" + std::to_string(getpid()));
       if (root.empty()) {
         fs::remove_all(copy);
-        fs::create_directories(copy);
-        for (const char* dir : {"shaders", "textures", "lessons"})
+        fs::create_directories(copy / "tests/data");
+        for (const char* dir : {"shaders", "textures", "lessons", "tests/data/golden"})
           fs::copy(fs::path(shadowlab::configuredSourceRoot()) / dir, copy / dir, fs::copy_options::recursive);
       }
       const fs::path target = copy / argv[++i];
