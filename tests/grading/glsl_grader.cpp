@@ -455,6 +455,8 @@ int main(int argc, char** argv) {
   if (int e = parse(argc, argv, o)) return e;
   if (const char* env = std::getenv("SHADOWLAB_SEED")) grading::setSeed(std::strtoull(env, nullptr, 10));
   const std::string lesson = SHADOWLAB_GLSL_LESSON;
+  // The handout's recording, found in this tree before a submission is staged in a copy of its shaders.
+  if (o.precomputed.empty() && glslReferenceWithheld(lesson)) o.precomputed = precomputedGlslDir();
   if (!o.precomputed.empty()) setPrecomputedGlslDir(fs::absolute(o.precomputed).string());
   if (!o.recordDir.empty()) return record(o, lesson);
   std::string error;
