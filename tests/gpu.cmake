@@ -66,6 +66,31 @@ foreach(lesson IN LISTS SHADOWLAB_LESSONS)
   endif()
 endforeach()
 
+# measure.light's range is the lesson's lights (three in lesson 03): a fourth is a bad value (exit 2),
+# overlay or not, like any other.
+if(TARGET lesson_03_shadow_quality)
+  foreach(overlay none error)
+    add_test(NAME cli.03_shadow_quality.measure_light_${overlay} COMMAND lesson_check
+             $<TARGET_FILE:lesson_03_shadow_quality> --expect-exit 2
+             --expect-stderr "bad value '3' for measure.light (int); valid: [0, 2]"
+             -- --headless --frames 1 --set measure.light=3 --set measure.overlay=${overlay})
+    set_tests_properties(cli.03_shadow_quality.measure_light_${overlay} PROPERTIES LABELS gpu)
+  endforeach()
+endif()
+
+# A camera that sees none of the scene says so (banner; stderr headless), exit 0: beyond the far
+# plane, and wholly nearer than the near plane.
+if(TARGET lesson_03_shadow_quality)
+  add_test(NAME gpu.03_shadow_quality.sees_nothing_far COMMAND lesson_check $<TARGET_FILE:lesson_03_shadow_quality>
+           --expect-stderr "The camera sees none of the scene: the scene is beyond the far plane"
+           -- --headless --frames 1 --size 320x180 --set camera.distance=500)
+  add_test(NAME gpu.03_shadow_quality.sees_nothing_near COMMAND lesson_check $<TARGET_FILE:lesson_03_shadow_quality>
+           --expect-stderr "The camera sees none of the scene: the scene is nearer than the near plane"
+           -- --headless --frames 1 --size 320x180 --set camera.near=100 --set camera.distance=5 --set camera.pitch=1.4)
+  set_tests_properties(gpu.03_shadow_quality.sees_nothing_far gpu.03_shadow_quality.sees_nothing_near
+                       PROPERTIES LABELS gpu)
+endif()
+
 # Missing files: lesson 01's shader and a texture, removed from a copy of the tree.
 if(TARGET lesson_01_lighting)
   add_test(NAME gpu.01_lighting.missing_shader COMMAND lesson_check $<TARGET_FILE:lesson_01_lighting>

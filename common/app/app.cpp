@@ -1,10 +1,9 @@
 // The loop every lesson runs in: command line, context, presets, input, timing, UI, screenshots,
-// benchmark CSV and the GL-error verdict. Lessons only see the hooks in lesson.hpp.
-//
-// runLesson is four stages, each a method of Runner below: parse (the command line, the registry,
-// presets; exit 2 on bad input), open (the context, the lesson's init, the output files), the
-// frame loop (input, the lesson, the framework's views, the UI, the outputs) and teardown (the GL
-// verdict, the lesson released before its context).
+// benchmark CSV and the GL-error verdict. Lessons only see the hooks in lesson.hpp. runLesson is
+// four stages, each a method of Runner below: parse (the command line, the registry, presets; exit
+// 2 on bad input), open (the context, the lesson's init, the output files), the frame loop (input,
+// the lesson, the framework's views, the UI, the outputs) and teardown (the GL verdict, the lesson
+// released before its context).
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
@@ -191,19 +190,20 @@ class Runner {
     return std::nullopt;
   }
 
-  // Every 30 frames: the cases again when asked or when exercises.glsl was saved; with the
-  // student's code in use, the banner for the stubs and how black the frame is, and in the student
-  // handout whose GLSL draws where the reference's is withheld (headless: once, on stdout).
+  // Every 30 frames: the cases again when asked or exercises.glsl was saved; the banner: the stubs
+  // (the student's code in use), whose GLSL draws where the handout withholds the reference's, and a
+  // camera that sees none of the scene (headless: once; on stderr with the camera's).
   void watchExercises(const FrameInfo& fi, int frame) {
     Exercises& ex = lesson_.exercises;
     if (ex.empty() || (frame % 30 != 0 && !rerunExercises_)) return;
-    if (rerunExercises_ || ex.glslChanged()) ex.evaluate(info_.name);
-    rerunExercises_ = false;
-    const std::string stubs =
+    if (std::exchange(rerunExercises_, false) || ex.glslChanged()) ex.evaluate(info_.name);
+    banner_ =
         studentCode() && !ex.stubBanner(0).empty() ? ex.stubBanner(blackShare(fi.framebuffer, width_, height_)) : "";
-    const std::string withheld = withheldBanner(withheldReplaced(), info_.name);
-    banner_ = stubs + (stubs.empty() || withheld.empty() ? "" : "\n") + withheld;
-    if (cl_.headless && !banner_.empty() && !bannerPrinted_) std::cout << info_.name << ": " << banner_ << '\n';
+    const std::string sight = sightBanner(lesson_, float(width_) / float(height_));
+    for (const std::string& more : {withheldBanner(withheldReplaced(), info_.name), sight})
+      if (!more.empty()) banner_ += (banner_.empty() ? "" : "\n") + more;
+    if (cl_.headless && !banner_.empty() && !bannerPrinted_)
+      (sight.empty() ? std::cout : std::cerr) << info_.name << ": " << banner_ << '\n';
     bannerPrinted_ = bannerPrinted_ || !banner_.empty();
   }
 

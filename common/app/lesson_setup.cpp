@@ -7,6 +7,7 @@
 
 #include "app/lesson.hpp"
 #include "app/lesson_setup.hpp"
+#include "app/measurement.hpp"
 #include "core/hotkeys.hpp"
 #include "core/param_checks.hpp"
 
@@ -132,6 +133,14 @@ std::string scriptedKeyReport(const std::string& lesson, const std::string& step
     if (!p.hotkey.empty() && step.rfind(p.hotkey, 0) == 0 && (step.size() == 1 || step[1] == '*'))
       line << ", " << p.name << '=' << params.get(p.name);
   return line.str();
+}
+
+std::string sightBanner(Lesson& lesson, float aspect) {
+  const MeasureSource source = lesson.measureSource();
+  if (!source.scene) return "";
+  const Aabb box = source.scene->bounds();
+  const std::string why = box.empty() ? "" : sightProblem(lesson.camera, aspect, box.min, box.max);
+  return why.empty() ? "" : "The camera sees none of the scene: " + why + ". Home resets the camera.";
 }
 
 }  // namespace shadowlab

@@ -1,5 +1,6 @@
 #pragma once
-// The framework's answers about a lesson before it runs (app.cpp's parse stage).
+// The framework's answers about a lesson before it runs (app.cpp's parse stage), and its words
+// about what a running lesson shows.
 #include "app/lesson.hpp"
 #include "core/cli.hpp"
 
@@ -21,5 +22,9 @@ std::vector<Counter> keyFigures(const LessonInfo& info, const std::vector<Counte
 // --keys: what a step did, for stderr (tests read it): the camera, and the parameter its key drives.
 std::string scriptedKeyReport(const std::string& lesson, const std::string& step, const OrbitCamera& camera, bool fly,
                               const ParamRegistry& params);
+// The banner's line when the camera sees none of the lesson's scene (core/camera.hpp's
+// sightProblem: behind it, beyond far, nearer than near, off to a side), "" when it may see some;
+// "" for a lesson with no scene to measure.
+std::string sightBanner(Lesson& lesson, float aspect);
 
 }  // namespace shadowlab

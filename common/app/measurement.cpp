@@ -1,5 +1,6 @@
 #include "app/measurement.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -72,7 +73,11 @@ void Measurement::declare(ParamRegistry& r) {
   r.addChoice("measure.overlay", &overlay_, {"none", "error", "aliasing", "reference"},
               "compare with ground truth (Embree rays from the shaded points): leaks red, false shadows blue")
       .hotkey = "M";
-  r.add("measure.light", &light_, 0, 7, "which of the lesson's lights is measured");
+  // The lesson's lights are declared before (lightN.kind): the range is theirs, so a light the
+  // lesson lacks is refused like every other bad value (exit 2), overlay or not.
+  int lights = 0;
+  while (r.has("light" + std::to_string(lights) + ".kind")) ++lights;
+  r.add("measure.light", &light_, 0, std::max(lights - 1, 0), "which of the lesson's lights is measured");
   r.add("measure.scale", &scale_, 1, 8, "measure every n-th pixel: 1 exact, larger stays interactive");
   r.add("measure.samples", &samples_, 1, 1024, "rays per pixel toward an area light (soft shadows)");
   r.add("measure.seed", &seed_, 1, 1000000, "the soft reference's sample seed (another seed: another noise)");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -113,6 +114,44 @@ void FlyCamera::look(float dYaw, float dPitch) {
 
 void FlyCamera::move(const glm::vec3& local) {
   position += right() * local.x + glm::vec3(0, 1, 0) * local.y + forward() * local.z;
+}
+
+std::string sightProblem(const OrbitCamera& camera, float aspect, const glm::vec3& lo, const glm::vec3& hi) {
+  const glm::mat4 view = camera.view(), clip = camera.projection(aspect) * view;
+  float nearest = 1e30f, farthest = -1e30f;  // view depth along the view axis
+  int outside[6] = {};                       // corners beyond each clip plane: x<-w, x>w, y<-w, y>w, z<-w, z>w
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 p(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z, 1.0f);
+    const float depth = -(view * p).z;
+    nearest = std::min(nearest, depth);
+    farthest = std::max(farthest, depth);
+    const glm::vec4 c = clip * p;
+    for (int axis = 0; axis < 3; ++axis) {
+      outside[2 * axis] += c[axis] < -c.w;
+      outside[2 * axis + 1] += c[axis] > c.w;
+    }
+  }
+  auto metres = [](float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", double(v));
+    return std::string(buf);
+  };
+  if (farthest <= 0.0f) return "the scene is behind the camera";
+  if (nearest > camera.farZ)
+    return "the scene is beyond the far plane (its nearest point " + metres(nearest) + " away, camera.far " +
+           metres(camera.farZ) + ")";
+  if (farthest < camera.nearZ)
+    return "the scene is nearer than the near plane (its farthest point " + metres(farthest) + " away, camera.near " +
+           metres(camera.nearZ) + ")";
+  for (int plane = 0; plane < 4; ++plane)
+    if (outside[plane] == 8)
+      return "the scene is outside the field of view (to the " +
+             std::string(plane == 0   ? "left"
+                         : plane == 1 ? "right"
+                         : plane == 2 ? "bottom"
+                                      : "top") +
+             " of it: look at camera.target)";
+  return "";
 }
 
 }  // namespace shadowlab

@@ -1,6 +1,8 @@
 #pragma once
 // Cameras as pure GLM maths: no input, no GL. The app layer maps mouse and keys onto these calls.
 // Right-handed view space looking down -z; projections map depth to GL's [-1,1] clip range.
+#include <string>
+
 #include <glm/glm.hpp>
 
 namespace shadowlab {
@@ -53,5 +55,11 @@ struct FlyCamera {
   void look(float dYaw, float dPitch);
   void move(const glm::vec3& local);  // x right, y up (world), z forward
 };
+
+// Why the camera sees none of the box [lo, hi] (the scene), "" when its frustum may meet it: the
+// box lies behind the eye, beyond the far plane, wholly nearer than the near plane, or outside the
+// field of view. Conservative: "" whenever no single frustum plane has the whole box outside it.
+// The framework says it in the banner (and on stderr headless) instead of drawing one colour.
+std::string sightProblem(const OrbitCamera& camera, float aspect, const glm::vec3& lo, const glm::vec3& hi);
 
 }  // namespace shadowlab

@@ -5,7 +5,9 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/LogStream.hpp>
 #include <cctype>
 #include <glm/gtc/matrix_transform.hpp>
 #include <cmath>
@@ -52,10 +54,41 @@ bool isObj(const std::string& extension) {
 // "model 'FILE': line N: reason (valid: ...)", where the text has one that explains it. An OBJ file
 // Assimp loads is scanned too, never to refuse it: a line Assimp 5.2.5 skipped or misread without a
 // word (a vertex with a non-number, an indented statement) becomes a note, so nothing is silent.
+// Assimp's warnings during one import, for the notes: it drops what it cannot use (a face with an
+// index past its mesh's vertices) with a warning only, which the lesson would otherwise never say.
+class ImportWarnings {
+ public:
+  ImportWarnings() {
+    Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);
+    Assimp::DefaultLogger::get()->attachStream(new Stream(lines_), Assimp::Logger::Warn | Assimp::Logger::Err);
+  }
+  ~ImportWarnings() { Assimp::DefaultLogger::kill(); }
+  ImportWarnings(const ImportWarnings&) = delete;
+  ImportWarnings& operator=(const ImportWarnings&) = delete;
+  void into(ModelFile& model) const {
+    for (const std::string& line : lines_) model.notes.push_back("the importer (Assimp) warned: " + line);
+  }
+
+ private:
+  struct Stream : Assimp::LogStream {  // the logger owns and deletes it
+    explicit Stream(std::vector<std::string>& lines) : lines(lines) {}
+    void write(const char* message) override {
+      std::string m = message;  // "Warn,  T0: Some faces had out-of-range indices. ...\n"
+      if (const auto colon = m.find(": "); colon != std::string::npos) m.erase(0, colon + 2);
+      while (!m.empty() && std::isspace(static_cast<unsigned char>(m.back()))) m.pop_back();
+      if (!m.empty() && std::find(lines.begin(), lines.end(), m) == lines.end()) lines.push_back(m);
+    }
+    std::vector<std::string>& lines;
+  };
+  std::vector<std::string> lines_;
+};
+
 ModelFile withLine(const std::string& name, bool obj, const std::function<std::string()>& text,
                    const std::function<ModelFile()>& load) {
   try {
+    const ImportWarnings warnings;
     ModelFile model = load();
+    warnings.into(model);
     if (obj)
       if (const std::optional<ObjLine> at = locateObjFault(text(), ObjFault::any))
         model.notes.insert(
@@ -108,7 +141,16 @@ glm::vec3 unitNormal(const aiVector3D& n) {
   return v / length;
 }
 
-Mesh convertMesh(const aiMesh& in, const std::string& name) {
+// A triangle of no area (its corners in a line, or two of them one point) draws nothing and casts
+// nothing: relative to its longest edge, |cross| below 1e-6 of that edge squared.
+bool noArea(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  const glm::vec3 e1 = b - a, e2 = c - a, e3 = c - b;
+  const float longest = std::max({glm::dot(e1, e1), glm::dot(e2, e2), glm::dot(e3, e3)});
+  return glm::length(glm::cross(e1, e2)) <= 1e-6f * longest;
+}
+
+// The mesh's triangles; those of no area are dropped and counted in `flat`.
+Mesh convertMesh(const aiMesh& in, const std::string& name, std::size_t& flat) {
   Mesh m;
   m.positions.reserve(in.mNumVertices);
   for (unsigned i = 0; i < in.mNumVertices; ++i) {
@@ -133,8 +175,13 @@ Mesh convertMesh(const aiMesh& in, const std::string& name) {
       corners.push_back(m.positions[face.mIndices[k]]);
     }
     try {
-      for (const auto& t : triangulatePolygon(corners))
+      for (const auto& t : triangulatePolygon(corners)) {
+        if (noArea(corners[t[0]], corners[t[1]], corners[t[2]])) {
+          ++flat;
+          continue;
+        }
         for (std::uint32_t k : t) m.indices.push_back(face.mIndices[k]);
+      }
     } catch (const std::invalid_argument& e) {
       refuse(name, ObjFault::selfCrossing, "mesh '" + std::string(in.mName.C_Str()) + "': " + e.what());
     }
@@ -292,14 +339,16 @@ ModelFile convertScene(Assimp::Importer& importer, const aiScene* in, const std:
     triangles += mesh.mNumFaces;
     if (triangles > kMaxModelTriangles)
       fail(name, "more than " + std::to_string(kMaxModelTriangles) + " triangles: too large to draw at class speed");
-    Mesh converted = convertMesh(mesh, name);
+    Mesh converted = convertMesh(mesh, name, out.flatTriangles);
     if (converted.indices.empty()) continue;
     meshIndex[i] = int(out.scene.addMesh(std::move(converted)));
   }
   addNode(*in->mRootNode, glm::mat4(1.0f), meshIndex, *in, out.scene, 0);
+  const std::string flat = std::to_string(out.flatTriangles) + " triangles of no area (corners in a line or repeated)";
   if (out.scene.objects.empty() || out.scene.bounds().empty())
-    fail(name, "no triangles to draw (" + std::to_string(out.skippedPoints) + " points and " +
+    fail(name, "no triangles to draw (" + flat + ", " + std::to_string(out.skippedPoints) + " points and " +
                    std::to_string(out.skippedLines) + " lines skipped)");
+  if (out.flatTriangles > 0) out.notes.push_back("dropped " + flat + ": they draw nothing");
   const Aabb box = out.scene.bounds();
   if (!std::isfinite(glm::length(box.extent())))
     fail(name, "its size overflows a float (coordinates or node transforms too large)");

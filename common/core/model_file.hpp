@@ -55,6 +55,7 @@ struct ModelFile {
   std::vector<std::string> notes;  // one line each: what was generated, skipped or substituted
   std::size_t skippedPoints = 0, skippedLines = 0;
   std::size_t meshesWithoutNormals = 0;
+  std::size_t flatTriangles = 0;  // of no area (collinear or repeated corners): dropped
   std::size_t missingTextures = 0;
 };
 

@@ -220,3 +220,30 @@ TEST_CASE("camera: frameBox puts every corner of the box inside the image, from 
         CHECK(extent > 0.4f / factor);  // and not a dot in the middle
       }
 }
+
+// A camera that sees none of the scene says why (the framework's banner), and one that sees any of
+// it says nothing: beyond far, nearer than near, behind the eye, off to a side.
+TEST_CASE("sightProblem: why a camera sees none of the scene") {
+  const glm::vec3 lo(-5.0f, 0.0f, -5.0f), hi(5.0f, 10.0f, 5.0f);
+  OrbitCamera cam;  // 12 from the origin, looking at it
+  CHECK(sightProblem(cam, 16.0f / 9.0f, lo, hi).empty());
+  cam.nearZ = 0.01f;
+  cam.distance = 50.0f;
+  cam.farZ = 20.0f;
+  CHECK(sightProblem(cam, 16.0f / 9.0f, lo, hi).find("beyond the far plane") != std::string::npos);
+  cam.farZ = 200.0f;
+  cam.distance = 30.0f;
+  cam.nearZ = 25.0f;  // the box spans depths of about 22 to 38: the near plane cuts it
+  CHECK(sightProblem(cam, 16.0f / 9.0f, lo, hi).empty());
+  cam.nearZ = 45.0f;
+  CHECK(sightProblem(cam, 16.0f / 9.0f, lo, hi).find("nearer than the near plane") != std::string::npos);
+  cam.nearZ = 0.1f;
+  cam.target = glm::vec3(0.0f, 0.0f, 1e4f);  // the eye beyond the box, looking away from it
+  cam.yaw = 3.14159265f;                     // looking along +z, away from the origin
+  cam.pitch = 0.0f;
+  cam.distance = 12.0f;
+  CHECK(sightProblem(cam, 16.0f / 9.0f, lo, hi).find("behind the camera") != std::string::npos);
+  cam.target = glm::vec3(100.0f, 5.0f, 0.0f);  // beside the box, looking along -z past it
+  cam.yaw = 0.0f;
+  CHECK(sightProblem(cam, 16.0f / 9.0f, lo, hi).find("outside the field of view") != std::string::npos);
+}

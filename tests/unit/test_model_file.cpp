@@ -529,3 +529,27 @@ TEST_CASE("model: open meshes are drawn two-sided, closed ones keep back-face cu
   CHECK(both.scene.objects[open].material != both.scene.objects[closed].material);
   CHECK(anyNote(both, "1 of 2 meshes are open"));
 }
+
+// What a file holds but cannot be drawn is said, never dropped in silence: triangles of no area
+// (Assimp's number_formats.obj joins three collinear points), and the faces Assimp drops itself
+// with only a warning (a glTF index past its vertices: the tetrahedron would have a hole).
+TEST_CASE("model: triangles of no area and faces the importer drops are named in the notes") {
+  const std::string line = "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\n";
+  std::string error;
+  try {
+    loadModelFromMemory(line.data(), line.size(), "obj", "collinear.obj");
+  } catch (const ModelError& e) { error = e.what(); }
+  CHECK(contains(error, "model 'collinear.obj': no triangles to draw (1 triangles of no area"));
+  // (A face with two corners at one point Assimp turns into a line itself: FindDegenerates, a note.)
+  const std::string mixed = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 1 2 4\nf 2 4 5\n";
+  const ModelFile m = loadModelFromMemory(mixed.data(), mixed.size(), "obj", "mixed.obj");
+  REQUIRE(m.scene.meshes.size() == 1);
+  CHECK(m.scene.meshes[0].indices.size() == 3);  // the one triangle with an area
+  CHECK(m.flatTriangles == 2);
+  CHECK(anyNote(m, "dropped 2 triangles of no area (corners in a line or repeated): they draw nothing"));
+
+  const ModelFile holed = loadModelFile(kModels + "bad_index.gltf");
+  CHECK(anyNote(holed, "the importer (Assimp) warned: Some faces had out-of-range indices. Those faces were dropped."));
+  const ModelFile whole = loadModelFile(kModels + "tetrahedron.gltf");
+  CHECK_FALSE(anyNote(whole, "the importer (Assimp) warned"));
+}
