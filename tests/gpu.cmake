@@ -78,6 +78,15 @@ if(TARGET lesson_03_shadow_quality)
   endforeach()
 endif()
 
+# Maps over the memory budget are refused up front (exit 2, the figure and what fits), not left to
+# GL_OUT_OF_MEMORY (17 GB of many-lights maps exited 1 under --strict-gl).
+if(TARGET lesson_05_soft_shadows)
+  add_test(NAME cli.05_soft_shadows.map_budget COMMAND lesson_check $<TARGET_FILE:lesson_05_soft_shadows>
+           --expect-exit 2 --expect-stderr "many.samples = 64 maps of many.map_size = 8192 take 16384 MiB a light, over the 4096 MiB budget of one light's maps: at 8192 at most 16 samples, or 64 samples at 4096 texels"
+           -- --headless --strict-gl --frames 1 --set technique=many --set many.samples=64 --set many.map_size=8192)
+  set_tests_properties(cli.05_soft_shadows.map_budget PROPERTIES LABELS gpu)
+endif()
+
 # A camera that sees none of the scene says so (banner; stderr headless), exit 0: beyond the far
 # plane, and wholly nearer than the near plane.
 if(TARGET lesson_03_shadow_quality)

@@ -12,6 +12,7 @@ void LightMesh::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "samples", &p_.samples, 1, SoftMaps::kMaxSamples, "point lights on the sphere for baking the nodes");
   r.add(n + "offset", &p_.offset, 0, 2, "cells along the normal before the lookup (the nodes inside are dark)");
   maps_.declare(r, n);
+  maps_.checkBudget(r, n, &p_.samples);
 }
 
 void LightMesh::init() {

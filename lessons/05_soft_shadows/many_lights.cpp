@@ -11,6 +11,7 @@ void ManyLights::declare(ParamRegistry& r, const std::string& n) {
   r.addChoice(n + "layout", &p_.layout, {"ball", "disk"},
               "samples whose shadow is a uniform disk from any direction, or a disk across the light's axis");
   maps_.declare(r, n);
+  maps_.checkBudget(r, n, &p_.samples);
 }
 
 std::vector<glm::vec3> ManyLights::samplesFor(int n, SampleLayout layout) {

@@ -31,6 +31,22 @@ void SoftMaps::declare(ParamRegistry& r, const std::string& n, bool reuseSwitch)
 
 int SoftMaps::mapSize() const { return p_.mapSize; }
 
+void SoftMaps::checkBudget(ParamRegistry& r, const std::string& n, const int* samples) const {
+  r.addCheck({n + "samples", n + "map_size"}, [this, n, samples](const ParamRegistry&) -> std::string {
+    const std::uint64_t side = std::uint64_t(p_.mapSize), perMap = side * side * 4;  // 32-bit depth
+    if (std::uint64_t(*samples) * perMap <= kBudgetBytes) return "";
+    const std::uint64_t fit = kBudgetBytes / perMap;
+    int largest = kMapSizes.front();
+    for (int s : kMapSizes)
+      if (std::uint64_t(*samples) * std::uint64_t(s) * std::uint64_t(s) * 4 <= kBudgetBytes) largest = s;
+    return n + "samples = " + std::to_string(*samples) + " maps of " + n + "map_size = " + std::to_string(p_.mapSize) +
+           " take " + std::to_string((std::uint64_t(*samples) * perMap) >> 20) + " MiB a light, over the " +
+           std::to_string(kBudgetBytes >> 20) + " MiB budget of one light's maps: at " + std::to_string(p_.mapSize) +
+           " at most " + std::to_string(fit) + " samples, or " + std::to_string(*samples) + " samples at " +
+           std::to_string(largest) + " texels";
+  });
+}
+
 void SoftMaps::init() {
   casters_.build();
   compare_ = gl::makeCompareSampler(true, label_ + ": compare linear");

@@ -11,6 +11,7 @@
 //
 // GLSL: shaders/05_soft_shadows/soft_maps.glsl declares what bind() sets; a technique's visibility shader
 // includes it.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,12 @@ class SoftMaps {
   void pushShapes(const ShadowContext& c) const;
 
   static constexpr int kMaxSamples = 64;
+  // One light's sample maps may take at most this (the course's budget, for a laptop's GPU: 64 maps
+  // at 2048 are 1 GiB; 64 at 8192, 16 GiB, stopped the lesson with GL_OUT_OF_MEMORY).
+  static constexpr std::uint64_t kBudgetBytes = std::uint64_t(4) << 30;
+  // Registers the check that `n`samples maps of `n`map_size fit kBudgetBytes: a combination over it
+  // is refused up front like any bad value (exit 2), naming the figure and what fits.
+  void checkBudget(ParamRegistry& r, const std::string& n, const int* samples) const;
   const std::vector<SoftLight>& lights() const { return lights_; }
   const std::vector<glm::vec3>& samples() const { return samples_; }
   int mapSize() const;
