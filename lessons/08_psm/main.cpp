@@ -123,7 +123,7 @@ class OriginalPsmLesson : public tech::ShadowLesson {
             true,
             120,
             {"03"},
-            {"light0 light", "light0 warp's predicted m", "light0 cone"}};
+            {"light0 light", "light0 warp's predicted m", "light0 cone", "light0 post-projective depth"}};
   }
 
   void init() override {

@@ -3,8 +3,10 @@
 # non-finite visibility or texel Jacobian, and, against ground truth, at most MAX_BP / 100 %
 # misclassified and at most MAX_LEAK_BP / 100 % of the truly shadowed pixels leaked (a vanished shadow). With
 # EXPECT=fail (a control) the same bounds must be broken: the check can tell a wrong answer.
+# With -DCOUNTER=NAME the header's counter NAME must be there (what the lesson says about the
+# case), with -DNO_COUNTER=NAME it must not.
 # Run: cmake -DLESSON=... -DOUT=...json -DNAME=... -DEXPECT=ok|fail -DMAX_BP=... -DMAX_LEAK_BP=... [-DSIZE=WxH (480x270)]
-#   -DARGS=a;b;c -P this
+#   [-DCOUNTER=... | -DNO_COUNTER=...] -DARGS=a;b;c -P this
 if(NOT DEFINED SIZE)
   set(SIZE 480x270)
 endif()
@@ -22,6 +24,14 @@ string(JSON pct GET "${json}" hard misclassified_pct)
 string(JSON bad_v GET "${json}" nonfinite visibility)
 string(JSON bad_j GET "${json}" nonfinite texel_jacobian)
 string(JSON counters GET "${json}" counters)
+if(DEFINED COUNTER OR DEFINED NO_COUNTER)
+  string(JSON said ERROR_VARIABLE missing GET "${json}" counters "${COUNTER}${NO_COUNTER}")
+  if(DEFINED COUNTER AND missing)
+    message(FATAL_ERROR "${NAME}: the lesson does not say '${COUNTER}':\n${counters}")
+  elseif(DEFINED NO_COUNTER AND NOT missing)
+    message(FATAL_ERROR "${NAME}: the lesson says '${NO_COUNTER}: ${said}' where it should not")
+  endif()
+endif()
 if(NOT bad_v EQUAL 0 OR NOT bad_j EQUAL 0)
   message(FATAL_ERROR "${NAME}: ${bad_v} non-finite visibilities, ${bad_j} non-finite texel Jacobians")
 endif()

@@ -74,6 +74,13 @@ const PsmPlan& PsmPlanner::plan(const CameraFrustum& camera, const glm::dvec4& l
     plan_.light = toPost(plan_.camera.viewProj);
   }
   toPostProjectivePoints(plan_.camera.viewProj, world_, post_);
+  plan_.postZMin = plan_.nearestDepth = std::numeric_limits<double>::max();
+  plan_.postZMax = -std::numeric_limits<double>::max();
+  for (std::size_t i = 0; i < post_.size(); ++i) {
+    plan_.postZMin = std::min(plan_.postZMin, post_[i].z);
+    plan_.postZMax = std::max(plan_.postZMax, post_[i].z);
+    plan_.nearestDepth = std::min(plan_.nearestDepth, -(plan_.camera.view * glm::dvec4(world_[i], 1.0)).z);
+  }
   // ==== the light camera: one map, or the hidden faces of the unit cube (fix 3) ====
   if (s.faces == FaceMode::Always) fitFaces(s);
   else fitSingle(s);

@@ -86,6 +86,10 @@ struct PsmPlan {
   std::array<PsmMap, 6> maps{};
   int mapCount = 0;
   int pointsOutside = 0;  // key points outside a capped single map (unshadowed)
+  // The key points' depth in `camera`'s post-projective space, z in [-1, 1], and the nearest one's
+  // distance from the eye: with a near plane far nearer than the receivers they crowd against
+  // z = 1 (the original's weakness: its map spends texels and depth on the empty rest).
+  double postZMin = 0.0, postZMax = 0.0, nearestDepth = 0.0;
   // The predicted texel densities (directional lights, the switch on or off): the warp's and the
   // uniform map's; fallback: maps[0] is the uniform map (kind Orthographic, in world space).
   TexelDensity warped, uniform;
