@@ -77,7 +77,12 @@ float projectiveTexelSize(int map, vec3 worldPos) {
 // V of light `light` from its map `layer` at the surface point; texelCoords: the point's texel
 // coordinates in that map (vec2(0) outside it). dPdx, dPdy: the point's screen-space steps (dFdx,
 // dFdy of the world position, taken by the caller in uniform control flow) for the receiver plane.
-float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, vec3 dPdx, vec3 dPdy, out vec2 texelCoords) {
+// face: the map is the cube face chosen for the surface point (fix 3). The normal offset can carry
+// the lookup across the face's edge, off its map, where the border says lit: bright seam lines
+// along the cube's edges where four or five faces meet (issue 39). The lookup then stays on the
+// face's edge texel, the depth beside the point.
+float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, vec3 dPdx, vec3 dPdy, bool face,
+                       out vec2 texelCoords) {
   texelCoords = vec2(0.0);
   int map = light * PSM_MAPS + layer;
   vec3 L = uLights[light].kind == LIGHT_DIRECTIONAL ? -uLights[light].direction : normalize(uLights[light].position - worldPos);
@@ -103,6 +108,7 @@ float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, vec3 dPdx, v
   vec4 m = psmMapCoords(uPsmMatrix[map], q);  // (u, v, depth, 1), or vec4(0.0)
   if (m.w == 0.0) return 1.0;                 // outside every light frustum: nothing known, lit
   vec3 p = m.xyz;
+  if (face) p.xy = clamp(p.xy, vec2(0.5 / uPsmSize[light]), vec2(1.0 - 0.5 / uPsmSize[light]));
   texelCoords = p.xy * uPsmSize[light];
   if (p.z > 1.0) return 1.0;
 #ifdef PSM_RECEIVER_PLANE

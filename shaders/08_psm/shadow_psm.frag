@@ -38,9 +38,11 @@ float shadowVisibility(int light, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   vec3 dPdx = dFdx(worldPos), dPdy = dFdy(worldPos);  // the receiver plane's, before any branch
   if (light >= PSM_LIGHTS || uPsmLayers[light] == 0) return 1.0;
   int layer = 0;
+  bool face = false;
 #ifdef PSM_FACES
-  if (uPsmFaces[light]) layer = faceLayer(light, worldPos);
+  face = uPsmFaces[light];
+  if (face) layer = faceLayer(light, worldPos);
   if (layer < 0) return 1.0;
 #endif
-  return projectiveLookup(light, layer, worldPos, N, dPdx, dPdy, texelCoords);
+  return projectiveLookup(light, layer, worldPos, N, dPdx, dPdy, face, texelCoords);
 }

@@ -42,7 +42,7 @@ float shadowVisibility(int light, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   float v = 1.0;
   for (int j = k; j <= k + 1; ++j) {
     vec2 coords;
-    float vj = projectiveLookup(light, j, worldPos, N, dPdx, dPdy, coords);
+    float vj = projectiveLookup(light, j, worldPos, N, dPdx, dPdy, false, coords);
     if (j == k) {
       v = vj;
       texelCoords = coords;
