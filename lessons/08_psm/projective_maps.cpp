@@ -254,6 +254,7 @@ void ProjectiveMapSet::bind(const gl::Program& lit, int firstUnit) const {
   lit.set("uPsmConstantBias", p_.bias == ProjectiveBias::Constant ? p_.constantBias : 0.0f);
   lit.set("uPsmNormalOffset", p_.normalOffset);
   lit.set("uPsmPlaneNormalOffset", p_.planeNormalOffset);
+  lit.set("uPsmOffsetMax", p_.worldMax);
   // The receiver plane filters its own 2x2 taps, each with its own reference depth.
   const bool linear = p_.filter == ProjectiveFilter::Hardware2x2 && !p_.receiverPlane;
   const GLuint sampler = linear ? compareLinear_.id() : compareNearest_.id();

@@ -21,6 +21,7 @@ uniform vec4 uPsmTexelStep[PSM_LIGHTS * PSM_MAPS];
 uniform vec4 uPsmClipW[PSM_LIGHTS * PSM_MAPS];
 uniform float uPsmNormalOffset;
 uniform float uPsmPlaneNormalOffset;  // the same where the receiver plane applies (PSM_RECEIVER_PLANE)
+uniform float uPsmOffsetMax;          // the most the lookup moves, world units (bias.max)
 uniform Light uLights[MAX_LIGHTS];
 
 // A point's place in a map, psmMapCoords: exercise 08.3 (GLSL). The student's with impl=student in
@@ -103,7 +104,7 @@ float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, vec3 dPdx, v
   vec3 q = worldPos;
 #ifdef PSM_NORMAL_OFFSET
   float c = clamp(dot(N, L), 0.0, 1.0);
-  q += N * offset * projectiveTexelSize(map, worldPos) * sqrt(1.0 - c * c);
+  q += N * min(offset * projectiveTexelSize(map, worldPos) * sqrt(1.0 - c * c), uPsmOffsetMax);
 #endif
   vec4 m = psmMapCoords(uPsmMatrix[map], q);  // (u, v, depth, 1), or vec4(0.0)
   if (m.w == 0.0) return 1.0;                 // outside every light frustum: nothing known, lit
