@@ -346,8 +346,9 @@ ModelFile convertScene(Assimp::Importer& importer, const aiScene* in, const std:
   addNode(*in->mRootNode, glm::mat4(1.0f), meshIndex, *in, out.scene, 0);
   const std::string flat = std::to_string(out.flatTriangles) + " triangles of no area (corners in a line or repeated)";
   if (out.scene.objects.empty() || out.scene.bounds().empty())
-    fail(name, "no triangles to draw (" + flat + ", " + std::to_string(out.skippedPoints) + " points and " +
-                   std::to_string(out.skippedLines) + " lines skipped)");
+    fail(name, "no triangles to draw (" + (out.flatTriangles > 0 ? flat + ", " : std::string()) +
+                   std::to_string(out.skippedPoints) + " points and " + std::to_string(out.skippedLines) +
+                   " lines skipped)");
   if (out.flatTriangles > 0) out.notes.push_back("dropped " + flat + ": they draw nothing");
   const Aabb box = out.scene.bounds();
   if (!std::isfinite(glm::length(box.extent())))
