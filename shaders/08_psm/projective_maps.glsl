@@ -109,8 +109,8 @@ float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, vec3 dPdx, v
   vec4 m = psmMapCoords(uPsmMatrix[map], q);  // (u, v, depth, 1), or vec4(0.0)
   if (m.w == 0.0) return 1.0;                 // outside every light frustum: nothing known, lit
   vec3 p = m.xyz;
+  texelCoords = p.xy * uPsmSize[light];  // where the point is: the measurement's Jacobian, unclamped
   if (face) p.xy = clamp(p.xy, vec2(0.5 / uPsmSize[light]), vec2(1.0 - 0.5 / uPsmSize[light]));
-  texelCoords = p.xy * uPsmSize[light];
   if (p.z > 1.0) return 1.0;
 #ifdef PSM_RECEIVER_PLANE
   return planeLookup(light, layer, p, slope);
