@@ -3,6 +3,7 @@
 #include <string>
 
 #include "algorithms/psm/post_shapes.hpp"
+#include "technique/map_pass.hpp"
 #include "technique/scene_cache.hpp"
 
 namespace shadowlab::tech {
@@ -96,14 +97,8 @@ void UniformShadowMaps::renderLight(const ShadowContext& c, int i) {
   if (l.type != Type::Cube) stats_.culledCasters += l.camera.culled;
   for (const shadow::LightCamera& f : l.faces)
     if (l.type == Type::Cube) f.skipped ? ++stats_.skippedFaces : stats_.culledCasters += f.culled;
-  PassKey key = passKey(c, l);
-  if (p_.reuseMaps && key == l.rendered) {
-    stats_.keep(l.drawn);
-    return;
-  }
-  l.rendered = std::move(key);
-  const ShadowStats::Recorder recorder(stats_, l.drawn);
-  auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
+  const MapPass pass(c, stats_, i, p_.reuseMaps, passKey(c, l), l.rendered, l.drawn);
+  if (!pass.draw()) return;  // kept: nothing it depends on changed
   const CasterOptions options{true, p_.cullFront};
   const std::uint64_t side = std::uint64_t(l.map.size);
   if (l.type != Type::Cube) {

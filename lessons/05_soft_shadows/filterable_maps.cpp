@@ -1,5 +1,6 @@
 #include "filterable_maps.hpp"
 
+#include "technique/map_pass.hpp"
 #include "technique/scene_cache.hpp"
 
 namespace shadowlab::tech {
@@ -120,13 +121,8 @@ void FilterableMaps::render(const ShadowContext& c) {
     PassKey key;
     key << c.scene.revision() << size << lights[i].nearZ << lights[i].farZ << p_.exponent << p_.blur
         << lights[i].centre.viewProj() << std::span<const char>(lights[i].centre.casters);
-    if (p_.reuseMaps && key == target.rendered) {
-      stats_.keep(target.drawn);
-      continue;
-    }
-    target.rendered = std::move(key);
-    const ShadowStats::Recorder recorder(stats_, target.drawn);
-    auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
+    const MapPass pass(c, stats_, int(i), p_.reuseMaps, std::move(key), target.rendered, target.drawn);
+    if (!pass.draw()) continue;
     glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
     glViewport(0, 0, size, size);
     const float clearValue = kind_ == Kind::Vsm ? 1.0f : std::exp(p_.exponent);  // t = 1: nothing in front

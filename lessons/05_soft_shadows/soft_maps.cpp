@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "algorithms/soft_shadows.hpp"
+#include "technique/map_pass.hpp"
 #include "technique/map_settings.hpp"
 #include "technique/scene_cache.hpp"
 
@@ -135,12 +136,8 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
     }
   }
   stats.bytes += std::uint64_t(arraySize_) * std::uint64_t(arraySize_) * std::uint64_t(arrayLayers_) * 4;
-  if (p_.reuseMaps && key == rendered_) {
-    stats.keep(drawn_, int(cameras.size()));
-    return;
-  }
-  rendered_ = std::move(key);
-  const ShadowStats::Recorder recorder(stats, drawn_);
+  const MapPass pass(c, stats, -1, p_.reuseMaps, std::move(key), rendered_, drawn_, int(cameras.size()));
+  if (!pass.draw()) return;
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(p_.offsetFactor, p_.offsetUnits);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());

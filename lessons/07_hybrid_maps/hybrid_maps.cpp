@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "technique/map_pass.hpp"
 #include "technique/scene_cache.hpp"
 
 namespace shadowlab::tech {
@@ -116,15 +117,10 @@ void HybridShadowMaps::renderDepth(const ShadowContext& c) {
     PerLight& l = *lights_[i];
     if (!l.on) continue;
     stats_.culledCasters += l.camera.camera.culled;
-    PassKey key = passKey(c, l);
-    l.reused = p_.reuseMaps && key == l.rendered && l.depth.size == p_.mapSize;
-    if (l.reused) {
-      stats_.keep(l.drawn);
-      continue;
-    }
-    l.rendered = std::move(key);
-    const ShadowStats::Recorder recorder(stats_, l.drawn);
-    auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
+    const MapPass pass(c, stats_, int(i), p_.reuseMaps && l.depth.size == p_.mapSize, passKey(c, l), l.rendered,
+                       l.drawn);
+    l.reused = !pass.draw();
+    if (l.reused) continue;
     if (l.depth.size != p_.mapSize || l.depth.format != p_.format)
       l.depth = gl::makeShadowMap(p_.mapSize, p_.format, "light" + std::to_string(i) + " full-resolution map");
     gl::beginShadowPass(l.depth);
