@@ -4,6 +4,7 @@
 
 #include "algorithms/psm/bias.hpp"
 #include "algorithms/psm/receivers.hpp"
+#include "technique/map_pass.hpp"
 #include "technique/map_settings.hpp"
 #include "technique/scene_cache.hpp"
 
@@ -63,7 +64,6 @@ void ProjectiveMapSet::declare(ParamRegistry& r, const std::string& n) {
 
 void ProjectiveMapSet::init() {
   casters_.build();
-  plainCasters_.build();
   layersView_.build();
   compareNearest_ = gl::makeCompareSampler(false, "projective maps: compare nearest");
   compareLinear_ = gl::makeCompareSampler(true, "projective maps: compare linear (2x2 PCF)");
@@ -134,14 +134,9 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
   if (l.used == 0) return;
   ensureArray(l, light, side, l.used);
   stats.bytes += std::uint64_t(l.side) * std::uint64_t(l.side) * std::uint64_t(l.layers) * depthBytes(l.format);
-  PassKey key = passKey(c, l, maps.first(std::size_t(l.used)), side, keep, worldLight);
-  if (p_.reuseMaps && key == l.rendered) {
-    stats.keep(l.drawn);
-    return;
-  }
-  l.rendered = std::move(key);
-  const ShadowStats::Recorder recorder(stats, l.drawn);
-  auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(light));
+  const MapPass pass(c, stats, light, p_.reuseMaps,
+                     passKey(c, l, maps.first(std::size_t(l.used)), side, keep, worldLight), l.rendered, l.drawn);
+  if (!pass.draw()) return;  // kept: nothing it depends on changed
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   // Casters nearer than the near plane (or, for the inverse projection, far behind the camera at
@@ -149,7 +144,7 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
   glEnable(GL_DEPTH_CLAMP);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(p_.slopeOffset, 0.0f);
-  const bool biasOnCpu = student.worldBias && p_.bias == ProjectiveBias::WorldTexel;
+  const bool biasOnCpu = student.worldBias && p_.bias == ProjectiveBias::WorldTexel;  // 09.4, lesson 09
   for (int k = 0; k < l.used; ++k) {
     glBindFramebuffer(GL_FRAMEBUFFER, l.fbo.id());
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, l.array.id(), 0, k);
@@ -163,7 +158,7 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
     l.clipW[std::size_t(k)] = glm::vec4(step.r);
     const std::span<const char> drawn = maps[std::size_t(k)].keep.empty() ? keep : maps[std::size_t(k)].keep;
     if (biasOnCpu) {
-      stats.triangles += drawStudentBiased(c, m, side, drawn, worldLight);
+      stats.triangles += student.worldBias({c, m, side, drawn, worldLight, p_.worldA, p_.worldB, kNoCulling});
     } else {
       setBiasUniforms(m, side, worldLight);
       stats.triangles += casters_.draw(c.scene, l.matrices[std::size_t(k)], drawn, kNoCulling);
@@ -186,51 +181,6 @@ PassKey ProjectiveMapSet::passKey(const ShadowContext& c, const PerLight& l, std
       << p_.slopeOffset << bool(student.worldBias) << worldLight << maps.size() << keep;
   for (const ProjectiveMapView& m : maps) key << m.worldToClip << m.keep;
   return key;
-}
-
-// impl=student: the student's texelSizeBias moves every caster vertex on the CPU (the paper's per
-// vertex bias, written as a C++ function), uploaded as world positions beside the mesh's own uvs
-// and indices; the plain depth shader draws them.
-std::size_t ProjectiveMapSet::drawStudentBiased(const ShadowContext& c, const glm::dmat4& worldToClip, int side,
-                                                std::span<const char> keep, const glm::dvec4& worldLight) {
-  const Scene& scene = c.scene.scene();
-  if (!studentVertices_) studentVertices_ = gl::makeBuffer(GL_ARRAY_BUFFER, "projective maps: student-biased vertices");
-  studentVaos_.resize(scene.objects.size());
-  studentScratch_.clear();
-  std::vector<std::size_t> first(scene.objects.size(), 0);
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    const SceneObject& o = scene.objects[i];
-    if (!o.castsShadow || (!keep.empty() && !keep[i])) continue;
-    first[i] = studentScratch_.size();
-    for (const glm::vec3& v : scene.meshes[o.mesh].positions) {
-      const glm::dvec3 p(o.model * glm::vec4(v, 1.0f));
-      const glm::dvec3 biased =
-          student.worldBias(worldToClip, p, psm::directionFromLight(worldLight, p), p_.worldA, p_.worldB, double(side));
-      studentScratch_.push_back(glm::vec3(biased));
-    }
-  }
-  glBindBuffer(GL_ARRAY_BUFFER, studentVertices_.id());
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(studentScratch_.size() * sizeof(glm::vec3)), studentScratch_.data(),
-               GL_STREAM_DRAW);
-  CasterOptions options = kNoCulling;
-  options.worldVertexArray = [&](std::size_t i) -> GLuint {
-    const gl::GpuMesh& mesh = c.scene.gpu().meshes[scene.objects[i].mesh];
-    if (!studentVaos_[i]) studentVaos_[i] = gl::makeVertexArray("student-biased object " + std::to_string(i));
-    glBindVertexArray(studentVaos_[i].id());
-    glBindBuffer(GL_ARRAY_BUFFER, studentVertices_.id());
-    glEnableVertexAttribArray(gl::kPosition);
-    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3),
-                          reinterpret_cast<void*>(first[i] * sizeof(glm::vec3)));
-    glBindBuffer(GL_ARRAY_BUFFER, mesh.vertices.id());  // the mesh's interleaved uvs (gl/mesh_gpu.cpp)
-    glEnableVertexAttribArray(gl::kUv);
-    glVertexAttribPointer(gl::kUv, 2, GL_FLOAT, GL_FALSE, 8 * sizeof(float),
-                          reinterpret_cast<void*>(6 * sizeof(float)));
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.id());
-    return studentVaos_[i].id();
-  };
-  const std::size_t triangles = plainCasters_.draw(c.scene, glm::mat4(worldToClip), keep, options);
-  glBindVertexArray(0);
-  return triangles;
 }
 
 bool ProjectiveMapSet::anyFaces() const {

@@ -106,13 +106,23 @@ class ProjectiveMapSet {
   bool anyFaces() const;
   // The lit program's variant for these maps: PSM_FACES (some light has face maps), PSM_NORMAL_OFFSET.
   std::vector<std::string> shaderDefines() const;
-  // A student's world-space bias (ex09.4), evaluated per caster vertex on the CPU.
-  using WorldBias =
-      std::function<glm::dvec3(const glm::dmat4&, const glm::dvec3&, const glm::dvec3&, double, double, double)>;
+  // One map's casters drawn moved by a student's world-space bias (exercise 09.4, evaluated per
+  // caster vertex on the CPU: lesson 09's CpuBiasPass), into the map's bound framebuffer. Returns
+  // the triangles drawn.
+  struct BiasedDraw {
+    const ShadowContext& c;
+    const glm::dmat4& worldToClip;
+    int side;                      // the map's texels per side
+    std::span<const char> keep;    // the casters to draw (empty: every one)
+    const glm::dvec4& worldLight;  // (position, 1) or (-direction, 0)
+    double a, b;                   // bias.a, bias.b
+    const CasterOptions& options;  // both faces, alpha-tested, as the reference's pass
+  };
+  using WorldBias = std::function<std::size_t(const BiasedDraw&)>;
   // The steps of lessons 08 and 09 that the maps run (impl=student, set by the PSM technique);
   // empty or false: the reference (the bias in the depth pass's vertex shader).
   struct Student {
-    WorldBias worldBias;      // 09.4
+    WorldBias worldBias;      // 09.4: lesson 09 draws the casters its texelSizeBias moved
     bool glslLookup = false;  // 08.3, psmMapCoords: shaderDefines() add SHADOWLAB_STUDENT_PSM_LOOKUP
     bool glslFaces = false;   // 09.6, cubeFaceLayer: shaderDefines() add SHADOWLAB_STUDENT_PSM_FACES
   };
@@ -137,20 +147,14 @@ class ProjectiveMapSet {
                   std::span<const char> keep, const glm::dvec4& worldLight) const;
   void ensureArray(PerLight& l, int light, int side, int layers);
   void setBiasUniforms(const glm::dmat4& worldToClip, int side, const glm::dvec4& worldLight);
-  std::size_t drawStudentBiased(const ShadowContext& c, const glm::dmat4& worldToClip, int side,
-                                std::span<const char> keep, const glm::dvec4& worldLight);
 
   ProjectiveMapParams p_;
   std::array<PerLight, kPsmLights> lights_;
   CasterPass casters_{"projective maps: depth pass", "08_psm/depth_psm.vert"};
-  CasterPass plainCasters_{"projective maps: depth pass (CPU-biased vertices)"};
   gl::Sampler compareNearest_, compareLinear_, raw_;
   gl::Texture dummy_;
   gl::Program layersView_{"projective maps: layers", {"common/fullscreen.vert", "08_psm/depth_layers.frag"}};
   gl::VertexArray emptyVao_;
-  gl::Buffer studentVertices_;
-  std::vector<glm::vec3> studentScratch_;
-  std::vector<gl::VertexArray> studentVaos_;
 };
 
 }  // namespace shadowlab::tech

@@ -76,7 +76,7 @@ class PerspectiveShadowMaps : public ShadowTechnique, public PostProjectiveSubje
     std::function<psm::PostProjectiveLight(const glm::dmat4&, const glm::dvec4&)> toPostProjective;  // 08.1
     std::function<double(const psm::CameraFrustum&, std::span<const Aabb>)> virtualShift;            // 08.2
     psm::PsmSteps fixes;                    // 09.1 the inverse projection, 09.2 the smallest cone, 09.3 the face test
-    ProjectiveMapSet::WorldBias worldBias;  // 09.4, per caster vertex on the CPU
+    ProjectiveMapSet::WorldBias worldBias;  // 09.4: the casters moved per vertex on the CPU (lesson 09)
     bool glslLookup = false;                // 08.3: the lookup in the map (shaders/08_psm/exercises.glsl)
     bool glslFaces = false;                 // 09.6: the face map of a point (shaders/09_psm_fixes/exercises.glsl)
   };

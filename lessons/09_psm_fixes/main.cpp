@@ -2,7 +2,8 @@
 // and Feeding" (GPU Gems 1 ch. 14; the same paper in Russian from IAE SB RAS), each a switch of
 // lesson 08's PSM technique (lessons/08_psm/psm.cpp; its maps, one per cube face with fix 3, and
 // their depth pass with fix 4's bias in lessons/08_psm/projective_maps.cpp and
-// shaders/08_psm/depth_psm.vert; the lookup in shaders/08_psm/shadow_psm.frag), and LiSPSM
+// shaders/08_psm/depth_psm.vert, or with impl=student your bias moving the vertices on the CPU in
+// cpu_bias_pass.cpp, here; the lookup in shaders/08_psm/shadow_psm.frag), and LiSPSM
 // (lispsm.cpp, here) and the uniform map beside it at equal texels:
 //   fix.inverse  §3    a light behind the camera gets the inverse projection (Zn = -a, Zf = +a):
 //                      a light ray is ordered through infinity, no virtual camera slides back
@@ -28,6 +29,7 @@
 #include "app/lesson.hpp"
 #include "technique/shadow_lesson.hpp"
 #include "core/light_rig.hpp"
+#include "cpu_bias_pass.hpp"
 #include "exercises.hpp"
 #include "lispsm.hpp"
 #include "technique/post_projective_view.hpp"
@@ -132,6 +134,7 @@ class PsmFixesLesson : public tech::ShadowLesson {
     lispsm_.init();
     uniform_.init();
     postView_.init();
+    cpuBias_.init();
   }
 
   void update(const FrameInfo&) override {
@@ -147,7 +150,7 @@ class PsmFixesLesson : public tech::ShadowLesson {
     tech::LightSpacePsm::Student lispsm;
     if (p_.impl == Impl::Student) {
       psm.fixes = {studentCone, ex09::inverseProjection, studentFaceVisible};
-      psm.worldBias = ex09::texelSizeBias;
+      psm.worldBias = cpuBias_.with(ex09::texelSizeBias);  // your bias per vertex, drawn by cpu_bias_pass
       psm.glslFaces = true;
       lispsm.optimalN = ex09::lispsmOptimalN;
     }
@@ -167,7 +170,8 @@ class PsmFixesLesson : public tech::ShadowLesson {
       //   faces the light cannot see (psm/cube_faces); the whole plan: psm/psm_plan
       psm_.planLights(c);
       // ==== 2. shadow passes: one map, or one per hidden face; casters moved by the world bias =====
-      //   fix 4, a + b L_texel per caster vertex (psm/bias, shaders/08_psm/depth_psm.vert)
+      //   fix 4, a + b L_texel per caster vertex (psm/bias, shaders/08_psm/depth_psm.vert; with
+      //   impl=student your texelSizeBias on the CPU: cpu_bias_pass.cpp, here)
       psm_.renderDepth(c);
     });
 
@@ -196,6 +200,7 @@ class PsmFixesLesson : public tech::ShadowLesson {
   tech::LightSpacePsm lispsm_;
   tech::UniformShadowMaps uniform_;
   tech::PostProjectiveView postView_;
+  tech::CpuBiasPass cpuBias_;  // fix 4 on the CPU: the depth pass of your texelSizeBias (impl=student)
 };
 
 int main(int argc, char** argv) { return runLesson<PsmFixesLesson>(argc, argv); }
