@@ -6,7 +6,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/image.hpp"
 #include "core/mesh_gen.hpp"
+#include "core/paths.hpp"
 
 namespace shadowlab {
 
@@ -344,6 +346,22 @@ Scene makeScene(const std::string& name, std::uint64_t seed, std::size_t targetT
   }
   scene.name = name;
   return scene;
+}
+
+void makePlain(Scene& scene) {
+  for (Material& m : scene.materials) {
+    if (m.texture.empty() || m.alphaCutoff > 0.0f) continue;
+    const Image8 image = loadImage(texturePath(m.texture), 3);
+    glm::dvec3 sum(0.0);
+    for (std::size_t i = 0; i + 2 < image.data.size(); i += 3)
+      for (int c = 0; c < 3; ++c) {
+        const double v = image.data[i + std::size_t(c)] / 255.0;  // sRGB, as the GPU decodes it
+        sum[c] += v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+      }
+    const double pixels = double(image.data.size() / 3);
+    m.albedo *= glm::vec3(sum / std::max(pixels, 1.0));
+    m.texture.clear();
+  }
 }
 
 }  // namespace shadowlab

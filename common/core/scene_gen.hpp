@@ -28,5 +28,10 @@ inline constexpr std::size_t kDefaultSceneTriangles = 100'000;
 Scene makeScene(const std::string& name, std::uint64_t seed = 1, std::size_t targetTriangles = kDefaultSceneTriangles);
 // The names makeScene accepts, in the order lessons list them.
 std::vector<std::string> sceneNames();
+// Plain surfaces (scene.plain): every opaque material loses its texture and takes the texture's
+// mean colour (averaged in linear light) times its own albedo, so bricks and checkerboards no
+// longer compete with the shadows on a projector. Alpha-tested materials (leaf cards, fences) keep
+// theirs: their holes are the shape. Throws std::runtime_error naming a texture that cannot load.
+void makePlain(Scene& scene);
 
 }  // namespace shadowlab

@@ -22,6 +22,7 @@ namespace shadowlab::tech {
 struct SceneChoice {
   int scene = 0;           // index into SceneCache::choices()
   int triangles = 100000;  // target size (10k to 1M)
+  bool plain = false;      // opaque surfaces without their textures (makePlain): the shadows stand out
 };
 
 class SceneCache {

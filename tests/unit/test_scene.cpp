@@ -234,3 +234,30 @@ TEST_CASE("scene_gen: terrain rocks are closed and sit on the height field") {
   CHECK(rocks >= 3);
   CHECK(scene.materials[terrain.material].texture == "ground.png");
 }
+
+TEST_CASE("scene_gen: plain surfaces keep the cards' textures and take the others' mean colour") {
+  for (const char* name : {"city", "forest", "showcase"}) {
+    CAPTURE(name);
+    const Scene textured = makeScene(name, 1, 10000);
+    Scene plain = textured;
+    makePlain(plain);
+    REQUIRE(plain.materials.size() == textured.materials.size());
+    int changed = 0;
+    for (std::size_t i = 0; i < plain.materials.size(); ++i) {
+      const Material &a = textured.materials[i], &b = plain.materials[i];
+      CAPTURE(a.name);
+      if (a.alphaCutoff > 0.0f || a.texture.empty()) {  // a card's holes are its shape; untextured stays
+        CHECK(b.texture == a.texture);
+        CHECK(b.albedo == a.albedo);
+        continue;
+      }
+      ++changed;
+      CHECK(b.texture.empty());
+      for (int c = 0; c < 3; ++c) {  // the mean of a texture in linear light: darker than white, not black
+        CHECK(b.albedo[c] < a.albedo[c]);
+        CHECK(b.albedo[c] > 0.02f * a.albedo[c]);
+      }
+    }
+    CHECK(changed > 0);  // every scene has a checker or brick surface
+  }
+}
