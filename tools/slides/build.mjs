@@ -106,6 +106,40 @@ const HEAD = (title) => `<!doctype html>
 <link rel="stylesheet" href="shadowlab.css">
 </head>`;
 
+// Figures as large as their slide allows, for the back of the room: once a slide is laid out (its
+// images and fonts loaded), every figure of it is scaled by one common factor, found by bisection,
+// until the slide's content reaches its bottom (8 px spare) or each figure its column's width (a
+// figure too large for its slide shrinks the same way). size=WxH sets the figures' proportions
+// and their size where scripts do not run. Runs for the slide shown, and for every slide when
+// printing (?print-pdf: after reveal.js lays out the pages; window.__shadowlabFitted says when it is
+// done, and the PDF waits for it). The deck checker's overflow test visits each slide after it ran.
+const FIT_FIGURES = `function fitFigures(s) {
+  const figs = s ? [...s.querySelectorAll('.figrow figure')].map((f) => f.querySelector('.zoom') || f.querySelector('img')) : [];
+  if (!figs.length || s.dataset.fitted) return Promise.resolve();
+  const imgs = [...s.querySelectorAll('.figrow img')];
+  return Promise.all([document.fonts.ready, ...imgs.map((i) => (i.complete ? null
+    : new Promise((r) => { i.addEventListener('load', r, { once: true }); i.addEventListener('error', r, { once: true }); })))])
+    .then(() => {
+      if (s.dataset.fitted || !s.offsetHeight) return;
+      const limit = Reveal.getConfig().height - 8;
+      const bottom = () => Math.max(...[...s.children].filter((c) => !c.matches('aside'))
+        .map((c) => c.offsetTop + c.offsetHeight));
+      const base = figs.map((e) => e.offsetWidth);
+      const set = (k) => figs.forEach((e, i) => { e.style.width = (base[i] * k).toFixed(1) + 'px'; });
+      let lo = 0.25, hi = 12;
+      for (let it = 0; it < 14; ++it) { const k = (lo + hi) / 2; set(k); if (bottom() <= limit) lo = k; else hi = k; }
+      set(lo);
+      s.dataset.fitted = '1';
+    });
+}
+if (/print-pdf/.test(window.location.search)) {
+  document.addEventListener('pdf-ready', () => Promise.all(Reveal.getSlides().map(fitFigures))
+    .then(() => { window.__shadowlabFitted = true; }));
+} else {
+  Reveal.on('ready', () => fitFigures(Reveal.getCurrentSlide()));
+  Reveal.on('slidechanged', (e) => fitFigures(e.currentSlide));
+}`;
+
 function deckHtml(deck, sections) {
   return `${HEAD(`${deck.meta.title} - shadowlab`)}
 <body>
@@ -120,6 +154,7 @@ Reveal.initialize({
   slideNumber: 'c/t', transition: 'none', pdfMaxPagesPerSlide: 1, pdfSeparateFragments: false,
   plugins: [RevealNotes]
 });
+${FIT_FIGURES}
 </script>
 </body>
 </html>
@@ -244,7 +279,8 @@ async function buildPdfs(decks, opts) {
       // one-page PDF on a loaded CI machine. Wait for the event itself.
       await page.addInitScript(() => document.addEventListener('pdf-ready', () => { window.__shadowlabPdfReady = true; }));
       await page.goto(`${pathToFileURL(d.htmlFile).href}?print-pdf`, { waitUntil: 'load' });
-      await page.waitForFunction(() => window.__shadowlabPdfReady === true, null, { timeout: 60_000 });
+      await page.waitForFunction(() => window.__shadowlabPdfReady === true && window.__shadowlabFitted === true, null,
+        { timeout: 60_000 });
       await page.evaluate(() => document.fonts.ready);
       if (errors.length) throw new Error(`${d.file}: page error while printing: ${errors[0]}`);
       d.pdfFile = path.join(opts.out, `${d.name}.pdf`);

@@ -110,6 +110,16 @@ const tall = deck('overflow', `# Too long\n\n${Array.from({ length: 30 }, (_, i)
 const tallCheck = node(CHECK, [tall.html, '--expect-slides', '1']);
 expect('check-page fails on a slide that overflows', tallCheck.code === 1 && /slide 1 overflows/.test(tallCheck.output), tallCheck.output);
 
+// 9b. Figures left at their size=WxH with room below them (the deck's fit switched off): reported.
+const small = deck('small_figure', good);
+if (fs.existsSync(small.html)) {
+  fs.writeFileSync(small.html, fs.readFileSync(small.html, 'utf8')
+    .replace('fitFigures(Reveal.getCurrentSlide())', '0').replace('fitFigures(e.currentSlide)', '0'));
+}
+const smallCheck = node(CHECK, [small.html, '--expect-slides', '2']);
+expect('check-page fails on figures smaller than their slide allows',
+  smallCheck.code === 1 && /slide 2: its figures could be larger/.test(smallCheck.output), smallCheck.output);
+
 // 10. Generated blocks: {{passes}} and {{exercises}} come from the lesson (its main.cpp banners and
 // `--info`); an unknown block is an error naming it and the valid ones.
 const generated = deck('generated', `# Generated\n\n{{passes}}\n\n---\n## Exercises\n\n{{exercises}}\n`);

@@ -5,7 +5,8 @@
 //   - any <img> that did not load (naturalWidth 0),
 //   - any KaTeX error node (.katex-error: a formula that did not parse),
 //   - in a reveal.js deck: a slide whose content overflows the slide (cut off in the room and in the
-//     PDF), a formula or code block wider than its slide,
+//     PDF), a formula or code block wider than its slide, figures left smaller than their slide
+//     allows (room below them and a figure narrower than its column),
 //   - with --expect-slides N: a reveal.js deck whose slide count is not N.
 // Usage: node tools/web/check-page.mjs PAGE.html|URL [--expect-slides N] [--timeout-ms MS]
 // Exit 0 and one "ok" line when clean; exit 1 with one line per problem, each naming the page.
@@ -118,6 +119,20 @@ export async function checkPage(browser, target, { expectSlides = null, timeoutM
           const { h, v } = R.getIndices(s);
           R.slide(h, v);
           await new Promise((r) => requestAnimationFrame(() => r()));
+          // A deck's figures fill their slide (tools/slides/build.mjs, fitFigures): wait for the
+          // fit, then a slide with room below and a figure narrower than its column is a problem.
+          const figs = [...s.querySelectorAll('.figrow figure')];
+          for (let t = 0; figs.length && !s.dataset.fitted && t < 80; t++) await new Promise((r) => setTimeout(r, 25));
+          if (figs.length) {
+            const bottom = Math.max(...[...s.children].filter((c) => !c.matches('aside')).map((c) => c.offsetTop + c.offsetHeight));
+            const narrow = figs.filter((f) => {  // the column: the row's width shared by its figures (18px gaps)
+              const row = f.parentElement, count = row.querySelectorAll(':scope > figure').length;
+              return (f.querySelector('.zoom') || f.querySelector('img')).offsetWidth < (row.clientWidth - 18 * (count - 1)) / count - 4;
+            });
+            if (height - bottom > 40 && narrow.length) {
+              out.push(`slide ${n + 1}: its figures could be larger (${height - bottom}px free below, ${narrow.length} figure(s) narrower than their column)`);
+            }
+          }
           const tall = s.scrollHeight - height, wide = s.scrollWidth - width;
           if (tall > 2) out.push(`slide ${n + 1} overflows the ${height}px slide height by ${tall}px (content is cut off)`);
           if (wide > 2) out.push(`slide ${n + 1} overflows the ${width}px slide width by ${wide}px`);
