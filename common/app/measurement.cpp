@@ -360,8 +360,8 @@ std::vector<std::pair<std::string, std::string>> Measurement::summary() const {
     std::snprintf(buf, sizeof buf, "RMSE %.4f, max %.3f (%zu px)", result_.soft_.rmse, result_.soft_.maxAbs,
                   result_.soft_.pixels);
     out.push_back({"soft error", buf});
-    std::snprintf(buf, sizeof buf, "over %.2f%%, under %.2f%% of px", result_.soft_.umbraOverPct,
-                  result_.soft_.umbraUnderPct);
+    std::snprintf(buf, sizeof buf, "over %.2f%%, under %.2f%% of px; bleeding %.2f%% of it", result_.soft_.umbraOverPct,
+                  result_.soft_.umbraUnderPct, result_.soft_.bleedPct);
     out.push_back({"umbra", buf});
     if (result_.soft_.noiseFloor >= 0) {
       std::snprintf(buf, sizeof buf, "RMSE %.4f between two seeds", result_.soft_.noiseFloor);

@@ -76,7 +76,8 @@ nlohmann::ordered_json figures(const MeasureResult& r) {
                  {"max_abs", s.maxAbs},
                  {"umbra_pixels", s.umbraPixels},
                  {"umbra_over_pct", s.umbraOverPct},
-                 {"umbra_under_pct", s.umbraUnderPct}};
+                 {"umbra_under_pct", s.umbraUnderPct},
+                 {"bleed_pct", s.bleedPct}};
     if (s.noiseFloor >= 0) j["soft"]["reference_noise_rmse"] = s.noiseFloor;
   } else {
     const auto& h = r.hard;

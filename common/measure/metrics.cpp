@@ -214,10 +214,12 @@ SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference, f
     e.umbraPixels += refUmbra;
     e.umbraOver += techUmbra && !refUmbra;
     e.umbraUnder += refUmbra && !techUmbra;
+    e.bleed += refUmbra && d > double(kBleedLevel);
   }
   e.rmse = e.pixels ? std::sqrt(sum / double(e.pixels)) : 0.0;
   e.umbraOverPct = e.pixels ? 100.0 * double(e.umbraOver) / double(e.pixels) : 0.0;
   e.umbraUnderPct = e.pixels ? 100.0 * double(e.umbraUnder) / double(e.pixels) : 0.0;
+  e.bleedPct = e.umbraPixels ? 100.0 * double(e.bleed) / double(e.umbraPixels) : 0.0;
   return e;
 }
 

@@ -63,6 +63,9 @@ ImageF keepWhere(const ImageF& image, const std::vector<std::uint8_t>& mask);
 // shadow kept as the umbra), and under-estimates it where the reference is black and it is not
 // (a blurred umbra); both in % of the compared pixels.
 inline constexpr float kUmbraLevel = 0.02f;
+// Light bleeding: a pixel of the reference's umbra that the technique brightens by more than this
+// (VSM's light through overlapping casters; issue 41's table), counted in % of the umbra.
+inline constexpr float kBleedLevel = 0.1f;
 struct SoftShadowErrors {
   std::size_t pixels = 0;  // facing pixels compared
   double rmse = 0;         // visibility units, [0,1]
@@ -70,6 +73,8 @@ struct SoftShadowErrors {
   std::size_t umbraPixels = 0;  // the reference's umbra
   std::size_t umbraOver = 0, umbraUnder = 0;
   double umbraOverPct = 0, umbraUnderPct = 0;
+  std::size_t bleed = 0;  // umbra pixels brightened by more than kBleedLevel
+  double bleedPct = 0;    // ... in % of the reference's umbra
   // The reference's own noise: the RMSE between two references traced with different sample seeds
   // (measure.noise_floor); -1 when not measured. compareSoft leaves it alone.
   double noiseFloor = -1;

@@ -118,6 +118,7 @@ std::vector<Column> columns(const std::vector<ReportRow>& rows) {
   };
   soft("umbra_over_pct", [=](const SoftShadowErrors& e) { return num(e.umbraOverPct); });
   soft("umbra_under_pct", [=](const SoftShadowErrors& e) { return num(e.umbraUnderPct); });
+  soft("bleed_pct", [=](const SoftShadowErrors& e) { return num(e.bleedPct); });
   soft("reference_noise_rmse", [=](const SoftShadowErrors& e) { return e.noiseFloor < 0 ? "" : num(e.noiseFloor); });
   auto alias = [&](const char* name, std::function<double(const AliasingStats&)> f) {
     c.push_back({name, true, [=](const ReportRow& r) { return r.hasAliasing ? num(f(r.aliasing)) : std::string(); }});
@@ -392,6 +393,7 @@ std::string toJson(const std::vector<ReportRow>& rows, const std::string& title)
                    {"maxAbs", finite(r.soft.maxAbs)},
                    {"umbraOverPct", finite(r.soft.umbraOverPct)},
                    {"umbraUnderPct", finite(r.soft.umbraUnderPct)},
+                   {"bleedPct", finite(r.soft.bleedPct)},
                    {"referenceNoiseRmse", finite(r.soft.noiseFloor)}};
     if (r.hasAliasing)
       j["aliasing"] = {{"pixels", r.aliasing.pixels},   {"mean", finite(r.aliasing.mean)},

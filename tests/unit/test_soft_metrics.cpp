@@ -40,3 +40,15 @@ TEST_CASE("measure.metrics: the umbra a soft technique over- and under-estimates
   CHECK(same.umbraUnder == 0);
   CHECK(same.rmse == 0.0);
 }
+
+TEST_CASE("measure.metrics: light bleeding is the reference's umbra brightened by more than 0.1") {
+  // Umbra pixels: one bled into (0.3), one just under the level (0.09), one dark; a penumbra
+  // pixel brightened by 0.4 is not bleeding (the reference sees part of the light there).
+  const ImageF ref = row({0.0f, 0.0f, 0.0f, 0.5f, 1.0f});
+  const ImageF tech = row({0.3f, 0.09f, 0.0f, 0.9f, 1.0f});
+  const SoftShadowErrors e = compareSoft(tech, ref);
+  CHECK(e.umbraPixels == 3);
+  CHECK(e.bleed == 1);
+  CHECK(e.bleedPct == doctest::Approx(100.0 / 3.0));
+  CHECK(compareSoft(ref, ref).bleed == 0);
+}

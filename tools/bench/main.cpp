@@ -172,6 +172,7 @@ void readFigures(const nlohmann::json& j, measure::ReportRow& row) {
     row.soft.maxAbs = j["soft"].at("max_abs");
     row.soft.umbraOverPct = j["soft"].value("umbra_over_pct", 0.0);
     row.soft.umbraUnderPct = j["soft"].value("umbra_under_pct", 0.0);
+    row.soft.bleedPct = j["soft"].value("bleed_pct", 0.0);
     row.soft.noiseFloor = j["soft"].value("reference_noise_rmse", -1.0);
   }
   if (j.contains("aliasing")) {
