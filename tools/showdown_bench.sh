@@ -114,7 +114,9 @@ if ((!quick)); then
     --config "pcss 32+32: technique=pcss pcss.search_taps=32 pcss.filter_taps=32 $soft_sets"
     --config "parker 32: technique=parker $soft_sets" --config "haines 32: technique=haines $soft_sets"
     --config "mesh 48: technique=mesh mesh.nodes=48 $soft_sets"
-    --config "vsm blur 2: technique=vsm $soft_sets" --config "esm blur 2: technique=esm $soft_sets")
+    --config "vsm blur 2: technique=vsm $soft_sets" --config "esm blur 2: technique=esm $soft_sets"
+    --config "evsm2 blur 2: technique=evsm2 $soft_sets" --config "evsm4 blur 2: technique=evsm4 $soft_sets"
+    --config "msm 16 blur 2: technique=msm $soft_sets")
 fi
 run soft showcase soft_showcase.path "$((quick ? 2 : 3))" "${soft[@]}"
 python3 "$root/tools/showdown_summary.py" "$out" "$size" "$repeats"

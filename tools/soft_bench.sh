@@ -73,6 +73,12 @@ configs=(
   "vsm blur 4:technique=vsm vsm.blur=4 vsm.map_size=1024"
   "esm blur 2:technique=esm esm.blur=2 esm.map_size=1024"
   "esm blur 4:technique=esm esm.blur=4 esm.map_size=1024"
+  "evsm2 blur 2:technique=evsm2 evsm2.blur=2 evsm2.map_size=1024"
+  "evsm4 blur 2:technique=evsm4 evsm4.blur=2 evsm4.map_size=1024"
+  "evsm4 blur 4:technique=evsm4 evsm4.blur=4 evsm4.map_size=1024"
+  "msm 16 blur 2:technique=msm msm.blur=2 msm.map_size=1024"
+  "msm 16 blur 4:technique=msm msm.blur=4 msm.map_size=1024"
+  "msm 32 blur 2:technique=msm msm.blur=2 msm.map_size=1024 msm.format=32f msm.bias=3e-7"
 )
 
 if [[ ${SWEEP:-1} != 0 ]]; then
@@ -104,7 +110,9 @@ parker,technique=parker
 haines,technique=haines
 mesh,technique=mesh
 vsm,technique=vsm
-esm,technique=esm"
+esm,technique=esm
+evsm4,technique=evsm4
+msm,technique=msm"
 for round in $(seq "$rounds"); do
   while IFS=, read -r name sets; do
     set_args=()

@@ -1,5 +1,6 @@
 #include "filterable_maps.hpp"
 
+#include "algorithms/moment_maps.hpp"
 #include "technique/map_pass.hpp"
 #include "technique/scene_cache.hpp"
 
@@ -30,20 +31,40 @@ gl::Framebuffer colourFbo(const gl::Texture& colour, const gl::Renderbuffer* dep
 }
 }  // namespace
 
+namespace {
+const char* kindName(FilterableMaps::Kind k) {
+  constexpr const char* names[] = {"vsm", "esm", "evsm2", "evsm4", "msm"};
+  return names[int(k)];
+}
+}  // namespace
+
 FilterableMaps::FilterableMaps(Kind kind, FilterableParams defaults)
     : kind_(kind),
       p_(defaults),
-      maps_(kind == Kind::Vsm ? "vsm" : "esm", defaults.maps),
-      casters_(kind == Kind::Vsm ? "vsm: moments pass" : "esm: exponential pass", "common/depth.vert", "uLightViewProj",
+      maps_(kindName(kind), defaults.maps),
+      casters_(std::string(kindName(kind)) + ": moments pass", "common/depth.vert", "uLightViewProj",
                "05_soft_shadows/depth_moments.frag") {}
+
+std::string FilterableMaps::name() const { return kindName(kind_); }
 
 void FilterableMaps::declare(ParamRegistry& r, const std::string& n) {
   r.add(n + "blur", &p_.blur, 0, 16, "Gaussian blur radius in texels: the one penumbra width it gives");
-  if (kind_ == Kind::Vsm) {
-    r.add(n + "min_variance", &p_.minVariance, 0, 0.001f, "variance floor: depth precision");
-    r.add(n + "bleed", &p_.bleed, 0, 0.95f, "light-bleeding reduction: cut this share of Chebyshev's tail");
-  } else {
+  if (kind_ == Kind::Esm) {
     r.add(n + "exponent", &p_.exponent, 1, 88, "c of exp(c t): sharper and more overflow-prone as it grows");
+  } else {
+    if (kind_ != Kind::Msm) r.add(n + "min_variance", &p_.minVariance, 0, 0.001f, "variance floor: depth precision");
+    r.add(n + "bleed", &p_.bleed, 0, 0.95f, "light-bleeding reduction: cut this share of the bound's tail");
+  }
+  if (kind_ == Kind::Evsm2 || kind_ == Kind::Evsm4)
+    r.add(n + "positive", &p_.evsmPositive, 1, float(soft::kEvsmMaxExponent),
+          "c+ of exp(c+ t'): the far receivers' bound tightens as it grows (42: a 32-bit float's limit)");
+  if (kind_ == Kind::Evsm4)
+    r.add(n + "negative", &p_.evsmNegative, 1, float(soft::kEvsmMaxExponent),
+          "c- of -exp(-c- t'): the second warp, for receivers between casters");
+  if (kind_ == Kind::Msm) {
+    r.addChoice(n + "format", &p_.msmFormat, {"32f", "16"},
+                "32-bit float moments, or the paper's optimised 16-bit quantisation (8 bytes a texel, as VSM)");
+    r.add(n + "bias", &p_.momentBias, 0, 0.01f, "moment bias alpha: the moments pulled toward 0.5 (3e-5 for 16 bits)");
   }
   r.add(n + "reuse_maps", &p_.reuseMaps, "keep the moments while nothing they depend on changes (a still light)");
   maps_.declare(r, n, false);  // the moments are drawn by its own pass
@@ -62,12 +83,49 @@ void FilterableMaps::init() {
 }
 
 std::vector<std::string> FilterableMaps::shaderDefines() const {
-  return kind_ == Kind::Esm ? std::vector<std::string>{"ESM"} : std::vector<std::string>{};
+  switch (kind_) {
+    case Kind::Esm: return {"ESM"};
+    case Kind::Evsm2: return {"EVSM"};
+    case Kind::Evsm4: return {"EVSM", "EVSM_FOUR"};
+    case Kind::Msm: return msm16() ? std::vector<std::string>{"MSM", "MSM16"} : std::vector<std::string>{"MSM"};
+    case Kind::Vsm: break;
+  }
+  return {};
+}
+
+GLenum FilterableMaps::textureFormat() const {
+  switch (kind_) {
+    case Kind::Esm: return GL_R32F;
+    case Kind::Evsm4: return GL_RGBA32F;
+    case Kind::Msm: return msm16() ? GL_RGBA16 : GL_RGBA32F;
+    case Kind::Vsm:
+    case Kind::Evsm2: break;
+  }
+  return GL_RG32F;
+}
+
+int FilterableMaps::bytesPerTexel() const {
+  switch (textureFormat()) {
+    case GL_R32F: return 4;
+    case GL_RGBA32F: return 16;
+    default: return 8;  // RG32F, RGBA16
+  }
+}
+
+glm::vec4 FilterableMaps::farMoments() const {
+  switch (kind_) {
+    case Kind::Esm: return glm::vec4(std::exp(p_.exponent), 0, 0, 0);
+    case Kind::Evsm2:
+    case Kind::Evsm4: return glm::vec4(soft::evsmMoments(1.0, p_.evsmPositive, p_.evsmNegative));
+    case Kind::Msm: return glm::vec4(msm16() ? soft::msmQuantise(soft::msmMoments(1.0)) : soft::msmMoments(1.0));
+    case Kind::Vsm: break;
+  }
+  return glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
 }
 
 void FilterableMaps::ensure(Target& t, int size, const std::string& label) {
-  if (t.fbo && t.size == size) return;
-  const GLenum format = kind_ == Kind::Vsm ? GL_RG32F : GL_R32F;
+  const GLenum format = textureFormat();
+  if (t.fbo && t.size == size && t.format == format) return;
   t.moments = floatTexture(format, size, label + " moments");
   t.scratch = floatTexture(format, size, label + " blur scratch");
   t.depth = gl::makeRenderbuffer(label + " depth");
@@ -77,6 +135,7 @@ void FilterableMaps::ensure(Target& t, int size, const std::string& label) {
   t.fbo = colourFbo(t.moments, &t.depth, label + " fbo");
   t.scratchFbo = colourFbo(t.scratch, nullptr, label + " blur fbo");
   t.size = size;
+  t.format = format;
 }
 
 // Separable: along x into the scratch texture, along y back into the moments.
@@ -116,23 +175,28 @@ void FilterableMaps::render(const ShadowContext& c) {
     Target& target = targets_[i];
     ensure(target, size, name() + " light" + std::to_string(i));
     stats_.culledCasters += lights[i].centre.culled;
-    stats_.bytes += std::uint64_t(size) * std::uint64_t(size) * (kind_ == Kind::Vsm ? 8 : 4) * 2 + 4ull * size * size;
-    // What the moments depend on: the scene, the camera and its casters, the depth range, c, the blur.
+    stats_.bytes += std::uint64_t(size) * std::uint64_t(size) * std::uint64_t(bytesPerTexel()) * 2 + 4ull * size * size;
+    // What the moments depend on: the scene, the camera and its casters, the depth range, the
+    // kind's exponents or format, the blur.
     PassKey key;
-    key << c.scene.revision() << size << lights[i].nearZ << lights[i].farZ << p_.exponent << p_.blur
-        << lights[i].centre.viewProj() << std::span<const char>(lights[i].centre.casters);
+    key << c.scene.revision() << size << lights[i].nearZ << lights[i].farZ << p_.exponent << p_.evsmPositive
+        << p_.evsmNegative << p_.msmFormat << p_.blur << lights[i].centre.viewProj()
+        << std::span<const char>(lights[i].centre.casters);
     const MapPass pass(c, stats_, int(i), p_.reuseMaps, std::move(key), target.rendered, target.drawn);
     if (!pass.draw()) continue;
     glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
     glViewport(0, 0, size, size);
-    const float clearValue = kind_ == Kind::Vsm ? 1.0f : std::exp(p_.exponent);  // t = 1: nothing in front
-    glClearColor(clearValue, clearValue, 0, 1);
+    const glm::vec4 far = farMoments();  // t = 1: nothing in front
+    glClearColor(far.x, far.y, far.z, far.w);
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     casters_.setUniforms([&](const gl::Program& p) {
       p.set("uDepthRange", glm::vec2(lights[i].nearZ, lights[i].farZ));
       p.set("uExponent", p_.exponent);
-      p.set("uEsm", kind_ == Kind::Esm);
+      p.set("uKind", int(kind_));
+      p.set("uEvsm", glm::vec2(std::min(p_.evsmPositive, float(soft::kEvsmMaxExponent)),
+                               std::min(p_.evsmNegative, float(soft::kEvsmMaxExponent))));
+      p.set("uMsm16", msm16());
     });
     stats_.triangles += casters_.draw(c.scene, lights[i].centre.viewProj(), lights[i].centre.casters, {true, false});
     blur(target);
@@ -150,6 +214,9 @@ void FilterableMaps::bindVisibility(const gl::Program& lit, int firstUnit) const
   lit.set("uMinVariance", p_.minVariance);
   lit.set("uBleed", std::min(p_.bleed, 0.95f));
   lit.set("uExponent", p_.exponent);
+  lit.set("uEvsm", glm::vec2(std::min(p_.evsmPositive, float(soft::kEvsmMaxExponent)),
+                             std::min(p_.evsmNegative, float(soft::kEvsmMaxExponent))));
+  lit.set("uMomentBias", p_.momentBias);
   const auto& lights = maps_.lights();
   for (int i = 0; i < kMaxLights; ++i) {
     const int unit = firstUnit + 2 + i;

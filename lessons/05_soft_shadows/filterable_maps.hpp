@@ -1,11 +1,15 @@
 #pragma once
 // Filterable shadow maps (lesson 05), what users of real engines ask about: maps whose texels may
 // be averaged, so one blur per frame (instead of many taps per pixel) gives every shadow the same
-// soft edge, in two kinds (one class, two techniques):
-//   vsm  variance shadow maps (Donnelly and Lauritzen 2006): moments (t, t^2) and Chebyshev's
-//        bound; where casters overlap in the kernel the variance is large and light BLEEDS into
-//        the shadow (uBleed trims it)
-//   esm  exponential shadow maps (Annen et al. 2008): exp(c t) and exp(c (t_occ - t))
+// soft edge, in five kinds (one class, five techniques; their maths in algorithms/moment_maps):
+//   vsm    variance shadow maps (Donnelly and Lauritzen 2006): moments (t, t^2) and Chebyshev's
+//          bound; where casters overlap in the kernel the variance is large and light BLEEDS into
+//          the shadow (uBleed trims it)
+//   esm    exponential shadow maps (Annen et al. 2008): exp(c t) and exp(c (t_occ - t))
+//   evsm2  exponential variance shadow maps (Lauritzen and McCool 2008): VSM of exp(c+ t'),
+//   evsm4  and of -exp(-c- t') too (t' = 2 t - 1): a far receiver's bound much tighter
+//   msm    moment shadow maps (Peters and Klein 2015): (t, t^2, t^3, t^4) and the Hamburger bound,
+//          in 32-bit floats or their optimised 16-bit form (the same 8 bytes a texel as VSM)
 // The light camera is the sphere's centre camera (SoftMaps, without its depth maps); the depth pass
 // is CasterPass with shaders/05_soft_shadows/depth_moments.frag, the blur shaders/05_soft_shadows/blur.frag.
 // GLSL: shaders/05_soft_shadows/shadow_filterable.frag.
@@ -16,12 +20,18 @@
 
 namespace shadowlab::tech {
 
+enum class MomentFormat { Float32, Unorm16 };  // msm.format: 32f, 16
+
 struct FilterableParams {
-  int blur = 2;               // Gaussian radius in texels (sigma = radius / 2): the one penumbra width
-  float minVariance = 2e-6f;  // vsm: variance floor (depth precision)
-  float bleed = 0.2f;         // vsm: light-bleeding reduction, the share of Chebyshev's tail cut away
-  float exponent = 60.0f;     // esm: c (exp(c) must stay finite in 32-bit floats: c <= 88)
-  bool reuseMaps = true;      // keep a light's moments while nothing they depend on changed (PassKey)
+  int blur = 2;                // Gaussian radius in texels (sigma = radius / 2): the one penumbra width
+  float minVariance = 2e-6f;   // vsm: variance floor (depth precision)
+  float bleed = 0.2f;          // vsm: light-bleeding reduction, the share of Chebyshev's tail cut away
+  float exponent = 60.0f;      // esm: c (exp(c) must stay finite in 32-bit floats: c <= 88)
+  float evsmPositive = 40.0f;  // evsm: c+ (its square must stay finite: c+ <= 42, soft::kEvsmMaxExponent)
+  float evsmNegative = 5.0f;   // evsm4: c-
+  MomentFormat msmFormat = MomentFormat::Unorm16;  // msm: the optimised 16-bit form (or floats, twice the memory)
+  float momentBias = 3e-5f;  // msm: alpha, the moments pulled toward 0.5 (the paper's for 16 bits)
+  bool reuseMaps = true;     // keep a light's moments while nothing they depend on changed (PassKey)
   // 1024^2 and a 2-texel blur: on the showcase both blurred less and sampled finer measured closer
   // to the reference than 512^2 and 4 texels (tools/soft_bench.sh), and the contact stays dark.
   SoftMapParams maps{.mapSize = 1024};
@@ -29,9 +39,9 @@ struct FilterableParams {
 
 class FilterableMaps : public ShadowTechnique {
  public:
-  enum class Kind { Vsm, Esm };
+  enum class Kind { Vsm, Esm, Evsm2, Evsm4, Msm };
   explicit FilterableMaps(Kind kind, FilterableParams defaults = {});
-  std::string name() const override { return kind_ == Kind::Vsm ? "vsm" : "esm"; }
+  std::string name() const override;
   void declare(ParamRegistry& r, const std::string& prefix) override;
   void init() override;
   void pushShapes(const ShadowContext& c) const override { maps_.pushShapes(c); }
@@ -49,10 +59,15 @@ class FilterableMaps : public ShadowTechnique {
     gl::Renderbuffer depth;
     gl::Framebuffer fbo, scratchFbo;
     int size = 0;
+    GLenum format = 0;
     PassKey rendered;    // what the moments were last drawn and blurred from
     DrawnFigures drawn;  // what that cost (kept moments' figures)
   };
   void ensure(Target& t, int size, const std::string& label);
+  bool msm16() const { return kind_ == Kind::Msm && p_.msmFormat == MomentFormat::Unorm16; }
+  GLenum textureFormat() const;
+  int bytesPerTexel() const;
+  glm::vec4 farMoments() const;  // what a texel holds where nothing is in front (t = 1)
   void blur(Target& t);
 
   Kind kind_;

@@ -10,6 +10,8 @@
 //   haines  [Haines2001]: plateaus on the ground plane                    (single_sample.cpp)
 //   mesh    the light mesh: visibility baked on a 3D grid, trilinear     (light_mesh.cpp)
 //   vsm esm filterable maps with a blur; VSM's light bleeding            (filterable_maps.cpp)
+//   evsm2 evsm4 msm  exponential variance and moment shadow maps: less bleeding (the same file;
+//           their bounds in common/algorithms/moment_maps)
 // and the theory drawn live (soft_theory.cpp): the predicted inner and outer penumbra edges
 // r = d / (n.L) * R / D of a caster edge the lecturer picks (E), A_frac against (1 + a/R) / 2.
 //
@@ -50,9 +52,9 @@ struct Params {
 };
 
 const char* const kSummary =
-    "A spherical light: many point lights, PCF and PCSS, single-sample soft shadows, the light mesh, VSM and ESM, "
+    "A spherical light: many point lights, PCF and PCSS, single-sample soft shadows, the light mesh, VSM, ESM, EVSM and MSM, "
     "each against the sphere-light reference; the penumbra formula and A_frac drawn live.";
-const char* const kHelp = R"(technique (T): many lights, PCF, PCSS, Parker, Haines, light mesh, VSM, ESM.
+const char* const kHelp = R"(technique (T): many lights, PCF, PCSS, Parker, Haines, light mesh, VSM, ESM, EVSM 2 and 4, MSM.
 light0.radius: the sphere's size (0: hard). many.samples: N maps. pcss.* taps.
 theory.edges (G): the predicted penumbra of the box edge theory.edge (N) (yellow centre, red inner, cyan outer).
 theory.plot (P): the A_frac plot; parker.profile (L): exact or linear (the 7 %; haines.profile too).

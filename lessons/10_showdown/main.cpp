@@ -4,7 +4,7 @@
 //   hard      uniform (lesson 03's fitted maps), psm (lesson 09: PSM with the fixes), lispsm,
 //             csm (cascaded shadow maps: practical splits, blend band, texel snapping per cascade),
 //             hybrid (lesson 07's hybrid-resolution maps), volumes (lesson 04's stencil volumes)
-//   soft      lesson 05's many, pcf, pcss, parker, haines, mesh, vsm, esm (they need a spherical
+//   soft      lesson 05's many, pcf, pcss, parker, haines, mesh, vsm, esm, evsm2, evsm4, msm (they need a spherical
 //             light: the soft_* presets switch the sun off and light1, lesson 05's sphere, on)
 // all at EQUAL TOTAL TEXELS (texels: a light's budget, whatever the technique spends it on: one
 // map, a face set, four cascades). Views: one technique lit; the A/B split (X) between any two
