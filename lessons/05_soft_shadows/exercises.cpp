@@ -46,4 +46,14 @@ float lightMeshVisibility(const soft::LightGrid& grid, const glm::vec3& p) {
   return 1.0f;
 }
 
+// EXERCISE 05.7
+double msmLitShare(const glm::dvec4& moments, double t, double alpha) {
+  SHADOWLAB_STUB("05.7");  // delete this line when you write the exercise
+  // TODO: bias b, solve B c = (1, t, t^2), the roots z1 <= z2, the weight in front of t
+  (void)moments;
+  (void)t;
+  (void)alpha;
+  return 1.0;
+}
+
 }  // namespace shadowlab::ex05

@@ -6,6 +6,7 @@
 // the plot).
 #include <glm/glm.hpp>
 
+#include "algorithms/moment_maps.hpp"
 #include "algorithms/soft_shadows.hpp"
 #include "grading/stub.hpp"  // SHADOWLAB_STUB: the marker in every untouched stub
 
@@ -42,5 +43,20 @@ glm::vec2 rotateTap(const glm::vec2& tap, float angle);
 // [0, nodes - 1]; the cell's first node i0 = min(floor(g), nodes - 2); f = g - i0; node i0 + o
 // (o in {0,1}^3) weighs prod over axes of (o ? f : 1 - f). Values: grid.visibility[grid.index(n)].
 float lightMeshVisibility(const soft::LightGrid& grid, const glm::vec3& p);
+
+// EXERCISE 05.7: moment shadow maps' Hamburger bound ([Peters2015], 4MSM). A texel of the map holds
+// `moments` = (b1, b2, b3, b4), the kernel's mean of (z, z^2, z^3, z^4) over the depths z the light
+// sees there. Return the LIT share at the receiver's depth t, in [0, 1]:
+//  0. Pull the moments toward 0.5 against rounding: b = (1 - alpha) moments + alpha (0.5, 0.5, 0.5, 0.5).
+//  1. Solve B c = (1, t, t^2) for the Hankel matrix B = ((1, b1, b2), (b1, b2, b3), (b2, b3, b4))
+//     (it is symmetric positive definite: a 3x3 Cholesky factorisation, or any solver).
+//  2. z1 <= z2, the real roots of c0 + c1 z + c2 z^2, and z0 = t are the three depths of the
+//     distribution with these moments that puts as much as it can in front of t; delta i weighs
+//     w_i = (z_j z_k - b1 (z_j + z_k) + b2) / ((z_i - z_j) (z_i - z_k)), {i, j, k} = {0, 1, 2}.
+//  3. The shadow is the weight of the deltas strictly in front of t (z1 and z2 where below t);
+//     return 1 - shadow, clamped to [0, 1]. (Three deltas of weights 1/4, 1/2, 1/4 at 0.2, 0.5 and
+//     0.8: at t = 0.5 the lit share is 3/4, at t = 0.8 it is 1/4.)
+// The inputs are valid: B is positive definite (at least three different depths, or alpha > 0).
+double msmLitShare(const glm::dvec4& moments, double t, double alpha);
 
 }  // namespace shadowlab::ex05

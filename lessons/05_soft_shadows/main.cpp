@@ -85,6 +85,7 @@ class SoftShadowsLesson : public tech::ShadowLesson {
     exercises.add("05.4", "rotateTap", "");
     exercises.add("05.5", "lightMeshVisibility", "");
     exercises.addGlsl("05.6", "blockerSearch", "technique=pcss finds no blocker: no shadows");
+    exercises.add("05.7", "msmLitShare", "");  // technique=msm's bound, graded on its own
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     r.add("theory.edges", &p_.showEdge, "draw the lecture's predicted penumbra of the picked caster edge").hotkey = "G";
     r.addChoice("theory.edge", &p_.edge, {"0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11"},

@@ -12,4 +12,5 @@ glm::vec2 rotateTap(const glm::vec2& tap, float angle) { return soft::rotateTap(
 float lightMeshVisibility(const soft::LightGrid& grid, const glm::vec3& p) {
   return soft::lightMeshVisibility(grid, p);
 }
+double msmLitShare(const glm::dvec4& moments, double t, double alpha) { return soft::msmLitShare(moments, t, alpha); }
 }  // namespace shadowlab::ex05

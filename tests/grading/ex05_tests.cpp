@@ -5,8 +5,11 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <random>
+#include <utility>
 
+#include "algorithms/moment_maps.hpp"
 #include "algorithms/soft_shadows.hpp"
 #include "ex05_grids.hpp"
 #include "exercises.hpp"
@@ -152,5 +155,47 @@ TEST_CASE("ex05.5: random points and grids against the reference") {
          "steps (2, 0.5, 1.5)");
     CAPTURE(p);
     if (!CHECK_NEAR(ex05::lightMeshVisibility(g, p), soft::lightMeshVisibility(g, p), 1e-5)) break;
+  }
+}
+
+namespace {
+// The mean of (z, z^2, z^3, z^4) over depths z with weights w (summing to 1).
+glm::dvec4 momentsOf(std::initializer_list<std::pair<double, double>> atoms) {
+  glm::dvec4 b(0.0);
+  for (const auto& [z, w] : atoms) b += w * glm::dvec4(z, z * z, z * z * z, z * z * z * z);
+  return b;
+}
+}  // namespace
+
+TEST_CASE("ex05.7: the Hamburger bound by hand: three deltas, t on one of them" * SHADOWLAB_INDEPENDENT_CHECKS) {
+  // Weights 1/4, 1/2, 1/4 at depths 0.2, 0.5, 0.8: with t on a delta, the three-delta solution is
+  // the distribution itself, so the lit share is the weight not in front of t.
+  const glm::dvec4 b = momentsOf({{0.2, 0.25}, {0.5, 0.5}, {0.8, 0.25}});
+  INFO("moments of 1/4 at 0.2, 1/2 at 0.5, 1/4 at 0.8, alpha 0");
+  CHECK_NEAR(ex05::msmLitShare(b, 0.2, 0.0), 1.0, 1e-6);   // nothing in front
+  CHECK_NEAR(ex05::msmLitShare(b, 0.5, 0.0), 0.75, 1e-6);  // 1/4 in front
+  CHECK_NEAR(ex05::msmLitShare(b, 0.8, 0.0), 0.25, 1e-6);  // 3/4 in front
+  CHECK_NEAR(ex05::msmLitShare(b, 0.1, 0.0), 1.0, 1e-6);   // in front of everything: lit
+}
+
+TEST_CASE("ex05.7: random depth mixtures against the reference, and never darker than the truth") {
+  std::mt19937_64 rng(test::seedFor("ex05.7"));
+  std::uniform_real_distribution<double> depth(0.05, 0.95), weight(0.1, 1.0), alpha(0.0, 1e-4);
+  for (int i = 0; i < 200; ++i) {
+    double z[4], w[4], sum = 0;
+    for (int k = 0; k < 4; ++k) z[k] = depth(rng), w[k] = weight(rng), sum += w[k];
+    glm::dvec4 b(0.0);
+    for (int k = 0; k < 4; ++k) b += w[k] / sum * soft::msmMoments(z[k]);
+    const double t = depth(rng), a = alpha(rng);
+    double truth = 0;  // the share of the mixture not in front of t
+    for (int k = 0; k < 4; ++k) truth += z[k] >= t ? w[k] / sum : 0.0;
+    INFO("random case ", i, " of 200 (seed ", test::seed(), "): depths ", z[0], ", ", z[1], ", ", z[2], ", ", z[3],
+         ", weights ", w[0] / sum, ", ", w[1] / sum, ", ", w[2] / sum, ", ", w[3] / sum, ", t ", t, ", alpha ", a);
+    const double lit = ex05::msmLitShare(b, t, a);
+    if (!CHECK_NEAR(lit, soft::msmLitShare(b, t, a), 1e-6)) break;
+    if (lit < truth - 1e-3) {  // a bound: light may bleed, shadow is never invented
+      CHECK(lit >= truth - 1e-3);
+      break;
+    }
   }
 }

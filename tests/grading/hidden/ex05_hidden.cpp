@@ -7,6 +7,7 @@
 #include <random>
 
 #include "../ex05_grids.hpp"
+#include "algorithms/moment_maps.hpp"
 #include "exercises.hpp"
 #include "test_support.hpp"
 
@@ -91,5 +92,31 @@ TEST_SUITE("hidden") {
       if (!CHECK_NEAR(ex05::lightMeshVisibility(g, p), field(p.x, p.y, p.z), 1e-4)) break;
       if (!CHECK_NEAR(ex05::lightMeshVisibility(moved, moved.origin + 2.0f * p), field(p.x, p.y, p.z), 1e-4)) break;
     }
+  }
+
+  TEST_CASE("ex05.7: three deltas and t on one of them, any weights; the 16-bit form's round trip") {
+    std::mt19937_64 rng(test::seedFor("ex05.7 hidden"));
+    std::uniform_real_distribution<double> depth(0.02, 0.98), weight(0.05, 1.0);
+    for (int i = 0; i < 300; ++i) {
+      double z[3] = {depth(rng), depth(rng), depth(rng)}, w[3] = {weight(rng), weight(rng), weight(rng)};
+      std::sort(z, z + 3);
+      if (z[1] - z[0] < 0.05 || z[2] - z[1] < 0.05) continue;  // well separated: B well conditioned
+      const double sum = w[0] + w[1] + w[2];
+      glm::dvec4 b(0.0);
+      for (int k = 0; k < 3; ++k) {
+        const double zk = z[k];
+        b += w[k] / sum * glm::dvec4(zk, zk * zk, zk * zk * zk, zk * zk * zk * zk);
+      }
+      const int on = i % 3;  // t on one of the deltas: the solution is the distribution itself
+      double lit = 0;
+      for (int k = on; k < 3; ++k) lit += w[k] / sum;
+      INFO("random case ", i, " of 300 (seed ", test::seed(), "): depths ", z[0], ", ", z[1], ", ", z[2], ", weights ",
+           w[0] / sum, ", ", w[1] / sum, ", ", w[2] / sum, ", t = depth ", on);
+      if (!CHECK_NEAR(ex05::msmLitShare(b, z[on], 0.0), lit, 1e-5)) break;
+    }
+    // The 16-bit form read back: one caster at 0.4 shadows what is behind it and lights what is before.
+    const glm::dvec4 stored = soft::msmDequantise(soft::msmQuantise(soft::msmMoments(0.4)));
+    CHECK(ex05::msmLitShare(stored, 0.6, 3e-5) < 0.05);
+    CHECK(ex05::msmLitShare(stored, 0.2, 3e-5) > 0.95);
   }
 }
