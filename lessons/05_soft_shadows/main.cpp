@@ -52,9 +52,11 @@ struct Params {
 };
 
 const char* const kSummary =
-    "A spherical light: many point lights, PCF and PCSS, single-sample soft shadows, the light mesh, VSM, ESM, EVSM and MSM, "
+    "A spherical light: many point lights, PCF and PCSS, single-sample soft shadows, the light mesh, VSM, ESM, EVSM "
+    "and MSM, "
     "each against the sphere-light reference; the penumbra formula and A_frac drawn live.";
-const char* const kHelp = R"(technique (T): many lights, PCF, PCSS, Parker, Haines, light mesh, VSM, ESM, EVSM 2 and 4, MSM.
+const char* const kHelp =
+    R"(technique (T): many lights, PCF, PCSS, Parker, Haines, light mesh, VSM, ESM, EVSM 2 and 4, MSM.
 light0.radius: the sphere's size (0: hard). many.samples: N maps. pcss.* taps.
 theory.edges (G): the predicted penumbra of the box edge theory.edge (N) (yellow centre, red inner, cyan outer).
 theory.plot (P): the A_frac plot; parker.profile (L): exact or linear (the 7 %; haines.profile too).
