@@ -130,6 +130,13 @@ if(TARGET lesson_01_lighting)
            -- --headless --frames 3 --size 640x360 --set measure.overlay=error --screenshot ${shots}/01_lighting_overlay.png)
   set_tests_properties(gpu.01_lighting.measure gpu.01_lighting.measure_overlay PROPERTIES LABELS gpu)
 endif()
+# Shimmer: the temporal figures of --measure under a turning sun (and none with the sun still).
+if(TARGET lesson_09_psm_fixes)
+  add_test(NAME gpu.measure.shimmer COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_09_psm_fixes>
+           -DPATH_FILE=${CMAKE_SOURCE_DIR}/bench/paths/sun_turn.path -DOUT_DIR=${shots}
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_shimmer.cmake)
+  set_tests_properties(gpu.measure.shimmer PROPERTIES LABELS gpu TIMEOUT 300)
+endif()
 
 # The benchmark runner on lesson 01: two configurations along a recorded path, two repeats; the
 # report's files, its numbers against the CSV, and the page in headless Chromium.

@@ -70,8 +70,9 @@ Measurement::Measurement() = default;
 Measurement::~Measurement() = default;
 
 void Measurement::declare(ParamRegistry& r) {
-  r.addChoice("measure.overlay", &overlay_, {"none", "error", "aliasing", "reference"},
-              "compare with ground truth (Embree rays from the shaded points): leaks red, false shadows blue")
+  r.addChoice("measure.overlay", &overlay_, {"none", "error", "aliasing", "reference", "figures"},
+              "compare with ground truth (Embree rays from the shaded points): leaks red, false shadows blue; "
+              "figures: the header's figures over the lit picture, no overlay")
       .hotkey = "M";
   // The lesson's lights are declared before (lightN.kind): the range is theirs, so a light the
   // lesson lacks is refused like every other bad value (exit 2), overlay or not.
@@ -141,6 +142,7 @@ void Measurement::end(const MeasureSource& source, unsigned frameFbo, bool viewC
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, frameFbo);
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 
+  ++frame_;
   if (viewChanged && live_) dirty_ = true;
   if (dirty_ || forceFull_) {
     compute(source);
@@ -148,7 +150,21 @@ void Measurement::end(const MeasureSource& source, unsigned frameFbo, bool viewC
     forceFull_ = false;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, frameFbo);
-  if (overlay_ != Overlay::None) drawOverlay(frameFbo);
+  if (overlay_ != Overlay::None && overlay_ != Overlay::Figures) drawOverlay(frameFbo);
+}
+
+// Shimmer: against the frame measured just before this one, when it was the previous frame, of the
+// same light, at the same resolution (a still view is not re-measured: nothing moved).
+void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& reference) {
+  result_.hasTemporal = lastMeasured_ + 1 == frame_ && lastLight_ == light_ &&
+                        lastTechnique_.width == technique.width && lastTechnique_.height == technique.height &&
+                        !lastTechnique_.data.empty();
+  if (result_.hasTemporal)
+    result_.temporal = measure::compareFrames(lastTechnique_, technique, lastReference_, reference);
+  lastTechnique_ = technique;
+  lastReference_ = reference;
+  lastMeasured_ = frame_;
+  lastLight_ = light_;
 }
 
 namespace {
@@ -280,13 +296,15 @@ void Measurement::compute(const MeasureSource& source) {
     result_.band = measure::compareHard(technique, reference, band);
     if (result_.hasAliasing) result_.bandAliasing = measure::aliasingStats(measure::keepWhere(shaded.jacobian, band));
   }
+  compareWithLastFrame(technique, reference);
   result_.referenceImage = referenceImage(reference);
   result_.valid = true;
   uploadOverlay();
 }
 
 void Measurement::uploadOverlay() {
-  const Image8* shown = overlay_ == Overlay::Aliasing    ? (result_.hasAliasing ? &result_.aliasingHeatmap : nullptr)
+  const Image8* shown = overlay_ == Overlay::Figures     ? nullptr
+                        : overlay_ == Overlay::Aliasing  ? (result_.hasAliasing ? &result_.aliasingHeatmap : nullptr)
                         : overlay_ == Overlay::Reference ? &result_.referenceImage
                                                          : &result_.errorHeatmap;
   // The heatmaps' and the visibility's bytes are what to show: no sRGB decode on the way.
@@ -380,6 +398,16 @@ std::vector<std::pair<std::string, std::string>> Measurement::summary() const {
     std::snprintf(buf, sizeof buf, "mean %.2f p95 %.2f max %.1f, m>1 %.1f%%", a.mean, a.p95, a.max,
                   100.0 * a.shareAbove1);
     out.push_back({"aliasing m", buf});
+  }
+  if (result_.hasTemporal) {  // against the previous frame
+    const auto& t = result_.temporal;
+    if (result_.soft)
+      std::snprintf(buf, sizeof buf, "mean |dV| %.4f beyond the reference's (%.4f)", t.extraChange,
+                    t.referenceMeanChange);
+    else
+      std::snprintf(buf, sizeof buf, "%.2f%% of px flip, the reference not (it flips %.2f%%)", t.extraFlipPct,
+                    t.referenceFlipPct);
+    out.push_back({"shimmer", buf});
   }
   std::snprintf(buf, sizeof buf, "%dx%d: rays %.0f ms, read-back %.0f ms%s", result_.width, result_.height,
                 result_.groundTruthMs, result_.readbackMs, result_.buildMs > 0 ? ", BVH rebuilt" : "");

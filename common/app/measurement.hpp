@@ -78,6 +78,9 @@ struct MeasureResult {
   float bandRadius = 0.0f;
   measure::HardShadowErrors band;
   measure::AliasingStats bandAliasing;
+  // Shimmer: this frame against the one measured just before it (consecutive frames only).
+  bool hasTemporal = false;
+  measure::TemporalErrors temporal;
   std::size_t nonFiniteVisibility = 0;  // covered pixels whose V is NaN or infinite (a broken matrix)
   std::size_t nonFiniteJacobian = 0;    // covered pixels whose texel Jacobian is (else they pass for background)
   double groundTruthMs = 0, readbackMs = 0, buildMs = 0;
@@ -131,7 +134,9 @@ class Measurement {
   void uploadOverlay();
   void drawOverlay(unsigned frameFbo);
 
-  enum class Overlay { None, Error, Aliasing, Reference };
+  void compareWithLastFrame(const ImageF& technique, const ImageF& reference);
+
+  enum class Overlay { None, Error, Aliasing, Reference, Figures };
   Overlay overlay_ = Overlay::None;
   int light_ = 0;
   int scale_ = 2;
@@ -153,6 +158,10 @@ class Measurement {
   std::uint64_t truthRevision_ = 0;
   std::map<std::string, Image8> textures_;
   MeasureResult result_;
+  // The last measured frame's visibilities, for the shimmer figures.
+  std::uint64_t frame_ = 0, lastMeasured_ = 0;
+  int lastLight_ = -1;
+  ImageF lastTechnique_, lastReference_;
 };
 
 }  // namespace shadowlab

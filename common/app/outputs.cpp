@@ -69,6 +69,18 @@ nlohmann::ordered_json figures(const MeasureResult& r) {
   nlohmann::ordered_json j;
   j["width"] = r.width;
   j["height"] = r.height;
+  if (r.hasTemporal) {
+    const auto& t = r.temporal;
+    j["temporal"] = {{"pixels", t.pixels},
+                     {"flips", t.flips},
+                     {"reference_flips", t.referenceFlips},
+                     {"extra_flips", t.extraFlips},
+                     {"extra_flip_pct", t.extraFlipPct},
+                     {"reference_flip_pct", t.referenceFlipPct},
+                     {"mean_change", t.meanChange},
+                     {"reference_mean_change", t.referenceMeanChange},
+                     {"extra_change", t.extraChange}};
+  }
   if (r.soft) {
     const auto& s = r.soft_;
     j["soft"] = {{"pixels", s.pixels},

@@ -223,6 +223,39 @@ SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference, f
   return e;
 }
 
+TemporalErrors compareFrames(const ImageF& techniqueBefore, const ImageF& technique, const ImageF& referenceBefore,
+                             const ImageF& reference, float litThreshold) {
+  checkPair(technique, reference, "compareFrames");
+  checkPair(techniqueBefore, referenceBefore, "compareFrames");
+  checkPair(technique, techniqueBefore, "compareFrames");
+  TemporalErrors e;
+  double change = 0, referenceChange = 0, extra = 0;
+  for (std::size_t i = 0; i < reference.data.size(); ++i) {
+    const float r0 = referenceBefore.data[i], r1 = reference.data[i];
+    if (!(r0 >= 0.0f) || !(r1 >= 0.0f)) continue;
+    const float t0 = techniqueBefore.data[i], t1 = technique.data[i];
+    ++e.pixels;
+    const bool flip = (t0 >= litThreshold) != (t1 >= litThreshold);
+    const bool referenceFlip = (r0 >= 0.5f) != (r1 >= 0.5f);
+    e.flips += flip;
+    e.referenceFlips += referenceFlip;
+    e.extraFlips += flip && !referenceFlip;
+    const double d = std::abs(double(t1) - double(t0)), dr = std::abs(double(r1) - double(r0));
+    change += d;
+    referenceChange += dr;
+    extra += std::max(d - dr, 0.0);
+  }
+  if (e.pixels) {
+    const double n = double(e.pixels);
+    e.extraFlipPct = 100.0 * double(e.extraFlips) / n;
+    e.referenceFlipPct = 100.0 * double(e.referenceFlips) / n;
+    e.meanChange = change / n;
+    e.referenceMeanChange = referenceChange / n;
+    e.extraChange = extra / n;
+  }
+  return e;
+}
+
 Image8 hardErrorHeatmap(const ImageF& technique, const ImageF& reference, float litThreshold) {
   checkPair(technique, reference, "hardErrorHeatmap");
   Image8 out = blank(reference.width, reference.height);

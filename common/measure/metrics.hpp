@@ -81,6 +81,23 @@ struct SoftShadowErrors {
 };
 SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference, float umbraLevel = kUmbraLevel);
 
+// ---- Shimmer: two consecutive frames ----------------------------------------------------------
+// Over the pixels that face the light in both frames: a hard shadow FLIPS at a pixel when its lit
+// state (>= litThreshold) differs between the frames; the reference's own flips are where the
+// shadow truly moved (a moving light, or the pixel now sees another point), the technique's
+// further flips are shimmer. For soft shadows, the mean |V_now - V_before| beyond the reference's
+// change at the same pixel. Throws std::invalid_argument for images of different sizes.
+struct TemporalErrors {
+  std::size_t pixels = 0;  // facing in both frames
+  std::size_t flips = 0, referenceFlips = 0;
+  std::size_t extraFlips = 0;                      // the technique flips, the reference does not
+  double extraFlipPct = 0, referenceFlipPct = 0;   // of pixels
+  double meanChange = 0, referenceMeanChange = 0;  // mean |dV| of the technique and of the reference
+  double extraChange = 0;                          // mean max(|dV| - |dV_reference|, 0)
+};
+TemporalErrors compareFrames(const ImageF& techniqueBefore, const ImageF& technique, const ImageF& referenceBefore,
+                             const ImageF& reference, float litThreshold = 0.5f);
+
 // ---- Heatmaps (RGBA, alpha 255; 0 for background) ----------------------------------------------
 inline constexpr Rgb8 kLeakColor{255, 48, 32};          // lit, should be shadowed
 inline constexpr Rgb8 kFalseShadowColor{40, 110, 255};  // shadowed, should be lit

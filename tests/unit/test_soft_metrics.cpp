@@ -52,3 +52,25 @@ TEST_CASE("measure.metrics: light bleeding is the reference's umbra brightened b
   CHECK(e.bleedPct == doctest::Approx(100.0 / 3.0));
   CHECK(compareSoft(ref, ref).bleed == 0);
 }
+
+TEST_CASE("measure.metrics: shimmer is a flip between two frames that the reference does not make") {
+  // Pixels: a still lit pixel, a true moving edge (both flip), a shimmering pixel (only the
+  // technique flips), a pixel the reference flips and the technique misses, a soft pixel that
+  // changes by 0.3 where the reference changes by 0.1, and one not facing the light before.
+  const ImageF refBefore = row({1.0f, 1.0f, 1.0f, 0.0f, 0.6f, kNotFacing});
+  const ImageF ref = row({1.0f, 0.0f, 1.0f, 1.0f, 0.7f, 1.0f});
+  const ImageF techBefore = row({1.0f, 1.0f, 1.0f, 0.0f, 0.4f, 0.0f});
+  const ImageF tech = row({1.0f, 0.0f, 0.0f, 0.0f, 0.7f, 1.0f});
+  const TemporalErrors e = compareFrames(techBefore, tech, refBefore, ref);
+  CHECK(e.pixels == 5);
+  CHECK(e.flips == 3);  // the edge, the shimmer, and 0.4 -> 0.7 across the lit threshold
+  CHECK(e.referenceFlips == 2);
+  CHECK(e.extraFlips == 2);
+  CHECK(e.extraFlipPct == doctest::Approx(40.0));
+  CHECK(e.meanChange == doctest::Approx((1.0 + 1.0 + 0.3) / 5.0));
+  CHECK(e.extraChange == doctest::Approx((1.0 + 0.2) / 5.0));  // the shimmer, and 0.3 - 0.1
+  // Nothing moves: nothing shimmers.
+  const TemporalErrors still = compareFrames(tech, tech, ref, ref);
+  CHECK(still.flips == 0);
+  CHECK(still.extraChange == 0.0);
+}
