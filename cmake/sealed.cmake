@@ -20,12 +20,22 @@ foreach(line IN LISTS sealed_lines)
     list(APPEND sealed_files ${CMAKE_SOURCE_DIR}/shaders/${line})
   endif()
 endforeach()
-add_executable(seal_files ${CMAKE_SOURCE_DIR}/tools/seal_files.cpp)
-target_include_directories(seal_files PRIVATE ${CMAKE_SOURCE_DIR}/common)
+if(SHADOWLAB_WEB)  # the tool runs on this machine, not in a browser: the host's compiler builds it
+  set(seal_tool ${CMAKE_BINARY_DIR}/host/seal_files)
+  add_custom_command(OUTPUT ${seal_tool}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/host
+    COMMAND c++ -std=c++20 -O1 -I${CMAKE_SOURCE_DIR}/common ${CMAKE_SOURCE_DIR}/tools/seal_files.cpp -o ${seal_tool}
+    DEPENDS ${CMAKE_SOURCE_DIR}/tools/seal_files.cpp ${CMAKE_SOURCE_DIR}/common/core/sealed_files.hpp
+    COMMENT "Building the host tool seal_files")
+else()
+  add_executable(seal_files ${CMAKE_SOURCE_DIR}/tools/seal_files.cpp)
+  target_include_directories(seal_files PRIVATE ${CMAKE_SOURCE_DIR}/common)
+  set(seal_tool seal_files)
+endif()
 set(sealed_cpp ${CMAKE_BINARY_DIR}/generated/sealed_files.cpp)
 add_custom_command(OUTPUT ${sealed_cpp}
-  COMMAND seal_files ${SEALED_MANIFEST} ${CMAKE_SOURCE_DIR}/shaders ${sealed_cpp}
-  DEPENDS seal_files ${SEALED_MANIFEST} ${sealed_files}
+  COMMAND ${seal_tool} ${SEALED_MANIFEST} ${CMAKE_SOURCE_DIR}/shaders ${sealed_cpp}
+  DEPENDS ${seal_tool} ${SEALED_MANIFEST} ${sealed_files}
   COMMENT "Sealing the shader files of tools/handout/sealed_shaders.txt")
 add_library(shadowlab_sealed STATIC ${sealed_cpp})
 target_include_directories(shadowlab_sealed PRIVATE ${CMAKE_SOURCE_DIR}/common)

@@ -95,7 +95,8 @@ if(NOT SHADOWLAB_UNIT_ONLY AND SHADOWLAB_LESSONS)
   # Names no program defines, each with the reason it may go unrecorded.
   set(variant_names_allowed
     SOFT_MAX_SAMPLES  # soft_maps.glsl's own array size (#ifndef: 64, SoftMaps::kMaxSamples), never overridden
-    SOFT_MAX_TAPS)    # the same for the tap arrays
+    SOFT_MAX_TAPS     # the same for the tap arrays
+    SHADOWLAB_NO_BORDER_CLAMP)  # gl::Program's, where caps() has no border clamp: WebGL2 (the web tests)
   set(variant_logs "")
   foreach(lesson IN LISTS SHADOWLAB_LESSONS)
     string(REGEX REPLACE "^lesson_" "" name ${lesson})

@@ -3,6 +3,7 @@
 //
 //   shader_check [--include DIR]... SHADER...
 //   shader_check --variants LOG [--variants LOG]... [--root DIR] [--allow NAME]...
+//   shader_check --es ...   either form, each shader as the browser build compiles it
 //
 // Each SHADER is expanded with loadShaderSource (include directories: every --include, then the
 // shader root), written to a temporary file with the stage's extension, and handed to
@@ -22,6 +23,11 @@
 // variant of a stage that includes that file, or be named by --allow. Each gap is reported as
 // "file:line: error: NAME ..." and exits 1; so does an --allow NAME that no gap needs (stale).
 // The coverage figure is printed either way.
+//
+// --es: each expanded shader is translated to GLSL ES 3.00 (core/glsl_es.hpp) first and validated
+// as WebGL2 compiles it; with --variants, the logs of the browser's lessons (no coverage check: the
+// native run of every lesson's log covers the names).
+#include "core/glsl_es.hpp"
 #include "core/paths.hpp"
 #include "core/shader_source.hpp"
 
@@ -51,6 +57,8 @@ namespace fs = std::filesystem;
 using namespace shadowlab;
 
 namespace {
+
+bool g_es = false;  // --es: validate as GLSL ES 3.00 (WebGL2), translated by toGlslEs
 
 // The course targets OpenGL 4.1 core (the newest macOS supports), so every stage must say so
 // explicitly; without it the driver would fall back to GLSL 1.10 and accept different code.
@@ -155,7 +163,8 @@ bool checkShader(const Stage& stage, const std::vector<std::string>& includeDirs
                                                             std::to_string(serial) + std::string(stageExtension(kind)));
     {
       std::ofstream out(temporary, std::ios::binary);
-      out << withDefines(source.text, stage.defines);
+      const std::string text = withDefines(source.text, stage.defines);
+      out << (g_es ? toGlslEs(text) : text);
       if (!out) {
         err << path << ": error: cannot write temporary " << temporary << "\n";
         return false;
@@ -172,6 +181,9 @@ bool checkShader(const Stage& stage, const std::vector<std::string>& includeDirs
       return false;
     }
     return true;
+  } catch (const std::invalid_argument& e) {  // toGlslEs: no #version line
+    err << path << ": error: " << e.what() << "\n";
+    return false;
   } catch (const ShaderSourceError& e) {
     err << "error: " << e.what() << (stage.origin.empty() ? "" : " (recorded at " + stage.origin + ")") << "\n";
     return false;
@@ -357,13 +369,14 @@ int checkVariants(const std::vector<std::string>& logs, const std::string& root,
   }
   std::cout << "shader_check: " << stages.size() - failures << " of " << stages.size()
             << " recorded (stage file, define set) variant(s) valid\n";
-  const bool covered = checkCoverage(scanMacroTests(root), defined, allowed);
+  const bool covered = g_es || checkCoverage(scanMacroTests(root), defined, allowed);
   return failures == 0 && covered ? 0 : 1;
 }
 
 int usage() {
   std::cerr << "usage: shader_check [--include DIR]... SHADER...\n"
-               "       shader_check --variants LOG [--variants LOG]... [--root DIR] [--allow NAME]...\n";
+               "       shader_check --variants LOG [--variants LOG]... [--root DIR] [--allow NAME]...\n"
+               "       shader_check --es (either form: as GLSL ES 3.00, the browser's)\n";
   return 2;
 }
 
@@ -381,6 +394,7 @@ int main(int argc, char** argv) {
     else if (arg == "--variants") logs.push_back(argv[++i]);
     else if (arg == "--root") root = argv[++i];
     else if (arg == "--allow") allowed.insert(argv[++i]);
+    else if (arg == "--es") g_es = true;
     else if (arg == "-h" || arg == "--help") {
       usage();
       return 0;

@@ -1,8 +1,8 @@
 #include "algorithms/hybrid_map.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -169,8 +169,18 @@ IndexPyramid indexPyramid(const std::vector<MergeGrid>& merged) {
   return p;
 }
 
-std::uint32_t leafWord(float depth) { return std::bit_cast<std::uint32_t>(depth); }
-float leafDepth(std::uint32_t word) { return std::bit_cast<float>(word); }
+// The float's bits as they are (std::bit_cast, which the browser build's libc++ lacks; memcpy is
+// the same copy and compiles to the same move).
+std::uint32_t leafWord(float depth) {
+  std::uint32_t word;
+  std::memcpy(&word, &depth, sizeof word);
+  return word;
+}
+float leafDepth(std::uint32_t word) {
+  float depth;
+  std::memcpy(&depth, &word, sizeof depth);
+  return depth;
+}
 
 namespace {
 

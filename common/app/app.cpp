@@ -15,11 +15,11 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
-#include <tuple>
 
 #include "app/ab_split.hpp"
 #include "app/context.hpp"
 #include "app/frame_budget.hpp"
+#include "app/frame_loop.hpp"
 #include "app/god_view.hpp"
 #include "app/input.hpp"
 #include "app/lesson.hpp"
@@ -53,21 +53,22 @@ class Runner {
   explicit Runner(std::unique_ptr<Lesson> lesson)
       : owned_(std::move(lesson)), lesson_(*owned_), info_(lesson_.info()) {}
 
-  int run(int argc, char** argv) {
-    if (Exit e = parse(argc, argv)) return *e;
+  // Everything before the first frame; an exit code ends the run there.
+  Exit start(int argc, char** argv) {
+    if (Exit e = parse(argc, argv)) return e;
     if (!cl_.model.empty()) {
       if (!loadModelReporting(cl_.model, info_.name)) return 1;  // a bad file: exit 1
-      if (!cameraSetOnCommandLine()) aimAtModel();
+      if (!cameraSetOnCommandLine(cl_.sets)) aimAtModel();
     }
-    if (Exit e = openContext()) return *e;
-    if (Exit e = initLesson()) return *e;
-    if (Exit e = startExercises()) return *e;
-    if (Exit e = openOutputs()) return *e;
-    for (int frame = 0; cl_.frames < 0 || frame < cl_.frames; ++frame) {
-      if (context_->shouldClose() || input_.quit) break;
-      if (Exit e = runFrame(frame)) return *e;
-    }
-    return teardown();
+    if (Exit e = openContext()) return e;
+    if (Exit e = initLesson()) return e;
+    if (Exit e = startExercises()) return e;
+    return openOutputs();
+  }
+  // One frame, or the run's exit code once it is over (--frames done, the window closed, Esc).
+  Exit step(int frame) {
+    if ((cl_.frames >= 0 && frame >= cl_.frames) || context_->shouldClose() || input_.quit) return teardown();
+    return runFrame(frame);
   }
 
  private:
@@ -102,18 +103,9 @@ class Runner {
     return std::nullopt;
   }
 
-  // A model made the scene (--model, a dropped file): the camera looks at it from where it fills
-  // most of the view (core/model_file's frameModel), the lesson's yaw and pitch kept; Home comes
-  // back here. --set camera.target or camera.distance on the command line wins over it.
-  void aimAtModel() {
-    const ModelFraming f = frameModel(placeOnGround(*currentModel()), lesson_.camera.fovY);
-    std::tie(lesson_.camera.target, lesson_.camera.distance) = std::tie(f.target, f.distance);
+  void aimAtModel() {  // model_choice.hpp: where the camera looks at the model; Home comes back here
+    aimCameraAtModel(lesson_.camera);
     homeCamera_ = lesson_.camera;
-  }
-  bool cameraSetOnCommandLine() const {
-    return std::any_of(cl_.sets.begin(), cl_.sets.end(), [](const std::string& a) {
-      return a.rfind("camera.target", 0) == 0 || a.rfind("camera.distance", 0) == 0;
-    });
   }
 
   // A key bound twice (framework keys included) or on a kind it cannot drive: the lesson is wrong,
@@ -137,8 +129,8 @@ class Runner {
     gl::installDebugOutput(cl_.strictGl);
     // Software renderers rasterise deferred: time passes synchronously there (see GpuTimers).
     const gl::Caps& caps = gl::caps();
-    bool sync =
-        caps.renderer.find("llvmpipe") != std::string::npos || caps.renderer.find("softpipe") != std::string::npos;
+    bool sync = !caps.timerQuery || caps.renderer.find("llvmpipe") != std::string::npos ||
+                caps.renderer.find("softpipe") != std::string::npos;  // no timestamps, or deferred ones
     if (const char* s = std::getenv("SHADOWLAB_SYNC_TIMERS")) sync = std::string(s) == "1";
     lesson_.timers.setSynchronous(sync);
     // A window compiles specialised shaders in the background; headless frames must not depend on
@@ -593,8 +585,15 @@ class Runner {
 
 }  // namespace
 
+// The runner lives as long as its frames: in a browser the page calls them after this returns.
 int runLesson(const std::function<std::unique_ptr<Lesson>()>& make, int argc, char** argv) {
-  return Runner(make()).run(argc, argv);
+  auto runner = std::make_shared<Runner>(make());
+  if (Exit e = runner->start(argc, argv)) return runFrames([e](int) { return e; });
+  return runFrames([runner](int frame) mutable {
+    Exit e = runner->step(frame);
+    if (e) runner.reset();  // the context and the lesson's GL objects go now, in order
+    return e;
+  });
 }
 
 }  // namespace shadowlab

@@ -1,7 +1,9 @@
 #include "app/debug_draw.hpp"
 
 #include <cmath>
+#include <cstddef>
 
+#include "gl/caps.hpp"
 #include "gl/gl.hpp"
 
 namespace shadowlab {
@@ -59,43 +61,80 @@ void DebugDraw::cross(const glm::vec3& p, float s, const glm::vec4& color) {
   line(p - glm::vec3(0, 0, s), p + glm::vec3(0, 0, s), color);
 }
 
+gl::Program& LineRenderer::active() { return gl::caps().geometryShaders ? program_ : quadProgram_; }
+
+void LineRenderer::build() {
+  if (!active().valid()) active().build();
+}
+
+namespace {
+// The vertices of `lines`: two a segment for lines.geom, or six (two triangles: corners 0 1 2 and
+// 1 3 2 of its quad) for lines_quad.vert, each with both ends.
+struct LineVertex {
+  glm::vec3 p;
+  glm::vec4 c;
+};
+struct QuadVertex {
+  glm::vec3 start, end;
+  glm::vec4 c;
+  float corner;
+};
+template <class V>
+void upload(const std::vector<V>& v) {
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(V)), v.data(), GL_STREAM_DRAW);
+}
+void attribute(GLuint index, int size, std::size_t stride, std::size_t offset) {
+  glEnableVertexAttribArray(index);
+  glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, GLsizei(stride), reinterpret_cast<void*>(offset));
+}
+}  // namespace
+
 void LineRenderer::draw(const std::vector<DebugDraw::Line>& lines, const glm::mat4& viewProj, bool depthTest,
                         float widthPx) {
   build();
-  struct V {
-    glm::vec3 p;
-    glm::vec4 c;
-  };
-  std::vector<V> v;
-  v.reserve(lines.size() * 2);
-  for (const auto& l : lines) {
-    v.push_back({l.a, l.color});
-    v.push_back({l.b, l.color});
-  }
+  gl::Program& program = active();
   if (!vao_) {
-    vao_ = gl::makeVertexArray(program_.label());
-    vertices_ = gl::makeBuffer(GL_ARRAY_BUFFER, program_.label());
+    vao_ = gl::makeVertexArray(program.label());
+    vertices_ = gl::makeBuffer(GL_ARRAY_BUFFER, program.label());
   }
   glBindVertexArray(vao_.id());
   glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(V)), v.data(), GL_STREAM_DRAW);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(V), nullptr);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(V), reinterpret_cast<void*>(sizeof(glm::vec3)));
+  GLsizei count = 0;
+  GLenum mode = GL_LINES;
+  if (&program == &program_) {
+    std::vector<LineVertex> v;
+    v.reserve(lines.size() * 2);
+    for (const auto& l : lines) v.push_back({l.a, l.color}), v.push_back({l.b, l.color});
+    upload(v);
+    attribute(0, 3, sizeof(LineVertex), offsetof(LineVertex, p));
+    attribute(1, 4, sizeof(LineVertex), offsetof(LineVertex, c));
+    count = GLsizei(v.size());
+  } else {
+    std::vector<QuadVertex> v;
+    v.reserve(lines.size() * 6);
+    for (const auto& l : lines)
+      for (int corner : {0, 1, 2, 1, 3, 2}) v.push_back({l.a, l.b, l.color, float(corner)});
+    upload(v);
+    attribute(0, 3, sizeof(QuadVertex), offsetof(QuadVertex, start));
+    attribute(1, 3, sizeof(QuadVertex), offsetof(QuadVertex, end));
+    attribute(2, 4, sizeof(QuadVertex), offsetof(QuadVertex, c));
+    attribute(3, 1, sizeof(QuadVertex), offsetof(QuadVertex, corner));
+    count = GLsizei(v.size());
+    mode = GL_TRIANGLES;
+  }
   if (depthTest) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
   } else {
     glDisable(GL_DEPTH_TEST);
   }
-  program_.use();
-  program_.set("uViewProj", viewProj);
+  program.use();
+  program.set("uViewProj", viewProj);
   GLint viewport[4];
   glGetIntegerv(GL_VIEWPORT, viewport);
-  program_.set("uViewport", glm::vec2(float(viewport[2]), float(viewport[3])));
-  program_.set("uWidth", widthPx);
-  glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
+  program.set("uViewport", glm::vec2(float(viewport[2]), float(viewport[3])));
+  program.set("uWidth", widthPx);
+  glDrawArrays(mode, 0, count);
   gl::countDraws();
   glDepthFunc(GL_LESS);
   if (!depthTest) glEnable(GL_DEPTH_TEST);

@@ -51,10 +51,11 @@ class DebugDraw {
 class LineRenderer {
  public:
   explicit LineRenderer(std::string label)
-      : program_(std::move(label), {"common/lines.vert", "common/lines.geom", "common/lines.frag"}) {}
-  void build() {
-    if (!program_.valid()) program_.build();
-  }
+      : program_(label, {"common/lines.vert", "common/lines.geom", "common/lines.frag"}),
+        quadProgram_(label + " (quads)", {"common/lines_quad.vert", "common/lines.frag"}) {}
+  // Where there are no geometry shaders (WebGL2; SHADOWLAB_GL_HIDE=GL_ARB_geometry_shader4 here),
+  // the quads come from six vertices a segment, expanded on the CPU (lines_quad.vert).
+  void build();
   // depthTest: against the bound depth buffer with GL_LEQUAL (left at GL_LESS after); else over everything.
   // widthPx: the lines' width in pixels of the current viewport (quads from lines.geom).
   void draw(const std::vector<DebugDraw::Line>& lines, const glm::mat4& viewProj, bool depthTest, float widthPx);
@@ -62,7 +63,8 @@ class LineRenderer {
   static float projectorWidth(int frameHeight) { return std::max(2.0f, 2.5f * float(frameHeight) / 720.0f); }
 
  private:
-  gl::Program program_;
+  gl::Program& active();
+  gl::Program program_, quadProgram_;
   gl::VertexArray vao_;
   gl::Buffer vertices_;
 };

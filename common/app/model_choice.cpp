@@ -56,4 +56,16 @@ std::string loadDroppedModel(const std::string& path, ParamRegistry& params, con
   return status;
 }
 
+void aimCameraAtModel(OrbitCamera& camera) {
+  const ModelFraming f = frameModel(placeOnGround(*currentModel()), camera.fovY);
+  camera.target = f.target;
+  camera.distance = f.distance;
+}
+
+bool cameraSetOnCommandLine(const std::vector<std::string>& sets) {
+  return std::any_of(sets.begin(), sets.end(), [](const std::string& a) {
+    return a.rfind("camera.target", 0) == 0 || a.rfind("camera.distance", 0) == 0;
+  });
+}
+
 }  // namespace shadowlab

@@ -1,5 +1,7 @@
 #include "app/ui.hpp"
 
+#include "core/decimal.hpp"
+#include "gl/caps.hpp"
 #include "core/hotkeys.hpp"
 #include "core/slider_style.hpp"
 
@@ -34,7 +36,7 @@ void Ui::init(Context& context, float scale) {
   g_baseStyle = ImGui::GetStyle();
   headless_ = context.headless();
   if (!headless_) ImGui_ImplGlfw_InitForOpenGL(context.window(), true);
-  ImGui_ImplOpenGL3_Init("#version 410 core");
+  ImGui_ImplOpenGL3_Init(gl::caps().gles ? "#version 300 es" : "#version 410 core");
   initialised_ = true;
   setScale(scale);
 }
@@ -194,6 +196,8 @@ void errorLines(const std::vector<std::string>& errors, float wrap) {
 void passTable(const std::vector<gl::PassTiming>& passes, bool softwareRenderer) {
   // A software renderer rasterises later, on its own threads: its timestamps bill next to nothing to
   // the pass that caused the work, so there the passes are timed on the CPU, synchronously.
+  const bool noTimestamps = !gl::caps().timerQuery;  // WebGL2: no timer queries at all
+  softwareRenderer = softwareRenderer || noTimestamps;
   const int columns = softwareRenderer ? 2 : 3;
   if (passes.empty() || !ImGui::BeginTable("passes", columns, ImGuiTableFlags_SizingFixedFit)) return;
   // The figure columns as wide as their widest content from the first frame on (an auto-fit one
@@ -223,7 +227,9 @@ void passTable(const std::vector<gl::PassTiming>& passes, bool softwareRenderer)
     ImGui::Text("%.2f", p.cpuMs);
   }
   ImGui::EndTable();
-  if (softwareRenderer) ImGui::TextDisabled("software renderer: passes timed on the CPU (timestamps miss its work)");
+  if (noTimestamps) ImGui::TextDisabled("WebGL2 has no timer queries: passes timed on the CPU");
+  else if (softwareRenderer)
+    ImGui::TextDisabled("software renderer: passes timed on the CPU (timestamps miss its work)");
 }
 }  // namespace
 
@@ -333,11 +339,7 @@ void Ui::splitLabels(float divider, const std::string& a, const std::string& b) 
 
 namespace {
 // Shortest text that reads back as exactly `v`.
-std::string exact(float v) {
-  char buf[32];
-  const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
-  return std::string(buf, end);
-}
+std::string exact(float v) { return shortestDecimal(v); }
 
 std::string exact(const glm::vec3& v) { return exact(v.x) + " " + exact(v.y) + " " + exact(v.z); }
 

@@ -1,5 +1,7 @@
 #include "core/params.hpp"
 
+#include "core/decimal.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -34,10 +36,7 @@ std::string formatFloat(float v) {
 bool parseFloat(const std::string& text, float& out) {
   const std::string t = trim(text);
   if (t.empty()) return false;
-  const char* b = t.data();
-  const char* e = b + t.size();
-  auto [ptr, ec] = std::from_chars(b, e, out);
-  return ec == std::errc() && ptr == e && std::isfinite(out);
+  return parseDecimal(t, out);
 }
 
 bool parseInt(const std::string& text, int& out) {

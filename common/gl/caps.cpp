@@ -10,14 +10,28 @@ namespace {
 Caps g_caps;
 bool g_detected = false;
 
+// Whether SHADOWLAB_GL_HIDE names the extension: a feature the driver has is then treated as
+// absent, so its fallback runs here (core features are hidden by the ARB extension that brought
+// them: GL_ARB_geometry_shader4, GL_ARB_depth_clamp, GL_ARB_texture_border_clamp).
+bool hidden(const std::string& name) {
+  const char* list = std::getenv("SHADOWLAB_GL_HIDE");
+  return list && (std::string(",") + list + ",").find("," + name + ",") != std::string::npos;
+}
+
 // An extension the driver offers and SHADOWLAB_GL_HIDE does not name.
 bool has(const char* extension) {
-  if (const char* hidden = std::getenv("SHADOWLAB_GL_HIDE")) {
-    const std::string list = std::string(",") + hidden + ",";
-    const std::string name = std::string(",") + extension + ",";
-    if (list.find(name) != std::string::npos) return false;
-  }
+  const std::string name = extension;
+  if (hidden(name)) return false;
+#ifdef __EMSCRIPTEN__  // WebGL2's extensions, as emscripten names them (GL_EXT_color_buffer_float)
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i)
+    if (const auto* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i))); e && name == e)
+      return true;
+  return false;
+#else
   return epoxy_has_gl_extension(extension);
+#endif
 }
 
 std::string str(GLenum name) {
@@ -35,7 +49,19 @@ const Caps& caps() {
   c.renderer = str(GL_RENDERER);
   c.version = str(GL_VERSION);
   c.glsl = str(GL_SHADING_LANGUAGE_VERSION);
-  c.khrDebug = c.atLeast(4, 3) || has("GL_KHR_debug");
+#ifdef __EMSCRIPTEN__
+  c.gles = true;  // WebGL2 reports 3.0: every desktop version test below is false, as it should be
+  c.major = 3, c.minor = 0;
+  c.depthClamp = has("GL_EXT_depth_clamp");
+  c.floatColorBuffers = has("GL_EXT_color_buffer_float");
+  c.floatLinear = has("GL_OES_texture_float_linear");
+#else
+  c.floatColorBuffers = c.floatLinear = c.polygonMode = c.getTexImage = true;  // core since 3.0 or 1.x
+  c.depthClamp = !hidden("GL_ARB_depth_clamp");                                // core since 3.2
+  c.geometryShaders = !hidden("GL_ARB_geometry_shader4");                      // core since 3.2
+  c.clampToBorder = !hidden("GL_ARB_texture_border_clamp");                    // core since 1.3
+#endif
+  c.khrDebug = !c.gles && (c.atLeast(4, 3) || has("GL_KHR_debug"));
   c.clipControl = c.atLeast(4, 5) || has("GL_ARB_clip_control");
   c.anisotropic =
       c.atLeast(4, 6) || has("GL_EXT_texture_filter_anisotropic") || has("GL_ARB_texture_filter_anisotropic");

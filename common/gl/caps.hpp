@@ -22,7 +22,17 @@ struct Caps {
   // Mesa's llvmpipe / softpipe (or SHADOWLAB_SOFTWARE_RENDERER=1): the CPU rasterises, deferred, so
   // timestamps miss the work, and an interactive window needs the frame budget.
   bool softwareRenderer = false;
-  int maxTextureSize = 0;  // GL_MAX_TEXTURE_SIZE: render targets and textures, a side
+  // OpenGL ES 3.0 through WebGL2 (the browser build): what it lacks is false below, each with the
+  // fallback its users take (gl/gles.hpp names every missing call).
+  bool gles = false;
+  bool depthClamp = false;         // GL_DEPTH_CLAMP (4.1 core; WebGL2: EXT_depth_clamp)
+  bool geometryShaders = false;    // 4.1 core; none in WebGL2 (lines and volumes expanded on the CPU)
+  bool clampToBorder = false;      // GL_CLAMP_TO_BORDER (4.1; WebGL2: clamp to edge and a range test)
+  bool polygonMode = false;        // glPolygonMode wireframe (4.1; WebGL2: none)
+  bool getTexImage = false;        // glGetTexImage (4.1; WebGL2: read back through a framebuffer)
+  bool floatColorBuffers = false;  // render into RGBA32F/RG32F (4.1; WebGL2: EXT_color_buffer_float)
+  bool floatLinear = false;        // linear filtering of 32-bit float textures (WebGL2: OES_texture_float_linear)
+  int maxTextureSize = 0;          // GL_MAX_TEXTURE_SIZE: render targets and textures, a side
   int maxRenderbufferSize = 0;
   int maxViewport[2] = {0, 0};  // GL_MAX_VIEWPORT_DIMS
   bool atLeast(int ma, int mi) const { return major > ma || (major == ma && minor >= mi); }

@@ -10,6 +10,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/glsl_es.hpp"
 #include "core/paths.hpp"
 #include "gl/caps.hpp"
 #include "gl/debug.hpp"
@@ -155,7 +156,10 @@ void Program::start() {
   try {
     for (const auto& file : stageFiles()) {
       pending_->sources.push_back(loadShaderSource(root + "/" + file, {root}));
-      const std::string text = withDefines(pending_->sources.back().text, defines_);
+      std::string text = withDefines(pending_->sources.back().text, defines_);
+      // What the context lacks, for the shaders' fallbacks: no border clamp (test the range).
+      if (!caps().clampToBorder) text = withDefines(text, {"SHADOWLAB_NO_BORDER_CLAMP"});
+      if (caps().gles) text = toGlslEs(text);  // WebGL2: GLSL ES 3.00 (core/glsl_es.hpp)
       ShaderHandle shader(glCreateShader(glStage(stageFromPath(file))));
       const char* src = text.c_str();
       glShaderSource(shader.id(), 1, &src, nullptr);

@@ -1,5 +1,7 @@
 #include "gl/shadow_map.hpp"
 
+#include "gl/caps.hpp"
+
 #include <stdexcept>
 
 namespace shadowlab::gl {
@@ -97,7 +99,14 @@ void beginShadowPass(const ShadowMap& map, int face) {
 }
 
 namespace {
+// Outside the map is lit: a border of depth 1. Without GL_CLAMP_TO_BORDER (WebGL2) the edge is
+// clamped and the shaders test the range instead (SHADOWLAB_NO_BORDER_CLAMP, gl/program.cpp).
 void clampToBorder(GLuint s) {
+  if (!caps().clampToBorder) {
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+      glSamplerParameteri(s, wrap, GL_CLAMP_TO_EDGE);
+    return;
+  }
   const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
   glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);

@@ -1,5 +1,7 @@
 #include "gl/timer.hpp"
 
+#include "gl/caps.hpp"
+
 #include <chrono>
 #include <numeric>
 #include <stdexcept>
@@ -52,7 +54,7 @@ void GpuTimers::begin(const std::string& name) {
     slot.pending = false;
   }
   if (sync_) glFinish();  // earlier work must not be billed to this pass
-  glQueryCounter(slot.start.id(), GL_TIMESTAMP);
+  if (caps().timerQuery) glQueryCounter(slot.start.id(), GL_TIMESTAMP);
   openCpuStart_ = cpuNowMs();
 }
 
@@ -62,7 +64,7 @@ void GpuTimers::end() {
   Pass& p = passes_[open_];
   checkPassErrors("the end of", p.name);
   Slot& slot = p.ring[p.next];
-  glQueryCounter(slot.stop.id(), GL_TIMESTAMP);
+  if (caps().timerQuery) glQueryCounter(slot.stop.id(), GL_TIMESTAMP);
   if (sync_) glFinish();
   slot.cpuMs = cpuNowMs() - openCpuStart_;
   slot.frame = frame_;
@@ -78,14 +80,16 @@ void GpuTimers::collect() {
     for (int k = 0; k < kRing; ++k) {  // oldest first: the slot begin() reuses next
       Slot& slot = p.ring[(p.next + k) % kRing];
       if (!slot.pending) continue;
-      GLint ready = 0;
-      glGetQueryObjectiv(slot.stop.id(), GL_QUERY_RESULT_AVAILABLE, &ready);
-      if (!ready) break;  // later ones are not ready either
       GLuint64 start = 0, stop = 0;
-      glGetQueryObjectui64v(slot.start.id(), GL_QUERY_RESULT, &start);
-      glGetQueryObjectui64v(slot.stop.id(), GL_QUERY_RESULT, &stop);
+      if (caps().timerQuery) {  // else (WebGL2) the pass's CPU time stands for both
+        GLint ready = 0;
+        glGetQueryObjectiv(slot.stop.id(), GL_QUERY_RESULT_AVAILABLE, &ready);
+        if (!ready) break;  // later ones are not ready either
+        glGetQueryObjectui64v(slot.start.id(), GL_QUERY_RESULT, &start);
+        glGetQueryObjectui64v(slot.stop.id(), GL_QUERY_RESULT, &stop);
+      }
       slot.pending = false;
-      t.lastGpuMs = double(stop - start) * 1e-6;
+      t.lastGpuMs = caps().timerQuery ? double(stop - start) * 1e-6 : slot.cpuMs;
       t.lastCpuMs = slot.cpuMs;
       if (keep_) samples_.push_back({p.name, slot.frame, t.lastGpuMs, t.lastCpuMs});
       pushWindow(p.gpuHistory, t.lastGpuMs, kWindow);

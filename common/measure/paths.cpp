@@ -1,5 +1,7 @@
 #include "measure/paths.hpp"
 
+#include "core/decimal.hpp"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -151,11 +153,7 @@ void CameraLightPath::save(const std::string& path) const {
 
 namespace {
 // A finite decimal number and nothing else ("1x", "nan", "inf", "0x10" and "" are not).
-bool parseFinite(const std::string& token, double& out) {
-  const char* end = token.data() + token.size();
-  const auto [ptr, ec] = std::from_chars(token.data(), end, out);
-  return ec == std::errc() && ptr == end && std::isfinite(out);
-}
+bool parseFinite(const std::string& token, double& out) { return parseDecimal(token, out); }
 
 // The key's 13 numbers, each finite: time, camera, target, light position, light direction.
 std::array<double, 13> keyNumbers(std::istringstream& words, const std::function<void(const std::string&)>& fail) {

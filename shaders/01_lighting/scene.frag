@@ -22,7 +22,7 @@ uniform bool uTwoSided;
 uniform int uView;            // 0 lit, 1 normals, 2 albedo, 3 ndc remap, 4 vertex colour (CPU)
 uniform mat4 uNdcToTexture;   // exercise 01.2, used by the ndc view
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 // Specialised by the lesson (a variant per set): LIGHT_COUNT n, LIGHT_KINDS k0, k1, k2, k3, VIEW v,
 // BLINN 0|1. A software renderer pays for every branch a uniform would switch, so the program is

@@ -26,7 +26,7 @@ uniform float uBias;                 // in-shader constant bias, in texture dept
 uniform float uMapSize;
 uniform int uView;                   // 0 lit, 1 visibility, 2 light-space depth
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 // Specialised by the lesson: COMPARE c and VIEW v as constants (a software renderer pays for every
 // branch a uniform would switch); without them the same code reads the uniforms.
@@ -51,6 +51,9 @@ float shadowVisibility(vec4 s) {
   if (COMPARE == 1) return shadowLookup(uShadowDepth, s, uBias);
   if (s.w <= 0.0) return 1.0;       // behind the light: the spot cone is zero there
   if (s.z / s.w > 1.0) return 1.0;  // beyond the light's far plane: nothing known
+#ifdef SHADOWLAB_NO_BORDER_CLAMP  // WebGL2: outside the map is lit, as the sampler's border says natively
+  if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, s.ww))) return 1.0;
+#endif
   return textureProj(uShadowMap, vec4(s.xy, s.z - uBias * s.w, s.w));
 }
 

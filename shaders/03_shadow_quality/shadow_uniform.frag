@@ -51,6 +51,9 @@ const vec2 POISSON[16] = vec2[](
     vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590), vec2(0.19984126, 0.78641367), vec2(0.14383161, -0.14100790));
 
 float tap2D(int i, vec3 p) {
+#ifdef SHADOWLAB_NO_BORDER_CLAMP  // WebGL2: outside the map is lit, as the sampler's border says natively
+  if (any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)))) return 1.0;
+#endif
   switch (i) {
     case 0: return textureLod(uShadowMap0, p, 0.0);
     case 1: return textureLod(uShadowMap1, p, 0.0);

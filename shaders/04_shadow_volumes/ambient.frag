@@ -17,7 +17,7 @@ uniform bool uUseTexture;
 uniform sampler2D uTexture;
 uniform bool uTwoSided;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main() {
   vec3 N = normalize(vNormal);

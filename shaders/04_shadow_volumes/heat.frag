@@ -4,7 +4,7 @@
 // the stencil buffer shows as a heatmap without reading it.
 #include "common/measure.glsl"
 uniform vec4 uColor;
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 void main() {
   fragColor = uColor;
   writeNoMeasurement();

@@ -19,7 +19,7 @@ uniform bool uUseTexture;
 uniform sampler2D uTexture;
 uniform bool uTwoSided;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 // Specialised per light kind (LIGHT_KIND k, from the technique): the kind's branches fold away.
 Light passLight() {

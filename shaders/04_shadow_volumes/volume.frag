@@ -4,7 +4,7 @@
 // views draw them in uColor.
 #include "common/measure.glsl"
 uniform vec4 uColor;
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 void main() {
   fragColor = gl_FrontFacing ? uColor : vec4(uColor.rgb * 0.6, uColor.a);
   writeNoMeasurement();

@@ -8,7 +8,7 @@ uniform sampler2D uSource;
 uniform vec2 uDirection;  // (1 / width, 0) or (0, 1 / height)
 uniform int uRadius;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main() {
   float sigma = max(float(uRadius) * 0.5, 0.5);

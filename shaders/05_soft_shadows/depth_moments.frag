@@ -17,7 +17,7 @@ uniform int uKind;         // 0 VSM, 1 ESM, 2 EVSM2, 3 EVSM4, 4 MSM: one program
                            // pass is not where the time goes
 uniform bool uMsm16;       // MSM: store the quantised form (an RGBA16 target)
 
-out vec4 fragMoments;
+layout(location = 0) out vec4 fragMoments;
 
 // Peters and Klein's optimised quantisation (soft::msmQuantise): the moments spread over [0, 1].
 const mat4 kMsmQuantise = mat4(-2.07224649, 13.7948857237, 0.105877704, 9.7924062118,

@@ -12,7 +12,7 @@ uniform vec3 uGridStep;
 uniform float uGridSlice;
 uniform int uLight;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main() {
   vec3 p = uGridOrigin + uGridStep * vec3(floor(gl_FragCoord.xy), uGridSlice);

@@ -4,7 +4,7 @@
 uniform usampler2D uChildCounts;
 uniform int uChildSize;
 
-out uvec4 outCount;
+layout(location = 0) out uvec4 outCount;
 
 uvec4 childCount(ivec2 c) {
   if (c.x >= uChildSize || c.y >= uChildSize) return uvec4(0u);

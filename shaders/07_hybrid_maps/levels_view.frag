@@ -14,7 +14,7 @@ uniform int uLevels, uSize;
 uniform bool uPerspective;  // a spot's map: window depth linearised for the shading
 uniform float uNear, uFar;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main() {
   vec2 texel = vUv * float(uSize);

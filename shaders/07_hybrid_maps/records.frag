@@ -1,5 +1,5 @@
 #version 410 core
 // Writes the record its point carries (records.vert).
 flat in uvec4 vRecord;
-out uvec4 outRecord;
+layout(location = 0) out uvec4 outRecord;
 void main() { outRecord = vRecord; }

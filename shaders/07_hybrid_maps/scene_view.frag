@@ -23,7 +23,7 @@ uniform bool uTwoSided;
 uniform int uSceneView;  // 0 levels, 1 steps
 uniform int uViewLight;  // -1: none has a map (everything grey)
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main() {
   vec3 N = normalize(vNormal);

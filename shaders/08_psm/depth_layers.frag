@@ -6,7 +6,7 @@
 in vec2 vUv;
 uniform sampler2DArray uLayers;  // through a raw (non-comparing) sampler
 uniform int uCount;
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main() {
   float x = vUv.x * float(uCount);

@@ -18,7 +18,7 @@ uniform bool uUseTexture;
 uniform sampler2D uTexture;
 uniform float uAlphaCutoff;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 const vec3 kCascadeColours[4] = vec3[](vec3(1.0, 0.35, 0.3), vec3(0.35, 1.0, 0.35), vec3(0.35, 0.55, 1.0),
                                        vec3(1.0, 0.9, 0.3));

@@ -9,7 +9,7 @@ uniform sampler2D uDepth;     // the depth texture through a raw (non-comparing)
 uniform bool uPerspective;    // spot light: window depth is hyperbolic in distance
 uniform float uNear, uFar;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main() {
   float d = texture(uDepth, vUv).r;

@@ -1,7 +1,7 @@
 #version 410 core
 #include "common/measure.glsl"
 in vec4 gColor;
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 void main() {
   fragColor = gColor;
   writeNoMeasurement();

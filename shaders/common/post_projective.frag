@@ -6,7 +6,7 @@ in vec4 vView;
 in vec2 vDepth;
 uniform vec3 uAlbedo;
 uniform float uSign;
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main() {
   vec3 p = vView.xyz / vView.w;

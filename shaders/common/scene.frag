@@ -40,7 +40,7 @@ uniform float uAlphaCutoff;
 uniform bool uTwoSided;
 uniform int uView;  // 0 lit, 1 the visibility of the measured light (light 0 when none is measured)
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 #ifdef LIGHT_COUNT
 const bool kLightOn[MAX_LIGHTS] = bool[](LIGHT_ON);

@@ -1,7 +1,7 @@
 #version 410 core
 #include "common/measure.glsl"
 uniform vec4 uColor;
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 void main() {
   fragColor = uColor;
   writeNoMeasurement();  // gizmos are not surfaces the ground truth should judge

@@ -1,0 +1,17 @@
+#pragma once
+// Who calls the frames. Natively the lesson owns the loop; in a browser the page does (one call per
+// animation frame, emscripten_set_main_loop), so the loop is a function of the platform, given
+// one step: step(frame) draws that frame, or returns the run's exit code when the run is over.
+#include <functional>
+#include <optional>
+
+namespace shadowlab {
+
+using FrameStep = std::function<std::optional<int>(int frame)>;
+
+// Natively: step(0), step(1), ... until one returns an exit code, which this returns. In a browser
+// (frame_loop_web.cpp) it returns 0 at once and the page's animation frames call step; the exit
+// code goes to the page (Module.onLessonExit(code)) when the run ends.
+int runFrames(FrameStep step);
+
+}  // namespace shadowlab
