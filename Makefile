@@ -1,6 +1,7 @@
 # shadowlab: two commands do everything (each installs what is missing first).
 #   make run    the course: a launcher window, or without a display every lesson rendered into out/tour/
 #   make test   every test through ctest, headless
+#   make web    the lessons as WebGL2 pages in build/web/site (Debian's emscripten); make serve shows them
 # Also: make build, make slides, make docs, make grade LESSON=01, make bench, make soak, make fuzz, make stub-hashes, make format, make clean;
 # instructors: make handout (the student tree), make grade-submission SUBMISSION=DIR (public + hidden cases),
 # make gradescope [LESSONS=03,05] (the Gradescope autograder zip), make grade-class SUBMISSIONS=DIR.
@@ -9,12 +10,12 @@ BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: run test build deps configure web slides docs grade bench soak fuzz fuzz-build stub-hashes clean tour format handout grade-submission gradescope grade-class
+.PHONY: run test build deps configure node-tools web serve slides docs grade bench soak fuzz fuzz-build stub-hashes clean tour format handout grade-submission gradescope grade-class
 
 deps:
 	@bash tools/install-deps.sh
 
-web: deps
+node-tools: deps
 	@if [ ! -f tools/web/node_modules/.package-lock.json ] || [ tools/web/package-lock.json -nt tools/web/node_modules/.package-lock.json ]; then \
 	  echo "npm: installing tools/web (reveal.js, KaTeX, playwright-core)"; npm ci --prefix tools/web --no-audit --no-fund; fi
 
@@ -23,6 +24,13 @@ configure: deps
 
 build: configure
 	@cmake --build --preset $(PRESET) -j $(JOBS)
+
+# The browser build: static pages (index.html and one page per lesson) for any web host.
+web: node-tools build
+	@SHADOWLAB_BIN=$(BUILD)/bin bash tools/wasm/build.sh build/web
+
+serve: web
+	@node tools/wasm/serve.mjs build/web/site $(PORT)
 
 run: build
 	@$(BUILD)/bin/shadowlab
@@ -33,7 +41,7 @@ tour: build
 # Everything: unit, stress, shaders, GPU (headless EGL), graders' validity, slides and web pages;
 # then the GL-free layers again under AddressSanitizer + UndefinedBehaviorSanitizer. Student
 # grading (-L exNN) is left out: it grades exercises.cpp, which holds stubs until a student fills it.
-test: web build
+test: node-tools build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE '^ex[0-9]+$$' $(CTEST_ARGS)
 	@cmake --preset sanitize >/dev/null && cmake --build --preset sanitize -j $(JOBS)
 	@cd build/sanitize && ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -L unit
@@ -48,7 +56,7 @@ fuzz-build: deps
 fuzz: fuzz-build
 	@bash tools/fuzz.sh build/fuzz $(FUZZ_RUNS)
 
-slides: web build
+slides: node-tools build
 	@node tools/slides/build.mjs --bin $(BUILD)/bin --out out/slides
 
 # The generated parts of the READMEs (each lesson's hotkeys and presets, the top README's lessons

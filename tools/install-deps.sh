@@ -24,6 +24,7 @@ packages=(
   clang libclang-rt-dev  # libFuzzer targets (tests/fuzz): make fuzz, and a short run in make test
   chromium nodejs npm  # slides and HTML reports, tested in headless Chromium
   g++-mingw-w64-x86-64-posix  # the GL-free libraries cross-compiled for Windows (portability.mingw)
+  emscripten dpkg-dev  # the lessons in the browser (make web); dpkg-source unpacks Debian's sources for it
 )
 
 case ${1:-} in

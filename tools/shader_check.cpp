@@ -132,7 +132,8 @@ std::string cleanLog(const std::string& log, const fs::path& temporary, const st
 struct Stage {
   std::string path;
   std::vector<std::string> defines;
-  std::string origin;  // "LOG:LINE (program 'LABEL')"; empty for a file named on the command line
+  std::string origin;             // "LOG:LINE (program 'LABEL')"; empty for a file named on the command line
+  std::vector<std::string> more;  // --es: the program's other files of this stage, compiled as one
 };
 
 // "with defines {LIGHT_COUNT 2, PCSS}"
@@ -155,7 +156,10 @@ bool checkShader(const Stage& stage, const std::vector<std::string>& includeDirs
       err << path << ":1: error: the first line must be '" << kRequiredVersion << "'\n";
       return false;
     }
-    const ShaderSource source = loadShaderSource(path, includeDirs);
+    std::vector<std::string> paths{path};
+    paths.insert(paths.end(), stage.more.begin(), stage.more.end());
+    const ShaderSource source =
+        paths.size() == 1 ? loadShaderSource(path, includeDirs) : loadShaderSources(paths, includeDirs);
     files = source.files;
 
     // The pid and a serial keep parallel ctest runs from overwriting each other's temporaries.
@@ -224,9 +228,25 @@ bool readVariants(const std::vector<std::string>& logs, const std::string& root,
       }
       const std::string origin = log + ":" + std::to_string(number) + " (program '" + fields[0] + "')";
       const std::vector<std::string> defines(fields.begin() + 2, fields.end());
+      // One shader a file; with --es one a stage, its files merged as gl::Program merges them.
+      // A program with a geometry stage is not built in WebGL2 (its user takes a fallback, which
+      // the test names on its own command line): --es leaves it out.
+      if (g_es && fields[1].find(".geom") != std::string::npos) continue;
+      std::vector<std::vector<std::string>> units;
       for (const std::string& file : splitOn(fields[1], ' ')) {
-        if (!file.empty() && seen.insert({file, defines}).second)
-          stages.push_back({root + "/" + file, defines, origin});
+        if (file.empty()) continue;
+        auto same = std::find_if(units.begin(), units.end(),
+                                 [&](const auto& u) { return stageFromPath(u.front()) == stageFromPath(file); });
+        if (g_es && same != units.end()) same->push_back(file);
+        else units.push_back({file});
+      }
+      for (const std::vector<std::string>& unit : units) {
+        std::string key;
+        for (const std::string& file : unit) key += file + " ";
+        if (!seen.insert({key, defines}).second) continue;
+        Stage stage{root + "/" + unit.front(), defines, origin, {}};
+        for (std::size_t i = 1; i < unit.size(); ++i) stage.more.push_back(root + "/" + unit[i]);
+        stages.push_back(std::move(stage));
       }
     }
   }

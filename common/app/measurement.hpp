@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/attachments.hpp"
 #include "core/image.hpp"
 #include "core/light.hpp"
 #include "core/params.hpp"
@@ -47,9 +48,9 @@ class GroundTruth;
 // alternative to writeNoMeasurement() in the shader, for overlays that must not erase what is below.
 template <class Draw>
 void withoutMeasurement(Draw&& draw) {
-  for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  for (GLuint a = 1; a <= 3; ++a) gl::colorMaskAttachment(a, false);
   draw();
-  for (GLuint a = 1; a <= 3; ++a) glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  for (GLuint a = 1; a <= 3; ++a) gl::colorMaskAttachment(a, true);
 }
 
 // What a lesson hands the framework so it can be measured.

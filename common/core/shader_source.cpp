@@ -87,17 +87,41 @@ class Expander {
   explicit Expander(const std::vector<std::string>& includeDirs) : includeDirs_(includeDirs) {}
 
   ShaderSource run(const std::string& path) {
+    expand(locate(path), /*top=*/true);
+    return std::move(result_);
+  }
+
+  // loadShaderSources: the first file as run() does, then each other one appended, its #version
+  // line blank and its repeated uniform declarations left out.
+  ShaderSource runAll(const std::vector<std::string>& paths) {
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+      merging_ = i > 0;
+      const fs::path file = locate(paths[i]);
+      if (expanded_.count(file) == 0) expand(file, /*top=*/i == 0);
+    }
+    return std::move(result_);
+  }
+
+ private:
+  fs::path locate(const std::string& path) const {
     std::error_code ec;
     fs::path canonical = fs::canonical(path, ec);
     if (ec || !fs::is_regular_file(canonical, ec)) {
       canonical = virtualPath(fs::path(path)).value_or(fs::path());
       if (canonical.empty()) throw ShaderSourceError("cannot open shader file '" + path + "'");
     }
-    expand(canonical, /*top=*/true);
-    return std::move(result_);
+    return canonical;
   }
 
- private:
+  // While merging (runAll): a line this merged text must drop, a blank kept in its place.
+  bool dropWhenMerging(const std::string& line, const std::string& directive) {
+    if (directive == "version") return merging_;
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line.compare(start, 8, "uniform ") != 0) return false;
+    const bool seen = !uniforms_.insert(line.substr(start)).second;
+    return merging_ && seen;
+  }
+
   void expand(const fs::path& file, bool top) {
     const auto standIn = standIns_.find(file);
     const fs::path source = standIn != standIns_.end() ? standIn->second : file;  // what is read
@@ -127,7 +151,12 @@ class Expander {
       const std::string& line = lines[i];
       const std::size_t lineNumber = i + 1;
       std::size_t rest = 0;
-      if (!inBlockComment && directiveName(line, rest) == "include") {
+      const std::string directive = inBlockComment ? "" : directiveName(line, rest);
+      if (!inBlockComment && dropWhenMerging(line, directive)) {
+        out() += '\n';
+        continue;
+      }
+      if (directive == "include") {
         const std::string target = parseIncludeTarget(line, rest, name, lineNumber);
         if (includeFile(target, file, lineNumber)) {
           emitLine(lineNumber + 1, index);  // back in this file, after the directive
@@ -284,6 +313,8 @@ class Expander {
   std::set<fs::path> expanded_;            // every file expanded so far: include-once
   std::map<fs::path, fs::path> standIns_;  // a withheld file's path -> the stand-in read in its place
   std::size_t versionLine_ = static_cast<std::size_t>(-1);
+  bool merging_ = false;            // runAll, past the first file
+  std::set<std::string> uniforms_;  // every uniform declaration line so far, trimmed in front
 };
 
 // "ERROR" -> "error", so every mapped line reads like a compiler diagnostic that editors parse.
@@ -302,6 +333,11 @@ bool parseIndex(const std::string& digits, std::size_t& out) {
 
 ShaderSource loadShaderSource(const std::string& path, const std::vector<std::string>& includeDirs) {
   return Expander(includeDirs).run(path);
+}
+
+ShaderSource loadShaderSources(const std::vector<std::string>& paths, const std::vector<std::string>& includeDirs) {
+  if (paths.empty()) throw ShaderSourceError("loadShaderSources: no files");
+  return Expander(includeDirs).runAll(paths);
 }
 
 std::string withDefines(const std::string& text, const std::vector<std::string>& defines) {

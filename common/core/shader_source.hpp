@@ -50,6 +50,12 @@ struct ShaderSource {
 // kMaxIncludeDepth files deep (an error naming the file and line past it).
 inline constexpr std::size_t kMaxIncludeDepth = 64;
 ShaderSource loadShaderSource(const std::string& path, const std::vector<std::string>& includeDirs);
+// Several files of one stage as ONE source, for GLSL ES (WebGL2), which links a single shader per
+// stage where desktop GL links several (a technique's visibility file beside the scene shader):
+// each file after the first is expanded in turn, its #version line blanked, includes expanded once
+// across all of them, and a `uniform` declaration that an earlier file made word for word left out
+// (desktop GL links the two as one uniform; in one source the second would be a redefinition).
+ShaderSource loadShaderSources(const std::vector<std::string>& paths, const std::vector<std::string>& includeDirs);
 
 // `text` (a loadShaderSource result, #version first) specialised by `defines` ("NAME" or "NAME VALUE"):
 // one "#define NAME VALUE" line each right after #version, then a #line so logs keep the file's own

@@ -145,6 +145,19 @@ std::vector<std::string> Program::stageFiles() const {
   return files;
 }
 
+// The shaders to compile, each a list of files: one file each, or in OpenGL ES (one shader per
+// stage) each stage's files as one source (core/shader_source's loadShaderSources).
+std::vector<std::vector<std::string>> Program::compileUnits() const {
+  std::vector<std::vector<std::string>> units;
+  for (const std::string& file : stageFiles()) {
+    auto same = std::find_if(units.begin(), units.end(),
+                             [&](const auto& u) { return stageFromPath(u.front()) == stageFromPath(file); });
+    if (caps().gles && same != units.end()) same->push_back(file);
+    else units.push_back({file});
+  }
+  return units;
+}
+
 // Compiles every stage and links, without waiting for the results: with
 // GL_KHR_parallel_shader_compile the driver does the work on its own threads.
 void Program::start() {
@@ -154,8 +167,12 @@ void Program::start() {
   const std::string root = shaderRoot();
   recordVariant(label_, stageFiles(), defines_);
   try {
-    for (const auto& file : stageFiles()) {
-      pending_->sources.push_back(loadShaderSource(root + "/" + file, {root}));
+    for (const std::vector<std::string>& unit : compileUnits()) {
+      std::vector<std::string> paths;
+      for (const std::string& file : unit) paths.push_back(root + "/" + file);
+      pending_->sources.push_back(paths.size() == 1 ? loadShaderSource(paths[0], {root})
+                                                    : loadShaderSources(paths, {root}));
+      const std::string& file = unit.front();
       std::string text = withDefines(pending_->sources.back().text, defines_);
       // What the context lacks, for the shaders' fallbacks: no border clamp (test the range).
       if (!caps().clampToBorder) text = withDefines(text, {"SHADOWLAB_NO_BORDER_CLAMP"});
@@ -237,7 +254,7 @@ bool Program::reloadIfChanged() {
   if (t - lastPoll_ < 0.25) return false;
   lastPoll_ = t;
   const bool changed =
-      sources_.size() < stageFiles().size() ||
+      sources_.size() < compileUnits().size() ||
       std::any_of(sources_.begin(), sources_.end(), [](const ShaderSource& s) { return dependenciesChanged(s); });
   if (!changed) return false;
   sources_.clear();

@@ -75,6 +75,7 @@ class Program {
   void start();
   bool finish();
   std::vector<std::string> stageFiles() const;
+  std::vector<std::vector<std::string>> compileUnits() const;
 
   std::string label_;
   std::vector<std::string> files_;

@@ -12,7 +12,8 @@ GLenum wrapEnum(sampling::Wrap wrap) {
     case sampling::Wrap::Repeat: return GL_REPEAT;
     case sampling::Wrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
     case sampling::Wrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
-    case sampling::Wrap::ClampToBorder: return GL_CLAMP_TO_BORDER;
+    case sampling::Wrap::ClampToBorder:  // WebGL2: to the edge, and the shader paints the border
+      return caps().clampToBorder ? GL_CLAMP_TO_BORDER : GL_CLAMP_TO_EDGE;
   }
   return GL_REPEAT;
 }
@@ -110,8 +111,8 @@ float applySamplerState(GLuint sampler, const sampling::SamplerState& s) {
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_R, GLint(wrapEnum(s.wrapS)));
   glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GLint(magFilterEnum(s.mag)));
   glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GLint(minFilterEnum(s.min, s.mip)));
-  glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, &s.border.x);
-  glSamplerParameterf(sampler, GL_TEXTURE_LOD_BIAS, s.lodBias);
+  if (caps().clampToBorder) glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, &s.border.x);
+  if (!caps().gles) glSamplerParameterf(sampler, GL_TEXTURE_LOD_BIAS, s.lodBias);  // ES: the shader's bias
   float aniso = 1.0f;
   if (caps().anisotropic) {
     aniso = std::clamp(s.maxAniso, 1.0f, caps().maxAnisotropy);

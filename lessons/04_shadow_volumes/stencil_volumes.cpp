@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/measurement.hpp"
+#include "gl/caps.hpp"
 #include "gl/scene_draw.hpp"
 #include "technique/scene_cache.hpp"
 
@@ -37,13 +38,17 @@ void StencilVolumes::declare(ParamRegistry& r, const std::string& n) {
 
 void StencilVolumes::init() {
   for (gl::Program* p : {&ambient_, &volume_, &heat_}) p->build();
-  volumeGs_.build();
+  if (gl::caps().geometryShaders) volumeGs_.build();  // WebGL2 has none: silhouettes=gpu runs on the CPU
   emptyVao_ = gl::makeVertexArray("volumes: fullscreen triangle");
   lineVao_ = gl::makeVertexArray("volumes: silhouette lines");
   lineBuffer_ = gl::makeBuffer(GL_ARRAY_BUFFER, "volumes: silhouette lines");
 }
 
 bool StencilVolumes::casts(std::size_t o) const { return o < casting_.size() && casting_[o]; }
+bool StencilVolumes::gpuSilhouettes() const {
+  return p_.silhouettes == P::Silhouettes::Gpu && gl::caps().geometryShaders;
+}
+bool StencilVolumes::depthClamp() const { return p_.far == P::FarPlane::DepthClamp && gl::caps().depthClamp; }
 
 // ==== 0. edge adjacency, once per mesh: silhouettes later, closedness now =====================
 void StencilVolumes::buildAdjacency(const SceneCache& cache) {
@@ -120,7 +125,7 @@ StencilVolumes::Frame StencilVolumes::beginFrame(const ShadowContext& c) {
   const float aspect = float(fi.width) / float(fi.height);
   Frame f{c};
   glm::mat4 proj = fi.projection;
-  if (p_.far == P::FarPlane::Infinite)
+  if (!depthClamp())  // far=infinite, or no depth clamp here (WebGL2 without EXT_depth_clamp)
     proj = student.infinitePerspective && !fi.godView
                ? student.infinitePerspective(c.viewer.fovY, aspect, c.viewer.nearZ, volume::kInfiniteEpsilon)
                : volume::makeFarInfinite(fi.projection);
@@ -162,9 +167,17 @@ void StencilVolumes::finishFrame(const Frame& f) {
                                       (p_.openMeshes == P::OpenMeshes::Skip ? " (cast nothing)" : " (z-pass only)")},
                   {"open edges", std::to_string(openEdges)},
                   {"silhouette edges", std::to_string(shown.silhouette.size() / 2)}};
+  // What the parameters ask for and this context cannot do (WebGL2): said, never silently swapped.
+  if (p_.silhouettes == P::Silhouettes::Gpu && !gpuSilhouettes())
+    stats_.extra.push_back({"silhouettes", "on the CPU: no geometry shaders in WebGL2"});
+  if (p_.far == P::FarPlane::DepthClamp && !depthClamp())
+    stats_.extra.push_back({"far", "infinite: no EXT_depth_clamp here"});
+  if (p_.view == P::View::Wireframe && !gl::caps().polygonMode)
+    stats_.extra.push_back({"wireframe", "drawn filled: no glPolygonMode in WebGL2"});
+  if (p_.fillQuery && gl::caps().gles) stats_.extra.push_back({"fill query", "none: WebGL2 counts no samples"});
   for (std::size_t i = 0; i < c.lights.size(); ++i) {
     stats_.bytes += caches_[i].triangles.size() * sizeof(glm::vec4);
-    if (c.lights[i].enabled && p_.fillQuery)
+    if (c.lights[i].enabled && p_.fillQuery && !gl::caps().gles)
       stats_.extra.push_back({"fill light" + std::to_string(i), std::to_string(fill_[i].samples)});
   }
 }
@@ -192,8 +205,7 @@ void StencilVolumes::renderLight(const Frame& frame, int i, const LitSettings& l
   if (p_.view == P::View::Stencil && i != p_.viewLight) return;
   const glm::vec4 L = volume::homogeneousLight(light);
   VolumeCache& cache = caches_[std::size_t(i)];
-  if (p_.silhouettes == P::Silhouettes::Cpu || p_.view == P::View::Silhouettes || i == p_.viewLight)
-    buildVolumes(c, cache, L);
+  if (!gpuSilhouettes() || p_.view == P::View::Silhouettes || i == p_.viewLight) buildVolumes(c, cache, L);
   // Which casters need z-fail: their volume can reach the viewer's near plane.
   Frame f = frame;
   f.zFail.assign(casting_.size(), 0);
@@ -217,7 +229,7 @@ void StencilVolumes::renderLight(const Frame& frame, int i, const LitSettings& l
     glScissor(s.x, s.y, s.width, s.height);
   }
   countStencil(f, i, cache, L);
-  if (p_.fillQuery && !c.frame.godView) {
+  if (p_.fillQuery && !c.frame.godView && !gl::caps().gles) {  // WebGL2 counts no samples
     auto t = gl::TimerScope(c.timers, "fill query");
     measureFill(f, i, cache, L);
   }
@@ -235,7 +247,7 @@ void StencilVolumes::countStencil(const Frame& f, int i, const VolumeCache& cach
   glDepthMask(GL_FALSE);
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_ALWAYS, 0, 0xff);
-  if (p_.far == P::FarPlane::DepthClamp) glEnable(GL_DEPTH_CLAMP);
+  if (depthClamp()) glEnable(GL_DEPTH_CLAMP);
   for (bool fail : {false, true}) {
     const volume::StencilOps ops = student.stencilOps ? student.stencilOps(fail) : volume::stencilOps(fail);
     auto set = [](GLenum face, const volume::FaceStencilOps& o) {
@@ -257,7 +269,7 @@ void StencilVolumes::countStencil(const Frame& f, int i, const VolumeCache& cach
       glCullFace(GL_BACK);
     }
   }
-  glDisable(GL_DEPTH_CLAMP);
+  if (depthClamp()) glDisable(GL_DEPTH_CLAMP);
   glEnable(GL_CULL_FACE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
@@ -274,16 +286,15 @@ void StencilVolumes::litPass(const Frame& f, int i, const LitSettings& lit) {
   // The measurement attachments (1-3) are overwritten, not summed; only the measured light
   // writes them at all (V = 1 where lit; the ambient pass left 0 everywhere else).
   for (GLuint a = 1; a <= 3; ++a) {
-    glDisablei(GL_BLEND, a);
-    const GLboolean on = i == f.c.frame.measureLight ? GL_TRUE : GL_FALSE;
-    glColorMaski(a, on, on, on, on);
+    gl::disableBlendAttachment(a);
+    gl::colorMaskAttachment(a, i == f.c.frame.measureLight);
   }
-  if (!light.enabled) glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  if (!light.enabled) gl::colorMaskAttachment(0, false);
   const gl::Program& program = lit_.get({"LIGHT_KIND " + std::to_string(int(light.kind))});
   program.use();
   gl::setLight(program, "uLight", light);
   drawScene(f, program, lit);
-  for (GLuint a = 0; a <= 3; ++a) glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  for (GLuint a = 0; a <= 3; ++a) gl::colorMaskAttachment(a, true);
   glDisable(GL_BLEND);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -292,7 +303,7 @@ void StencilVolumes::litPass(const Frame& f, int i, const LitSettings& lit) {
 // The volumes of every caster whose method is `zFail` (z-fail ones with their caps).
 void StencilVolumes::drawVolumes(const Frame& f, const VolumeCache& c, const glm::vec4& L, bool zFail) {
   const Scene& scene = f.c.scene.scene();
-  if (p_.silhouettes == P::Silhouettes::Gpu) {
+  if (gpuSilhouettes()) {
     volumeGs_.use();
     volumeGs_.set("uViewProj", f.viewProj);
     volumeGs_.set("uLight", L);
@@ -398,7 +409,7 @@ void StencilVolumes::drawVolumesView(const VolumeCache& c, const glm::mat4& view
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDepthMask(GL_FALSE);
   glDisable(GL_CULL_FACE);
-  if (wire) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  if (wire && gl::caps().polygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
   volume_.use();
   volume_.set("uViewProj", viewProj);
   volume_.set("uLight", c.light);
@@ -406,7 +417,7 @@ void StencilVolumes::drawVolumesView(const VolumeCache& c, const glm::mat4& view
   glBindVertexArray(c.vao.id());
   withoutMeasurement([&] { glDrawArrays(GL_TRIANGLES, 0, GLsizei(c.triangles.size())); });
   gl::countDraws();
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  if (gl::caps().polygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glEnable(GL_CULL_FACE);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);

@@ -110,6 +110,10 @@ class StencilVolumes : public ShadowTechnique {
   void render(const ShadowContext& c) override;
 
   bool casts(std::size_t object) const;
+  // What this context runs of the parameters: WebGL2 has no geometry shader (silhouettes on the
+  // CPU), may lack EXT_depth_clamp (the infinite far plane) and glPolygonMode (the wireframe filled).
+  bool gpuSilhouettes() const;
+  bool depthClamp() const;
   void buildAdjacency(const SceneCache& scene);
   void buildVolumes(const ShadowContext& c, VolumeCache& cache, const glm::vec4& light);
   void countStencil(const Frame& f, int light, const VolumeCache& cache, const glm::vec4& L);

@@ -253,6 +253,11 @@ class TextureFilteringLesson : public Lesson {
     program.set("uLightPos",
                 camera.target + glm::vec3(3.0f * std::cos(p_.lightAngle), 1.0f, 3.0f * std::sin(p_.lightAngle)));
     program.set("uLodBias", s.lodBias);
+    // Without GL_CLAMP_TO_BORDER (WebGL2) the shader paints the border colour where a clamp_to_border axis leaves
+    // [0,1].
+    program.set("uWrapBorder",
+                glm::vec2(s.wrapS == sampling::Wrap::ClampToBorder, s.wrapT == sampling::Wrap::ClampToBorder));
+    program.set("uBorderColor", s.border);
     program.set("uMaxAniso", float(gl::caps().anisotropic ? std::min(s.maxAniso, gl::caps().maxAnisotropy) : 1.0f));
     program.set("uSlice", p_.slice);
     const gl::FilterTexture& tex = textures_.texture;

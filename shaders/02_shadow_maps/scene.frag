@@ -52,7 +52,7 @@ float shadowVisibility(vec4 s) {
   if (s.w <= 0.0) return 1.0;       // behind the light: the spot cone is zero there
   if (s.z / s.w > 1.0) return 1.0;  // beyond the light's far plane: nothing known
 #ifdef SHADOWLAB_NO_BORDER_CLAMP  // WebGL2: outside the map is lit, as the sampler's border says natively
-  if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, s.ww))) return 1.0;
+  if (s.xy != clamp(s.xy, vec2(0.0), s.ww)) return 1.0;
 #endif
   return textureProj(uShadowMap, vec4(s.xy, s.z - uBias * s.w, s.w));
 }

@@ -52,7 +52,7 @@ const vec2 POISSON[16] = vec2[](
 
 float tap2D(int i, vec3 p) {
 #ifdef SHADOWLAB_NO_BORDER_CLAMP  // WebGL2: outside the map is lit, as the sampler's border says natively
-  if (any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)))) return 1.0;
+  if (p.xy != clamp(p.xy, 0.0, 1.0)) return 1.0;
 #endif
   switch (i) {
     case 0: return textureLod(uShadowMap0, p, 0.0);

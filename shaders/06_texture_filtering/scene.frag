@@ -42,6 +42,10 @@ uniform vec3 uLightPos;
 uniform vec3 uEye;
 uniform ivec2 uTexSize;
 uniform float uLodBias;
+#ifdef SHADOWLAB_NO_BORDER_CLAMP
+uniform vec2 uWrapBorder;  // 1 on an axis whose wrap is clamp_to_border
+uniform vec4 uBorderColor;
+#endif
 uniform float uMaxAniso;
 uniform float uSlice;
 uniform int uRipLevels[2];     // levels along x and y
@@ -107,17 +111,35 @@ mat3 cotangentFrame(vec3 N, vec3 p, vec2 uv) {
   return mat3(T * s, B * s, N);
 }
 
+#ifdef SHADOWLAB_GLES
+// GLSL ES 3.00 (WebGL2) has no textureQueryLod, nor a sampler LOD bias: the level the textbook
+// computes from the derivatives stands in for the hardware's, and the bias goes to the lookup.
+vec2 queryLod(vec2 uv, vec2 dx, vec2 dy) {
+  vec2 size = vec2(textureSize(uTex, 0));
+  float lambda = log2(max(max(length(dx * size), length(dy * size)), 1e-8)) + uLodBias;
+  return vec2(clamp(lambda, 0.0, floor(log2(max(size.x, size.y)))), lambda);
+}
+#define TEXTURE_BIASED(s, uv) texture(s, uv, uLodBias)
+#else
+vec2 queryLod(vec2 uv, vec2 dx, vec2 dy) { return textureQueryLod(uTex, uv); }
+#define TEXTURE_BIASED(s, uv) texture(s, uv)  // the sampler object holds the bias
+#endif
+
 void main() {
   vec2 uv = textureCoordinates() * uUvScale;
   vec2 dx = dFdx(uv), dy = dFdy(uv);
-  vec2 hwLod = textureQueryLod(uTex, uv);  // (level used, lambda): what the hardware computed
+  vec2 hwLod = queryLod(uv, dx, dy);  // (level used, lambda): what the hardware computed
   fragUv = vec4(uv, 1.0, hwLod.y);
   fragDerivs = vec4(dx, dy);
 
   vec4 tex;
   if (SAMPLING_ == 1) tex = sampleRip(uv, dx, dy);
   else if (SAMPLING_ == 2) tex = texture(uVolume, vec3(uv, uSlice));
-  else tex = texture(uTex, uv);
+  else tex = TEXTURE_BIASED(uTex, uv);
+#ifdef SHADOWLAB_NO_BORDER_CLAMP  // WebGL2: clamp_to_border is clamp_to_edge, and the border painted here
+  bvec2 outside = bvec2(uv.x < 0.0 || uv.x > 1.0, uv.y < 0.0 || uv.y > 1.0);
+  if ((outside.x && uWrapBorder.x > 0.5) || (outside.y && uWrapBorder.y > 0.5)) tex = uBorderColor;
+#endif
 
   if (VIEW_ == 1) {  // mip level the hardware picks, over the texture's luminance
     fragColor = vec4(levelColour(hwLod.x) * (0.35 + 0.65 * dot(tex.rgb, vec3(0.333))), 1.0);

@@ -8,6 +8,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${1:-build/web}
+mkdir -p "$build"
+build=$(cd "$build" && pwd)
 command -v emcmake >/dev/null || { echo "make web: emscripten missing; make deps installs it (Debian's package)" >&2; exit 1; }
 export EM_FROZEN_CACHE=  # Debian's emscripten freezes its cache in /usr; ours is writable
 export EM_CACHE=${SHADOWLAB_EM_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/shadowlab/emscripten}
@@ -18,7 +20,7 @@ mkdir -p "$EM_CACHE"
 bash tools/wasm/debian-sources.sh "$build/debian-src"
 if [[ ! -f "$build/CMakeCache.txt" ]]; then
   emcmake cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DSHADOWLAB_WEB_SOURCES="$PWD/$build/debian-src" >/dev/null
+    -DSHADOWLAB_WEB_SOURCES="$build/debian-src" >/dev/null
 fi
 cmake --build "$build" -j "${JOBS:-$(nproc)}"
-node tools/wasm/site.mjs --build "$build"
+node tools/wasm/site.mjs --build "$build" --bin "${SHADOWLAB_BIN:-build/default/bin}"

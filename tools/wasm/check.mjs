@@ -1,0 +1,179 @@
+// check.mjs: a lesson's browser page against the same lesson built natively, in headless Chromium
+// (playwright-core, tools/web). The web tests (tests/web.cmake) run it once per lesson.
+//
+//   node tools/wasm/check.mjs --site build/web/site --bin build/default/bin --lesson 03_shadow_quality
+//        [--presets a,b:8,c] [--size 320x180] [--out DIR] [--bound 1.0] [--levels 8]
+//
+// For the default view and each preset: the page runs headless (`?headless&frames=2&size=...`,
+// the lesson's own --screenshot into the page's file system) and the native lesson renders the same
+// view; the two pictures are compared, and the share of pixels whose largest channel differs by
+// more than --levels must stay at or below --bound percent. Every page must log no WebGL error
+// (Chromium's "WebGL:" warnings, the lesson's "GL error" lines) and exit 0. Then a URL with a bad
+// parameter must show the lesson's error on the page and go on at the defaults, and a browser
+// without WebGL2 must get the page's message instead of a black canvas.
+// Exit status: 0 all held, 1 any failed (each failure one line), 2 bad usage.
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import http from 'node:http';
+import path from 'node:path';
+import { launchChromium } from '../web/check-page.mjs';
+
+const args = { size: '320x180', bound: '1.0', levels: '8', presets: '', out: '' };
+for (let i = 2; i < process.argv.length; i += 2) {
+  const key = process.argv[i].replace(/^--/, '');
+  if (!(key in args) && !['site', 'bin', 'lesson'].includes(key)) usage(`unknown option ${process.argv[i]}`);
+  args[key] = process.argv[i + 1];
+}
+function usage(why) {
+  console.error(`check.mjs: ${why}\nusage: node tools/wasm/check.mjs --site DIR --bin DIR --lesson NN_name ` +
+                '[--presets a,b,c] [--size WxH] [--out DIR] [--bound PERCENT] [--levels N]');
+  process.exit(2);
+}
+if (!args.site || !args.bin || !args.lesson) usage('--site, --bin and --lesson are required');
+const page = `lesson_${args.lesson}.html`;
+if (!fs.existsSync(path.join(args.site, page))) usage(`${args.site}/${page} missing: make web builds it`);
+const native = path.join(args.bin, `lesson_${args.lesson}`);
+if (!fs.existsSync(native)) usage(`${native} missing: make build builds it`);
+const out = args.out || fs.mkdtempSync('/tmp/shadowlab-web-');
+fs.mkdirSync(out, { recursive: true });
+
+// A static server for the site on a free port of 127.0.0.1.
+const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
+                '.data': 'application/octet-stream', '.css': 'text/css', '.png': 'image/png' };
+const server = http.createServer((req, res) => {
+  const file = path.join(args.site, decodeURIComponent(new URL(req.url, 'http://x').pathname));
+  if (!file.startsWith(path.resolve(args.site)) && !file.startsWith(args.site)) return res.writeHead(403).end();
+  fs.readFile(file, (err, body) => {
+    if (err) return res.writeHead(404).end();
+    res.writeHead(200, { 'Content-Type': types[path.extname(file)] || 'application/octet-stream' }).end(body);
+  });
+});
+await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+const base = `http://127.0.0.1:${server.address().port}/${page}`;
+
+const failures = [];
+const fail = (what) => { failures.push(what); console.log(`FAIL ${what}`); };
+const browser = await launchChromium();
+
+// Opens `url`, collecting console errors; resolves when the lesson's run ends (or after `ms`).
+async function open(url, { ms = 90000, init } = {}) {
+  const p = await browser.newPage({ viewport: { width: 800, height: 450 } });
+  const errors = [];
+  p.on('console', (m) => {
+    const t = m.text();
+    if (/WebGL: |GL error|INVALID_|shader.*(error|failed)/i.test(t)) errors.push(t);
+  });
+  p.on('pageerror', (e) => errors.push('page error: ' + e.message));
+  if (init) await p.addInitScript(init);
+  await p.goto(url);
+  return { p, errors };
+}
+async function waitExit(p, ms) {
+  await p.waitForFunction(() => window.shadowlab && window.shadowlab.exit !== undefined, null, { timeout: ms });
+  return p.evaluate(() => window.shadowlab.exit);
+}
+
+// The share (percent) of pixels whose largest channel differs by more than `levels`, computed in
+// the page from the two PNGs (the browser decodes them).
+async function compare(p, a, b, levels) {
+  const urls = [a, b].map((f) => 'data:image/png;base64,' + fs.readFileSync(f).toString('base64'));
+  return p.evaluate(async ({ urls, levels }) => {
+    const pixels = await Promise.all(urls.map(async (u) => {
+      const img = new Image();
+      img.src = u;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.width;
+      c.height = img.height;
+      const g = c.getContext('2d');
+      g.drawImage(img, 0, 0);
+      return { w: img.width, h: img.height, d: g.getImageData(0, 0, img.width, img.height).data };
+    }));
+    const [x, y] = pixels;
+    if (x.w !== y.w || x.h !== y.h) return { error: `sizes differ: ${x.w}x${x.h} against ${y.w}x${y.h}` };
+    let over = 0, worst = 0;
+    for (let i = 0; i < x.d.length; i += 4) {
+      const d = Math.max(Math.abs(x.d[i] - y.d[i]), Math.abs(x.d[i + 1] - y.d[i + 1]), Math.abs(x.d[i + 2] - y.d[i + 2]));
+      worst = Math.max(worst, d);
+      if (d > levels) ++over;
+    }
+    return { percent: (100 * over) / (x.w * x.h), worst };
+  }, { urls, levels });
+}
+
+// --presets a,b:8: a view's own bound after a colon, for pictures the two rasterisers may draw
+// differently by nature (acne's stripes, nearest-filtered moire: the tests say why).
+const views = ['', ...args.presets.split(',').filter(Boolean)];
+for (const view of views) {
+  const [preset, ownBound] = view.split(':');
+  const bound = ownBound !== undefined ? Number(ownBound) : Number(args.bound);
+  const name = preset || 'default';
+  const nativePng = path.join(out, `${name}.native.png`), webPng = path.join(out, `${name}.web.png`);
+  const cli = ['--headless', '--frames', '2', '--size', args.size, '--screenshot', nativePng];
+  if (preset) cli.push('--preset', preset);
+  const run = spawnSync(native, cli, { encoding: 'utf8', timeout: 120000 });
+  if (run.status !== 0) { fail(`${name}: the native lesson exited ${run.status}: ${run.stderr.trim()}`); continue; }
+  const query = `?headless&strict-gl&frames=2&size=${args.size}&screenshot=/shot.png${preset ? '&preset=' + preset : ''}`;
+  const { p, errors } = await open(base + query);
+  const started = Date.now();
+  let code;
+  try {
+    code = await waitExit(p, 90000);
+  } catch {
+    fail(`${name}: the page did not finish its 2 frames in 90 s`);
+    await p.close();
+    continue;
+  }
+  const seconds = ((Date.now() - started) / 1000).toFixed(1);
+  if (code !== 0) fail(`${name}: the page's lesson exited ${code}`);
+  for (const e of errors) fail(`${name}: ${e}`);
+  const bytes = await p.evaluate(() => { try { return Array.from(window.FS.readFile('/shot.png')); } catch { return null; } });
+  if (!bytes) { fail(`${name}: the page wrote no screenshot`); await p.close(); continue; }
+  fs.writeFileSync(webPng, Buffer.from(bytes));
+  const r = await compare(p, nativePng, webPng, Number(args.levels));
+  await p.close();
+  if (r.error) { fail(`${name}: ${r.error}`); continue; }
+  const ok = r.percent <= bound;
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${name}: ${r.percent.toFixed(3)} % of pixels differ by more than ${args.levels} ` +
+              `levels (bound ${bound} %, largest ${r.worst}); page ${seconds} s; ${webPng}`);
+  if (!ok) failures.push(`${name}: ${r.percent.toFixed(3)} % over the bound`);
+}
+
+// A bad parameter in the URL: the lesson's own one-line error on the page, then the defaults.
+{
+  const { p } = await open(`${base}?set=no.such_parameter=1&size=${args.size}`);
+  try {
+    await p.waitForFunction(() => window.shadowlab && window.shadowlab.retried &&
+                                  document.getElementById('message').textContent.length > 0, null, { timeout: 60000 });
+    const message = await p.evaluate(() => document.getElementById('message').textContent);
+    await p.waitForTimeout(1500);
+    const exit = await p.evaluate(() => window.shadowlab.exit);
+    if (!/no\.such_parameter/.test(message)) fail(`bad URL: the page's message does not name the parameter: ${message}`);
+    else if (exit !== 2) fail(`bad URL: the lesson did not go on at its defaults (exit ${exit})`);
+    else console.log(`ok   bad URL: "${message.split('\n')[0]}", then the defaults`);
+  } catch {
+    fail('bad URL: no message on the page within 60 s');
+  }
+  await p.close();
+}
+
+// No WebGL2 (the browser's context refused): the page's message, never a black canvas.
+{
+  const init = () => {
+    const get = HTMLCanvasElement.prototype.getContext;
+    HTMLCanvasElement.prototype.getContext = function (kind, ...rest) {
+      return kind === 'webgl2' ? null : get.call(this, kind, ...rest);
+    };
+  };
+  const { p } = await open(base, { init });
+  await p.waitForTimeout(1500);
+  const message = await p.evaluate(() => document.getElementById('message').textContent);
+  if (!/WebGL2/.test(message)) fail(`no WebGL2: the page shows no message naming WebGL2 (got "${message}")`);
+  else console.log(`ok   no WebGL2: "${message.slice(0, 60)}..."`);
+  await p.close();
+}
+
+await browser.close();
+server.close();
+console.log(failures.length ? `check.mjs: ${args.lesson}: ${failures.length} failure(s)` : `check.mjs: ${args.lesson}: all held`);
+process.exit(failures.length ? 1 : 0);
