@@ -88,7 +88,7 @@ function(shadowlab_web_page target lesson)
   target_link_options(${target} PRIVATE
     --shell-file ${root}/tools/wasm/shell.html -sMINIFY_HTML=0
     -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=64MB -sEXIT_RUNTIME=0
-    "SHELL:-sEXPORTED_RUNTIME_METHODS=['callMain','FS']"
+    "SHELL:-sEXPORTED_RUNTIME_METHODS=['callMain','FS','ccall']"
     ${SHADOWLAB_WEB_EXCLUDES}
     "SHELL:--preload-file ${root}/shaders@/shadowlab/shaders"
     "SHELL:--preload-file ${root}/textures@/shadowlab/textures"

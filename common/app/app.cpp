@@ -86,6 +86,7 @@ class Runner {
       presets_ = PresetFile::load(sourceRoot() + "/lessons/" + info_.name + "/presets.txt");
       ab_.declare(params_, presets_);
       params_.validate();  // the defaults, then every preset, pass the registry's checks
+      exposeParams(&params_);  // a browser page reads them (frame_loop.hpp)
       presets_.validate(params_);
       checkHotkeys(params_);
       if (answerQuery(cl_, info_, params_, presets_, lesson_.exercises, argv[0])) return 0;

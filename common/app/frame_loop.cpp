@@ -7,4 +7,6 @@ int runFrames(FrameStep step) {
     if (std::optional<int> exit = step(frame)) return *exit;
 }
 
+void exposeParams(const ParamRegistry*) {}
+
 }  // namespace shadowlab

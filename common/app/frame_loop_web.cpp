@@ -7,9 +7,12 @@
 #include <memory>
 
 #include "app/frame_loop.hpp"
+#include "core/params.hpp"
 
 namespace shadowlab {
 namespace {
+
+const ParamRegistry* g_params = nullptr;
 
 struct Loop {
   FrameStep step;
@@ -17,6 +20,7 @@ struct Loop {
 };
 
 void finish(Loop* loop, int code) {
+  g_params = nullptr;  // the run's registry is gone
   emscripten_cancel_main_loop();
   delete loop;
   EM_ASM(
@@ -30,7 +34,14 @@ void tick(void* arg) {
   auto* loop = static_cast<Loop*>(arg);
   std::optional<int> exit;
   try {
-    exit = loop->step(loop->frame++);
+    exit = loop->step(loop->frame);
+    if (!exit)
+      EM_ASM(
+          {
+            if (Module.onFrame) Module.onFrame($0);
+          },
+          loop->frame);  // the page's figures
+    ++loop->frame;
   } catch (const std::exception& e) {  // the lesson's own code reports and exits; this is a last resort
     std::cerr << "shadowlab: the frame loop stopped: " << e.what() << '\n';
     exit = 1;
@@ -40,9 +51,20 @@ void tick(void* arg) {
 
 }  // namespace
 
+void exposeParams(const ParamRegistry* params) { g_params = params; }
+
 int runFrames(FrameStep step) {
   emscripten_set_main_loop_arg(tick, new Loop{std::move(step)}, 0, false);
   return 0;
 }
 
 }  // namespace shadowlab
+
+// Module.ccall('shadowlab_param', 'string', ['string'], [NAME]): the value as --set takes it, or ""
+// for a name the lesson does not have (or before the lesson started).
+extern "C" EMSCRIPTEN_KEEPALIVE const char* shadowlab_param(const char* name) {
+  static std::string value;
+  value.clear();
+  if (shadowlab::g_params && shadowlab::g_params->has(name)) value = shadowlab::g_params->get(name);
+  return value.c_str();
+}

@@ -120,8 +120,13 @@ void Measurement::ensureTarget(int w, int h) {
   dirty_ = true;
 }
 
+// A browser has no ground truth (Embree runs natively): the overlays and figures say so and the
+// frame is drawn as it is, without the surfaces the ground truth would read back.
+constexpr const char* kNoTruthInBrowser = "ground truth: run the lesson natively (make run)";
+
 unsigned Measurement::begin(unsigned frameFbo, int w, int h) {
-  if (!active()) return frameFbo;
+  if (active() && gl::caps().gles) result_ = {}, result_.unmeasurable = kNoTruthInBrowser;
+  if (!active() || gl::caps().gles) return frameFbo;
   if (!overlayProgram_.valid()) overlayProgram_.build();
   if (!emptyVao_) emptyVao_ = gl::makeVertexArray("fullscreen triangle");
   ensureTarget(w, h);
@@ -135,7 +140,7 @@ unsigned Measurement::begin(unsigned frameFbo, int w, int h) {
 }
 
 void Measurement::end(const MeasureSource& source, unsigned frameFbo, bool viewChanged) {
-  if (!active()) return;
+  if (!active() || gl::caps().gles) return;
   // The lesson's picture goes where the frame belongs.
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
   glReadBuffer(GL_COLOR_ATTACHMENT0);

@@ -8,7 +8,8 @@
 // the lesson's own --screenshot into the page's file system) and the native lesson renders the same
 // view; the two pictures are compared, and the share of pixels whose largest channel differs by
 // more than --levels must stay at or below --bound percent. Every page must log no WebGL error
-// (Chromium's "WebGL:" warnings, the lesson's "GL error" lines) and exit 0. Then a URL with a bad
+// (Chromium's "WebGL:" warnings, the lesson's "GL error" lines) and exit 0. Then the lesson's
+// hotkeys pressed on the page must change the parameters they name, a URL with a bad
 // parameter must show the lesson's error on the page and go on at the defaults, and a browser
 // without WebGL2 must get the page's message instead of a black canvas.
 // Exit status: 0 all held, 1 any failed (each failure one line), 2 bad usage.
@@ -137,6 +138,35 @@ for (const view of views) {
   console.log(`${ok ? 'ok  ' : 'FAIL'} ${name}: ${r.percent.toFixed(3)} % of pixels differ by more than ${args.levels} ` +
               `levels (bound ${bound} %, largest ${r.worst}); page ${seconds} s; ${webPng}`);
   if (!ok) failures.push(`${name}: ${r.percent.toFixed(3)} % over the bound`);
+}
+
+// The lesson's hotkeys, pressed on the page (emscripten's GLFW takes the browser's key events):
+// each changes the parameter it names (read back with shadowlab_param).
+{
+  const listed = spawnSync(native, ['--list-hotkeys'], { encoding: 'utf8' }).stdout.split('\n')
+    .map((l) => l.trim().split(/\s+/)).filter((f) => f.length >= 2 && /^[A-Z]$/.test(f[0]) && f[1] !== '(framework)');
+  const keys = listed.slice(0, 4);
+  if (keys.length === 0) console.log('ok   hotkeys: the lesson has no letter hotkeys of its own');
+  else {
+    const { p, errors } = await open(`${base}?size=${args.size}`);
+    try {
+      await p.waitForFunction(() => (window.shadowlab.frameTimes || []).length >= 3, null, { timeout: 60000 });
+      await p.click('#canvas');
+      for (const [key, param] of keys) {
+        const read = () => p.evaluate((n) => window.Module.ccall('shadowlab_param', 'string', ['string'], [n]), param);
+        const before = await read();
+        await p.keyboard.press(key.toLowerCase());
+        await p.waitForTimeout(400);
+        const after = await read();
+        if (before === after) fail(`hotkey ${key}: ${param} stayed ${before}`);
+        else console.log(`ok   hotkey ${key}: ${param} ${before} -> ${after}`);
+      }
+      for (const e of errors) fail(`hotkeys: ${e}`);
+    } catch (e) {
+      fail(`hotkeys: ${e.message.split('\n')[0]}`);
+    }
+    await p.close();
+  }
 }
 
 // A bad parameter in the URL: the lesson's own one-line error on the page, then the defaults.
