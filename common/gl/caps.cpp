@@ -5,6 +5,10 @@
 
 #include "gl/gl.hpp"
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+#endif
+
 namespace shadowlab::gl {
 namespace {
 Caps g_caps;
@@ -50,8 +54,21 @@ const Caps& caps() {
   c.version = str(GL_VERSION);
   c.glsl = str(GL_SHADING_LANGUAGE_VERSION);
 #ifdef __EMSCRIPTEN__
-  c.gles = true;  // WebGL2 reports 3.0: every desktop version test below is false, as it should be
-  c.major = 3, c.minor = 0;
+  c.gles = true;
+  // WebGL masks the renderer ("WebKit WebGL"); the page may still name it (WEBGL_debug_renderer_info),
+  // and the frame budget needs to know a software one (Chromium's SwiftShader) as natively llvmpipe.
+  if (char* unmasked = reinterpret_cast<char*>(EM_ASM_INT({
+        var e = GLctx.getExtension('WEBGL_debug_renderer_info');
+        if (!e) return 0;
+        var s = String(GLctx.getParameter(e.UNMASKED_RENDERER_WEBGL));
+        var p = _malloc(lengthBytesUTF8(s) + 1);
+        stringToUTF8(s, p, lengthBytesUTF8(s) + 1);
+        return p;
+      }))) {
+    if (*unmasked) c.renderer = unmasked;
+    std::free(unmasked);
+  }
+  c.major = 3, c.minor = 0;  // WebGL2 is ES 3.0: every desktop version test below is false, as it should be
   c.depthClamp = has("GL_EXT_depth_clamp");
   c.floatColorBuffers = has("GL_EXT_color_buffer_float");
   c.floatLinear = has("GL_OES_texture_float_linear");
@@ -72,8 +89,9 @@ const Caps& caps() {
   // The extension itself, not the version: a #version 410 shader enables it by name.
   c.derivativeControl = has("GL_ARB_derivative_control");
   c.parallelShaderCompile = has("GL_KHR_parallel_shader_compile");
-  c.softwareRenderer =
-      c.renderer.find("llvmpipe") != std::string::npos || c.renderer.find("softpipe") != std::string::npos;
+  c.softwareRenderer = c.renderer.find("llvmpipe") != std::string::npos ||
+                       c.renderer.find("softpipe") != std::string::npos ||
+                       c.renderer.find("SwiftShader") != std::string::npos;
   if (const char* s = std::getenv("SHADOWLAB_SOFTWARE_RENDERER")) c.softwareRenderer = std::string(s) == "1";
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &c.maxTextureSize);
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &c.maxRenderbufferSize);
