@@ -72,24 +72,18 @@ set(SHADOWLAB_WEB_LESSONS 01 02 03 04 06 CACHE STRING "Lesson numbers built for 
 # program reads, at the paths it reads them natively, under /shadowlab). The sealed and withheld
 # shader files stay out of the data, as they stay out of the student handout (the sealed ones are
 # compiled in, obscured).
-file(STRINGS ${CMAKE_SOURCE_DIR}/tools/handout/sealed_shaders.txt sealed_lines)
-set(SHADOWLAB_WEB_EXCLUDES "")
-foreach(line IN LISTS sealed_lines)
-  string(REGEX REPLACE "#.*" "" line "${line}")
-  string(STRIP "${line}" line)
-  string(REGEX REPLACE "^withheld[ \t]+" "" line "${line}")
-  if(line)
-    list(APPEND SHADOWLAB_WEB_EXCLUDES "SHELL:--exclude-file ${CMAKE_SOURCE_DIR}/shaders/${line}")
-  endif()
-endforeach()
 function(shadowlab_web_page target lesson)
   set(root ${CMAKE_SOURCE_DIR})
+  set(excludes "")
+  foreach(file IN LISTS sealed_files)  # cmake/sealed.cmake's list, sealed and withheld alike
+    list(APPEND excludes "SHELL:--exclude-file ${file}")
+  endforeach()
   set_target_properties(${target} PROPERTIES SUFFIX ".html" RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/site)
   target_link_options(${target} PRIVATE
     --shell-file ${root}/tools/wasm/shell.html -sMINIFY_HTML=0
     -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=64MB -sEXIT_RUNTIME=0
     "SHELL:-sEXPORTED_RUNTIME_METHODS=['callMain','FS','ccall']"
-    ${SHADOWLAB_WEB_EXCLUDES}
+    ${excludes}
     "SHELL:--preload-file ${root}/shaders@/shadowlab/shaders"
     "SHELL:--preload-file ${root}/textures@/shadowlab/textures"
     "SHELL:--preload-file ${root}/lessons/${lesson}/presets.txt@/shadowlab/lessons/${lesson}/presets.txt")
