@@ -85,7 +85,7 @@ class Runner {
         throw CliError("--measure: lesson " + info_.name + " computes no shadows to measure");
       presets_ = PresetFile::load(sourceRoot() + "/lessons/" + info_.name + "/presets.txt");
       ab_.declare(params_, presets_);
-      params_.validate();  // the defaults, then every preset, pass the registry's checks
+      params_.validate();      // the defaults, then every preset, pass the registry's checks
       exposeParams(&params_);  // a browser page reads them (frame_loop.hpp)
       presets_.validate(params_);
       checkHotkeys(params_);
