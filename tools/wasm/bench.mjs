@@ -3,21 +3,15 @@
 // from a local server, and its frame time at a size (median of frames 20-80).
 //   node tools/wasm/bench.mjs --site build/web/site [--size 1280x720] [--frames 80]
 import fs from 'node:fs';
-import http from 'node:http';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { launchChromium } from '../web/check-page.mjs';
+import { serveSite } from './site_server.mjs';
 
 const opts = { site: 'build/web/site', size: '1280x720', frames: '80' };
 for (let i = 2; i < process.argv.length; i += 2) opts[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
 const root = path.resolve(opts.site);
-const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm' };
-const server = http.createServer((req, res) => {
-  const file = path.join(root, new URL(req.url, 'http://x').pathname);
-  fs.readFile(file, (err, body) => err ? res.writeHead(404).end()
-                                       : res.writeHead(200, { 'Content-Type': types[path.extname(file)] || 'application/octet-stream' }).end(body));
-});
-await new Promise((r) => server.listen(0, '127.0.0.1', r));
+const server = await serveSite(root);
 const browser = await launchChromium();
 const [w, h] = opts.size.split('x').map(Number);
 const rows = [];

@@ -15,9 +15,9 @@
 // Exit status: 0 all held, 1 any failed (each failure one line), 2 bad usage.
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
-import http from 'node:http';
 import path from 'node:path';
 import { launchChromium } from '../web/check-page.mjs';
+import { serveSite } from './site_server.mjs';
 
 const args = { size: '320x180', bound: '1.0', levels: '8', presets: '', out: '' };
 for (let i = 2; i < process.argv.length; i += 2) {
@@ -38,18 +38,7 @@ if (!fs.existsSync(native)) usage(`${native} missing: make build builds it`);
 const out = args.out || fs.mkdtempSync('/tmp/shadowlab-web-');
 fs.mkdirSync(out, { recursive: true });
 
-// A static server for the site on a free port of 127.0.0.1.
-const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
-                '.data': 'application/octet-stream', '.css': 'text/css', '.png': 'image/png' };
-const server = http.createServer((req, res) => {
-  const file = path.join(args.site, decodeURIComponent(new URL(req.url, 'http://x').pathname));
-  if (!file.startsWith(path.resolve(args.site)) && !file.startsWith(args.site)) return res.writeHead(403).end();
-  fs.readFile(file, (err, body) => {
-    if (err) return res.writeHead(404).end();
-    res.writeHead(200, { 'Content-Type': types[path.extname(file)] || 'application/octet-stream' }).end(body);
-  });
-});
-await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+const server = await serveSite(args.site);
 const base = `http://127.0.0.1:${server.address().port}/${page}`;
 
 const failures = [];
