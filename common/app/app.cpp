@@ -472,7 +472,7 @@ class Runner {
     ui_.header(header);
     ui_.stats(header, &statsOpen_);
     input_.stats = statsOpen_;
-    ui_.paramPanel(params_, presets_, status_, &panelOpen_);
+    ui_.paramPanel(params_, presets_, info_.name, status_, &panelOpen_);
     input_.panel = panelOpen_;
   }
 

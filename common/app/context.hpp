@@ -27,6 +27,10 @@ class Context {
   virtual void setFullscreen(bool) {}
   virtual bool fullscreen() const { return false; }
   virtual float contentScale() const { return 1.0f; }
+  // Whether the picture is drawn after the frame's code returns (the browser: WebGL runs in its GPU
+  // process once the animation frame ends), so that a frame's time is the time between frames, not
+  // the time spent in the frame's code.
+  virtual bool drawsAfterFrame() const { return false; }
 };
 
 struct ContextOptions {

@@ -3,8 +3,10 @@
 // same canvas with the headless rules of the native lessons (a fixed dt, no UI unless --show-ui,
 // every shader waited for), so its frames match the native headless ones.
 #include <GLFW/glfw3.h>
+#include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -45,13 +47,27 @@ class WebContext final : public Context {
   int height() const override { return size().second; }
   bool headless() const override { return headless_; }
   bool shouldClose() const override { return glfwWindowShouldClose(window_); }
-  void pollEvents() override { glfwPollEvents(); }
+  void pollEvents() override {
+    glfwPollEvents();
+    if (!headless_) followCanvas();
+  }
   void present() override {}  // the browser shows the canvas when the animation frame returns
   std::string platform() const override { return "WebGL2 (emscripten)"; }
   GLFWwindow* window() const override { return headless_ ? nullptr : window_; }
   float contentScale() const override { return float(emscripten_get_device_pixel_ratio()); }
+  bool drawsAfterFrame() const override { return true; }
 
  private:
+  // The page sizes the canvas (the window's size, or the URL's size=WxH); the picture follows it
+  // when the reader resizes the window, as a native window's does. Not in a headless run (tests).
+  void followCanvas() {
+    double cssWidth = 0, cssHeight = 0;
+    if (emscripten_get_element_css_size("#canvas", &cssWidth, &cssHeight) != EMSCRIPTEN_RESULT_SUCCESS) return;
+    const int w = std::max(320, int(std::lround(cssWidth))), h = std::max(180, int(std::lround(cssHeight)));
+    // Not glfwSetWindowSize: emscripten's asks for fullscreen when the size is the screen's (a
+    // maximised headless page), which the browser refuses without a click.
+    if (std::pair(w, h) != size()) EM_ASM({ Browser.setCanvasSize($0, $1); }, w, h);
+  }
   std::pair<int, int> size() const {
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_, &w, &h);

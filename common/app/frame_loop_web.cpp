@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "app/frame_loop.hpp"
+#include "app/share.hpp"
 #include "core/params.hpp"
 
 namespace shadowlab {
@@ -67,4 +68,12 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* shadowlab_param(const char* name) {
   value.clear();
   if (shadowlab::g_params && shadowlab::g_params->has(name)) value = shadowlab::g_params->get(name);
   return value.c_str();
+}
+
+// Module.ccall('shadowlab_share', 'string', [], []): what the panel's "copy link" does (the page's
+// address becomes the view's link), and its status line; "" before the lesson started.
+extern "C" EMSCRIPTEN_KEEPALIVE const char* shadowlab_share() {
+  static std::string status;
+  status = shadowlab::g_params ? shadowlab::shareView(shadowlab::g_params->changed(), "") : "";
+  return status.c_str();
 }

@@ -1,4 +1,5 @@
 #include "app/ui.hpp"
+#include "app/share.hpp"
 
 #include "core/decimal.hpp"
 #include "gl/caps.hpp"
@@ -391,7 +392,8 @@ const char* paramLabel(const std::string& name) {
 }
 }  // namespace
 
-bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status, bool* open) {
+bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, const std::string& lesson, std::string& status,
+                    bool* open) {
   bool changed = false;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(vp->Size.x - 8 * scale_, 8 * scale_), ImGuiCond_Always, ImVec2(1, 0));
@@ -431,7 +433,7 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   const float room = ImGui::GetContentRegionAvail().x;
   const float common = std::max(0.45f * room, room - longest - gap);
   ImGui::PushItemWidth(common);
-  float widest = presetRows(params, presets, status, room, changed);
+  float widest = presetRows(params, presets, lesson, status, room, changed);
   ImGui::Separator();
   widest = std::max(widest, parameterRows(params, status, room, common, changed));
   ImGui::PopItemWidth();
@@ -446,8 +448,9 @@ bool Ui::paramPanel(ParamRegistry& params, PresetFile& presets, std::string& sta
   return changed;
 }
 
-// Presets: load one, or save the current state under a name.
-float Ui::presetRows(ParamRegistry& params, PresetFile& presets, std::string& status, float room, bool& changed) {
+// Presets: load one, or save the current state under a name; copy the view's link.
+float Ui::presetRows(ParamRegistry& params, PresetFile& presets, const std::string& lesson, std::string& status,
+                     float room, bool& changed) {
   const auto names = presets.names();
   if (ImGui::BeginCombo(
           "preset", presetIndex_ >= 0 && presetIndex_ < int(names.size()) ? names[presetIndex_].c_str() : "(choose)")) {
@@ -487,6 +490,8 @@ float Ui::presetRows(ParamRegistry& params, PresetFile& presets, std::string& st
       changed = true;
     } catch (const ParamError& e) { status = e.what(); }
   }
+  widest = std::max(widest, ImGui::GetItemRectMax().x);
+  if (ImGui::Button(shareLabel())) status = shareView(params.changed(), lesson);
   return std::max(widest, ImGui::GetItemRectMax().x);
 }
 

@@ -53,7 +53,9 @@ class Ui {
   void legends(const std::vector<Legend>& legends);
   // Returns true when a parameter changed. Collapsed to its title bar unless *open (F3, or a click
   // on the title bar, which writes *open back).
-  bool paramPanel(ParamRegistry& params, PresetFile& presets, std::string& status, bool* open);
+  // `lesson` ("03_shadow_quality") names the view "copy link" gives.
+  bool paramPanel(ParamRegistry& params, PresetFile& presets, const std::string& lesson, std::string& status,
+                  bool* open);
   // The lesson's exercises with their states (bottom left); true when "run the cases again" was pressed.
   bool exercisesPanel(const Exercises& exercises);
   // A banner across the top of the frame: the stub banner while impl=student.
@@ -71,7 +73,8 @@ class Ui {
   void recordWindow(const char* name);
   // The panel's two parts: the preset row (pick, name, save, defaults) and the parameters by
   // group. Each returns the right edge of its widgets; `changed` is set when a value changed.
-  float presetRows(ParamRegistry& params, PresetFile& presets, std::string& status, float room, bool& changed);
+  float presetRows(ParamRegistry& params, PresetFile& presets, const std::string& lesson, std::string& status,
+                   float room, bool& changed);
   float parameterRows(ParamRegistry& params, std::string& status, float room, float common, bool& changed);
   bool initialised_ = false;
   bool headless_ = false;

@@ -206,4 +206,24 @@ std::string commandLineHelp(const std::string& program) {
   return s;
 }
 
+namespace {
+// A word as a POSIX shell reads it back: bare when it holds only safe characters, else in single
+// quotes (a quote inside as '\'').
+std::string shellWord(const std::string& word) {
+  const bool safe = !word.empty() && word.find_first_not_of(
+                                         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                         "0123456789_-+=.,/:") == std::string::npos;
+  if (safe) return word;
+  std::string out = "'";
+  for (char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+}  // namespace
+
+std::string viewCommandLine(const std::string& program, const std::vector<std::pair<std::string, std::string>>& sets) {
+  std::string out = shellWord(program);
+  for (const auto& [name, value] : sets) out += " --set " + shellWord(name + "=" + value);
+  return out;
+}
+
 }  // namespace shadowlab

@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadowlab {
@@ -60,5 +61,9 @@ CommandLine parseCommandLine(const std::vector<std::string>& args);
 CommandLine parseCommandLine(int argc, char** argv);
 // The --help text (flags, with what each does).
 std::string commandLineHelp(const std::string& program);
+// The command line that opens a view: PROGRAM --set 'name=value' ... for each (name, value), every
+// word that needs it single-quoted for a POSIX shell: what "copy link" gives natively (the browser
+// gives the URL). parseCommandLine of its words gives the same sets back.
+std::string viewCommandLine(const std::string& program, const std::vector<std::pair<std::string, std::string>>& sets);
 
 }  // namespace shadowlab

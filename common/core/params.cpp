@@ -330,6 +330,15 @@ std::map<std::string, std::string> ParamRegistry::snapshot() const {
   return out;
 }
 
+ParamValues ParamRegistry::changed() const {
+  ParamValues out;
+  for (const auto& p : params_) {
+    std::string v = get(p.name);
+    if (v != p.defaultValue) out.emplace_back(p.name, std::move(v));
+  }
+  return out;
+}
+
 std::string ParamRegistry::describe() const {
   std::ostringstream os;
   for (const auto& p : params_) {
@@ -459,10 +468,7 @@ void PresetFile::applyPreset(const Preset& p, ParamRegistry& registry) const {
 
 void PresetFile::capture(const std::string& name, const ParamRegistry& registry) {
   Preset p{name, {}, 0};
-  for (const auto& param : registry.params()) {
-    const std::string v = registry.get(param.name);
-    if (v != param.defaultValue) p.values.push_back({param.name, v, 0});
-  }
+  for (auto& [param, value] : registry.changed()) p.values.push_back({param, std::move(value), 0});
   for (auto& existing : presets) {
     if (existing.name == name) {
       p.line = existing.line;

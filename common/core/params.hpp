@@ -105,6 +105,9 @@ class ParamRegistry {
   void assignAll(const std::vector<std::string>& assignments);
   void resetDefaults();
   std::map<std::string, std::string> snapshot() const;
+  // The values that differ from the defaults, in registration order: what a preset saves and what
+  // "copy link" puts in the URL (assignAll of them on a fresh registry gives this state again).
+  ParamValues changed() const;
   // Back to a snapshot(), as one change (see setAll).
   void restore(const std::map<std::string, std::string>& snapshot);
 

@@ -1,5 +1,8 @@
 #include <doctest/doctest.h>
 
+#include <cstdio>
+#include <utility>
+
 #include "core/cli.hpp"
 
 using namespace shadowlab;
@@ -96,4 +99,24 @@ TEST_CASE("cli: --keys scripts key steps, --drop a file and its frame; bad ones 
   CHECK(errorOf({"--headless", "--keys", "W*4"}) == "--keys: the steps take 4 frames, the run has 3 (--frames N)");
   CHECK(errorOf({"--headless", "--drop", "m.obj@3"}) == "--drop m.obj@3: the run has frames 0 to 2 (--frames N)");
   CHECK(errorOf({"--drop", "@2"}) == "--drop: '@2' names no file: --drop FILE[@N]");
+}
+
+TEST_CASE("cli: a view's command line reads back through a POSIX shell to the same sets") {
+  const std::vector<std::pair<std::string, std::string>> sets = {
+      {"camera.yaw", "0.6"}, {"light0.direction", "-0.5 0.2 -0.8"}, {"label", "it's \"quoted\" $HOME `x`"}};
+  const std::string line = viewCommandLine("build/default/bin/lesson_03_shadow_quality", sets);
+  CHECK(line.rfind("build/default/bin/lesson_03_shadow_quality --set camera.yaw=0.6 --set '", 0) == 0);
+  // The shell splits it into words (printf puts one per line); the words parse to the same sets.
+  FILE* shell = popen(("printf '%s\\n' " + line).c_str(), "r");
+  REQUIRE(shell != nullptr);
+  std::vector<std::string> words;
+  std::string word;
+  for (int c; (c = std::fgetc(shell)) != EOF;) {
+    if (c != '\n') word += char(c);
+    else words.push_back(std::exchange(word, ""));
+  }
+  CHECK(pclose(shell) == 0);
+  std::vector<std::string> expected;
+  for (const auto& [name, value] : sets) expected.push_back(name + "=" + value);
+  CHECK(parseCommandLine(words).sets == expected);  // words[0] is the program, skipped as argv[0]
 }

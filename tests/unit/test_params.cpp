@@ -76,6 +76,23 @@ TEST_CASE("params: defaults, reset, revision and registration errors") {
   CHECK(f.reg.describe().find("samples") != std::string::npos);
 }
 
+TEST_CASE("params: changed() lists what differs from the defaults, and assigning it rebuilds the state") {
+  Fixture f;
+  CHECK(f.reg.changed().empty());
+  f.reg.set("samples", "16");
+  f.reg.assign("color=0 1 0.5");
+  f.reg.set("ambient", f.reg.find("ambient")->defaultValue);  // set, but to its default: not listed
+  const ParamValues changed = f.reg.changed();
+  REQUIRE(changed.size() == 2);
+  CHECK(changed[0].first + "=" + changed[0].second == "samples=16");  // registration order
+  CHECK(changed[1].first + "=" + changed[1].second == "color=0 1 0.5");
+  Fixture fresh;  // what a copied link does on a new page
+  std::vector<std::string> assignments;
+  for (const auto& [name, value] : changed) assignments.push_back(name + "=" + value);
+  fresh.reg.assignAll(assignments);
+  CHECK(fresh.reg.snapshot() == f.reg.snapshot());
+}
+
 TEST_CASE("presets: load, validate, apply over defaults, capture and save round trip") {
   Fixture f;
   const std::string path = tempPath("presets.txt");

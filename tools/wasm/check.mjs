@@ -9,7 +9,8 @@
 // view; the two pictures are compared, and the share of pixels whose largest channel differs by
 // more than --levels must stay at or below --bound percent. Every page must log no WebGL error
 // (Chromium's "WebGL:" warnings, the lesson's "GL error" lines) and exit 0. Then the lesson's
-// hotkeys pressed on the page must change the parameters they name, a URL with a bad
+// hotkeys pressed on the page must change the parameters they name, "copy link" must give a URL
+// that opens the same view (a dragged camera included), the canvas must follow the window, a URL with a bad
 // parameter must show the lesson's error on the page and go on at the defaults, and a browser
 // without WebGL2 must get the page's message instead of a black canvas.
 // Exit status: 0 all held, 1 any failed (each failure one line), 2 bad usage.
@@ -156,6 +157,52 @@ for (const view of views) {
     }
     await p.close();
   }
+}
+
+// "copy link" (the panel's button; shadowlab_share is what it calls): after a drag that orbits the
+// camera and a hotkey, the page's address holds the view; a new page opened at it has the same
+// values. The page without size= fills the window and follows it when the window is resized.
+{
+  const param = (p, n) => p.evaluate((n) => window.Module.ccall('shadowlab_param', 'string', ['string'], [n]), n);
+  const { p, errors } = await open(base);
+  try {
+    await p.waitForFunction(() => (window.shadowlab.frameTimes || []).length >= 3, null, { timeout: 60000 });
+    const yaw = await param(p, 'camera.yaw');
+    await p.mouse.move(480, 330);
+    await p.mouse.down();
+    await p.mouse.move(600, 310, { steps: 8 });
+    await p.mouse.up();
+    await p.waitForTimeout(400);
+    const status = await p.evaluate(() => window.Module.ccall('shadowlab_share', 'string', [], []));
+    const link = new URL(await p.evaluate(() => location.href));
+    const sets = link.searchParams.getAll('set');
+    if ((await param(p, 'camera.yaw')) === yaw) fail(`copy link: a drag on the canvas left camera.yaw at ${yaw}`);
+    else if (!sets.some((s) => s.startsWith('camera.yaw='))) fail(`copy link: the link has no camera.yaw: ${link}`);
+    else if (!status.includes(link.href)) fail(`copy link: the status "${status}" does not show the link ${link}`);
+    else {
+      const again = await open(link.href);
+      await again.p.waitForFunction(() => (window.shadowlab.frameTimes || []).length >= 2, null, { timeout: 60000 });
+      const differ = [];
+      for (const set of sets) {
+        const name = set.slice(0, set.indexOf('='));
+        const [was, is] = [await param(p, name), await param(again.p, name)];
+        if (was !== is) differ.push(`${name} ${was} -> ${is}`);
+      }
+      for (const e of again.errors) fail(`copy link: the linked page: ${e}`);
+      await again.p.close();
+      if (differ.length) fail(`copy link: the linked page differs: ${differ.join(', ')}`);
+      else console.log(`ok   copy link: ${sets.length} value(s) (camera included) round trip through ${link.pathname}${link.search.slice(0, 60)}...`);
+    }
+    await p.setViewportSize({ width: 640, height: 400 });
+    await p.waitForTimeout(800);
+    const size = await p.evaluate(() => [document.getElementById('canvas').width, document.getElementById('canvas').height]);
+    if (size.join('x') !== '640x400') fail(`resize: the window went to 640x400, the canvas stayed ${size.join('x')}`);
+    else console.log('ok   resize: the canvas follows the window (800x450 -> 640x400)');
+    for (const e of errors) fail(`copy link: ${e}`);
+  } catch (e) {
+    fail(`copy link: ${e.message.split('\n')[0]}`);
+  }
+  await p.close();
 }
 
 // A bad parameter in the URL: the lesson's own one-line error on the page, then the defaults.
