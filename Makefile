@@ -111,14 +111,16 @@ grade-submission: configure
 	@SEED=$(SEED) LESSONS=$(LESSONS) REFERENCE_CALLS=$(REFERENCE_CALLS) bash tools/grading/grade_submission.sh $(SUBMISSION) $(GRADES)
 
 # Benchmarks, apart from the tests: every lesson's frame time against its floor (out/bench/frames.{csv,html},
-# and docs/benchmarks.md: the README's one table, with the machine and date it ran on),
+# and docs/benchmarks.md: the README's one table, with the machine and date it ran on), the browser
+# pages against them (tools/wasm/bench.mjs: download, first frame, frame ms, fps; a section of the same file),
 # the PSM light-camera set-up against receiver count, lesson 01 over its presets against ground
 # truth (report in out/bench/), and lesson 10's showdown (tools/showdown_bench.sh, out/bench/showdown).
 # Lessons add their own sweeps: tools/shadow_bench.sh, tools/volume_bench.sh, filter_sweep (see the README).
-bench: build
+bench: build web
 	@mkdir -p out/bench
 	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then $(BUILD)/bin/frame_bench --bin $(BUILD)/bin --out out/bench --window --markdown docs/benchmarks.md; \
 	  else xvfb-run -a -s "-screen 0 1920x1080x24" $(BUILD)/bin/frame_bench --bin $(BUILD)/bin --out out/bench --window --markdown docs/benchmarks.md; fi
+	@node tools/wasm/bench.mjs --site build/web/site --native out/bench/frames.csv --markdown docs/benchmarks.md
 	@$(BUILD)/bin/bench_psm_setup out/bench/psm_setup.csv
 	@$(BUILD)/bin/shadowlab_bench $(BUILD)/bin/lesson_01_lighting --out out/bench/01_lighting \
 	  --preset default --preset three_lights --preset spot_only --repeat 3 --frames 6

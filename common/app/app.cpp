@@ -238,7 +238,7 @@ class Runner {
     context_->pollEvents();
     const double start = nowSeconds();
     const double dt = cl_.headless ? 1.0 / 60.0 : std::min(start - last_, 0.1);
-    last_ = start;
+    if (const double before = std::exchange(last_, start); before > 0) sinceLast_ = (start - before) * 1000.0;
     time_ += dt;
     keys_.beginFrame(input_);
     if (frame == cl_.dropFrame && !cl_.drop.empty()) dropFiles(input_, {cl_.drop});
@@ -277,8 +277,8 @@ class Runner {
     }
     if (Exit e = writeOutputs(fi, lastFrame)) return e;
     context_->present();
-    // Frame time includes present: software rasterisers (llvmpipe) do much of their work there.
-    const double frameMs = (nowSeconds() - start) * 1000.0;
+    // Frame time includes present (llvmpipe works there); the browser's is the time since the last frame.
+    const double frameMs = context_->drawsAfterFrame() ? sinceLast_ : (nowSeconds() - start) * 1000.0;
     frameMsAvg_ = frameMsAvg_ == 0 ? frameMs : 0.9 * frameMsAvg_ + 0.1 * frameMs;
     budget_.record(frameMs);
     if (bench_.isOpen()) bench_.frame(frame, frameMs, drawCalls_, budget_.scale(), lesson_.timers);
@@ -581,7 +581,7 @@ class Runner {
   int width_ = 0, height_ = 0, drawCalls_ = 0;
   glm::mat4 lastView_{0.0f};
   unsigned lastRevision_ = ~0u;
-  double frameMsAvg_ = 0, time_ = 0, last_ = 0;
+  double frameMsAvg_ = 0, time_ = 0, last_ = 0, sinceLast_ = 0;  // sinceLast_: ms since the frame before
 };
 
 }  // namespace
