@@ -22,6 +22,10 @@ set(WEB_BUILD ${CMAKE_BINARY_DIR}/web)
 add_test(NAME web.build COMMAND bash ${CMAKE_SOURCE_DIR}/tools/wasm/build.sh ${WEB_BUILD})
 set_tests_properties(web.build PROPERTIES LABELS web FIXTURES_SETUP web_site TIMEOUT 2700
                      ENVIRONMENT "SHADOWLAB_BIN=$<TARGET_FILE_DIR:lesson_01_lighting>")
+if(TEST slides.build)  # the site's decks: the ones the slide tests built and checked (tools/wasm/build.sh)
+  set_tests_properties(web.build PROPERTIES FIXTURES_REQUIRED slides_built
+                       ENVIRONMENT "SHADOWLAB_BIN=$<TARGET_FILE_DIR:lesson_01_lighting>;SHADOWLAB_SLIDES=${CMAKE_BINARY_DIR}/slides")
+endif()
 
 # Three presets a lesson or more. NAME:BOUND where the two rasterisers (llvmpipe natively,
 # SwiftShader in Chromium) draw an implementation-defined picture: acne's stripes come from depth

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # build.sh [BUILD_DIR]   (make web)
 # The browser build: the lessons of SHADOWLAB_WEB_LESSONS (cmake/web.cmake) as WebGL2 pages in
-# BUILD_DIR/site (default build/web/site), with an index page; plain static files for any web host.
+# BUILD_DIR/site (default build/web/site), with an index page, the READMEs and the slide decks;
+# plain static files for any web host.
 # Debian's emscripten compiles them; its system libraries are built once into a cache outside the
 # build folder (SHADOWLAB_EM_CACHE, default ~/.cache/shadowlab/emscripten: 5-20 minutes the first
 # time), so fresh clones and CI reuse it.
@@ -23,4 +24,12 @@ if [[ ! -f "$build/CMakeCache.txt" ]]; then
     -DSHADOWLAB_WEB_SOURCES="$build/debian-src" >/dev/null
 fi
 cmake --build "$build" -j "${JOBS:-$(nproc)}"
+# The decks beside the pages (the index links each lesson's): a set already built (SHADOWLAB_SLIDES:
+# the tests' own, PDFs included) copied, or built here without the PDFs (figures by the native lessons).
+rm -rf "$build/site/slides"
+if [[ -n "${SHADOWLAB_SLIDES:-}" ]]; then
+  cp -r "$SHADOWLAB_SLIDES" "$build/site/slides"
+else
+  node tools/slides/build.mjs --bin "${SHADOWLAB_BIN:-build/default/bin}" --out "$build/site/slides" --no-pdf
+fi
 node tools/wasm/site.mjs --build "$build" --bin "${SHADOWLAB_BIN:-build/default/bin}"
