@@ -185,11 +185,18 @@ endforeach()
 # The student handout withholds the reference GLSL of the exercises (`withheld` in the manifest):
 # without those files each lesson still runs, says whose GLSL draws, and gives the driver no line of
 # them (grading/check_withheld.cmake, with a run in this tree proving the check can fail).
+# The view that calls each lesson's withheld functions where the default view does not (the
+# exercise's usedWhen in the lesson's declare()).
+set(withheld_view_02_shadow_maps compare=manual)
+set(withheld_view_03_shadow_quality filter=pcf_nxn)
+set(withheld_view_04_shadow_volumes silhouettes=gpu)
+set(withheld_view_06_texture_filtering sampling=rip_map)
 foreach(lesson IN ITEMS 02_shadow_maps 03_shadow_quality 04_shadow_volumes 05_soft_shadows 06_texture_filtering
                         07_hybrid_maps 08_psm 09_psm_fixes 10_showdown)
   if(TARGET lesson_${lesson} AND EXISTS ${CMAKE_SOURCE_DIR}/shaders/${lesson}/exercises_reference.glsl)
     add_test(NAME gpu.${lesson}.withheld COMMAND ${CMAKE_COMMAND} -DLESSON_BINARY=$<TARGET_FILE:lesson_${lesson}>
              -DLESSON=${lesson} -DSOURCE=${CMAKE_SOURCE_DIR} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/withheld_${lesson}
+             "-DVIEW=${withheld_view_${lesson}}"
              -P ${CMAKE_CURRENT_SOURCE_DIR}/grading/check_withheld.cmake)
     set_tests_properties(gpu.${lesson}.withheld PROPERTIES LABELS gpu)
   endif()

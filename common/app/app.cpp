@@ -193,7 +193,7 @@ class Runner {
     banner_ =
         studentCode() && !ex.stubBanner(0).empty() ? ex.stubBanner(blackShare(fi.framebuffer, width_, height_)) : "";
     const std::string sight = sightBanner(lesson_, float(width_) / float(height_));
-    for (const std::string& more : {withheldBanner(withheldReplaced(), info_.name), sight})
+    for (const std::string& more : {withheldBanner(takeWithheldDrawn(), ex.glslInUse(params_), info_.name), sight})
       if (!more.empty()) banner_ += (banner_.empty() ? "" : "\n") + more;
     if (cl_.headless && !banner_.empty() && !bannerPrinted_)
       (sight.empty() ? std::cout : std::cerr) << info_.name << ": " << banner_ << '\n';

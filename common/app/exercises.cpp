@@ -52,8 +52,20 @@ const char* exerciseStateName(ExerciseState s) {
 void Exercises::add(std::string id, std::string title, std::string stubEffect) {
   list_.push_back({std::move(id), std::move(title), std::move(stubEffect), false});
 }
-void Exercises::addGlsl(std::string id, std::string title, std::string stubEffect) {
+void Exercises::addGlsl(std::string id, std::string title, std::string stubEffect, std::string usedWhen) {
   list_.push_back({std::move(id), std::move(title), std::move(stubEffect), true});
+  list_.back().usedWhen = std::move(usedWhen);
+}
+
+std::vector<std::string> Exercises::glslInUse(const ParamRegistry& params) const {
+  std::vector<std::string> ids;
+  for (const Exercise& e : list_) {
+    if (!e.glsl) continue;
+    const auto eq = e.usedWhen.find('=');
+    if (eq == std::string::npos || params.get(e.usedWhen.substr(0, eq)) == e.usedWhen.substr(eq + 1))
+      ids.push_back(e.id);
+  }
+  return ids;
 }
 void Exercises::switchedBy(std::string param, std::string studentValue) {
   param_ = std::move(param);
@@ -63,7 +75,10 @@ void Exercises::switchedBy(std::string param, std::string studentValue) {
 void Exercises::apply(const grading::RunResult& run, bool glsl) {
   for (Exercise& e : list_) {
     if (e.glsl != glsl) continue;
-    e = Exercise{e.id, e.title, e.stubEffect, e.glsl};
+    e.state = ExerciseState::NotRun;  // the results afresh; what the lesson declared stays
+    e.passed = e.cases = 0;
+    e.markerLeft = false;
+    e.firstFailure.clear();
     bool stub = false;
     for (const grading::CaseResult& c : run.cases) {
       if (c.exercise != e.id || c.hidden) continue;
@@ -139,19 +154,31 @@ std::string Exercises::stubBanner(double blackShare) const {
   return s + "\nWrite them in " + files + ", or set " + param_ + "=reference.";
 }
 
-std::string withheldBanner(const std::vector<std::string>& replaced, const std::string& lesson) {
-  if (replaced.empty()) return "";
-  std::string s = "Handout: your GLSL draws where the reference's is withheld";
+std::string withheldBanner(const std::vector<std::string>& replaced, const std::vector<std::string>& inUse,
+                           const std::string& lesson) {
+  std::string s;
   const std::regex marker(R"(SHADOWLAB_STUB ([0-9]+\.[0-9]+))");
   for (const std::string& path : replaced) {
+    // The lesson's own file: only the exercises its view calls. Another lesson's (included): all.
+    const bool own = path.rfind(lesson + "/", 0) == 0;
+    const auto called = [&](const std::string& id) {
+      return !own || std::find(inUse.begin(), inUse.end(), id) != inUse.end();
+    };
+    if (own && std::none_of(inUse.begin(), inUse.end(),
+                            [&](const std::string& id) { return id.rfind(lesson.substr(0, 2) + ".", 0) == 0; }))
+      continue;  // the view calls none of the file's exercises: the reference is not missed
     std::ifstream in(shaderRoot() + "/" + withheldStandIn(path));
     std::string stubs;
     std::smatch m;
     for (std::string line; std::getline(in, line);)
-      if (std::regex_search(line, m, marker)) stubs += (stubs.empty() ? "" : ", ") + m[1].str();
+      if (std::regex_search(line, m, marker) && called(m[1].str())) stubs += (stubs.empty() ? "" : ", ") + m[1].str();
     s += "\n  shaders/" + withheldStandIn(path) + (stubs.empty() ? ": your answers" : ": " + stubs + " still a stub");
   }
-  return s + "\nF4: the reference's picture of the preset in view (tests/data/golden/" + lesson + "/)";
+  if (s.empty()) return "";
+  const std::string golden = "tests/data/golden/" + lesson + "/";
+  const bool pictures = std::filesystem::exists(sourceRoot() + "/" + golden);  // not in the browser
+  return "Answers withheld here (the student handout, the browser): your GLSL draws where the reference's is withheld" +
+         s + (pictures ? "\nF4: the reference's picture of the preset in view (" + golden + ")" : "");
 }
 
 }  // namespace shadowlab

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/params.hpp"
 #include "grading/cases.hpp"
 
 namespace shadowlab {
@@ -27,6 +28,7 @@ struct Exercise {
   std::string title;       // "lightContribution: the lighting term"
   std::string stubEffect;  // what an untouched stub does to the picture ("": not used live, no banner)
   bool glsl = false;       // shaders/NN_name/exercises.glsl, else lessons/NN_name/exercises.cpp
+  std::string usedWhen;    // GLSL: "filter=pcf_nxn", the view that calls it ("": every view)
   ExerciseState state = ExerciseState::NotRun;
   int passed = 0, cases = 0;
   bool markerLeft = false;   // passing, but the SHADOWLAB_STUB line is still there
@@ -36,10 +38,13 @@ struct Exercise {
   std::string function() const;
 };
 
-// The banner of the student handout, where the preprocessor put the student's exercises.glsl in
-// place of withheld reference GLSL (core/shader_files.hpp, withheldReplaced()): whose code draws,
-// which of its exercises are still stubs, and where the reference's pictures are. "" for none.
-std::string withheldBanner(const std::vector<std::string>& replaced, const std::string& lesson);
+// The banner of the student handout and the browser, where the preprocessor put the student's
+// exercises.glsl in place of withheld reference GLSL (core/shader_files.hpp, withheldReplaced()):
+// whose code draws, which of its exercises are still stubs, and where the reference's pictures are.
+// Only while the view calls one of them (`inUse`: the ids of the lesson's GLSL exercises whose
+// usedWhen holds). "" for none.
+std::string withheldBanner(const std::vector<std::string>& replaced, const std::vector<std::string>& inUse,
+                           const std::string& lesson);
 
 // Where a student writes exercise `e` of `lesson` ("03_shadow_quality"): the repository-relative
 // file (lessons/NN_name/exercises.cpp or shaders/NN_name/exercises.glsl) and the line of its
@@ -56,7 +61,8 @@ std::string gradeCommand(const std::string& lesson);
 class Exercises {
  public:
   void add(std::string id, std::string title, std::string stubEffect);
-  void addGlsl(std::string id, std::string title, std::string stubEffect);
+  // usedWhen: "name=value", the parameter value whose view calls the function ("": every view).
+  void addGlsl(std::string id, std::string title, std::string stubEffect, std::string usedWhen = "");
   // The parameter (a choice) whose value `student` means "the student's code": impl=student.
   void switchedBy(std::string param, std::string studentValue = "student");
   bool empty() const { return list_.empty(); }
@@ -72,6 +78,9 @@ class Exercises {
   // pass)"), then where to write it (file:line, function) and, when it fails, its first failing
   // case; last, the command that grades the lesson and the switch that shows the student's code.
   std::string report() const;
+  // The GLSL exercises the view with these parameters calls (their usedWhen holds). Throws
+  // ParamError when a usedWhen names no parameter of the lesson.
+  std::vector<std::string> glslInUse(const ParamRegistry& params) const;
   // The banner while the student's code is in use: empty when no exercise is a stub.
   std::string stubBanner(double blackShare) const;
 

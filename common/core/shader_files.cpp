@@ -17,6 +17,10 @@ std::set<std::string>& replaced() {
   static std::set<std::string> paths;
   return paths;
 }
+std::set<std::string>& drawn() {
+  static std::set<std::string> paths;
+  return paths;
+}
 }  // namespace
 
 void registerShaderText(const std::string& relativePath, std::string text) {
@@ -62,6 +66,18 @@ void noteWithheldReplaced(const std::string& relativePath) {
 std::vector<std::string> withheldReplaced() {
   std::lock_guard<std::mutex> lock(g_mutex);
   return {replaced().begin(), replaced().end()};
+}
+
+void noteWithheldDrawn(const std::vector<std::string>& relativePaths) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  drawn().insert(relativePaths.begin(), relativePaths.end());
+}
+
+std::vector<std::string> takeWithheldDrawn() {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  std::vector<std::string> out(drawn().begin(), drawn().end());
+  drawn().clear();
+  return out;
 }
 
 }  // namespace shadowlab

@@ -25,5 +25,9 @@ std::string withheldStandIn(const std::string& relativePath);
 // The withheld files the preprocessor replaced by their stand-ins so far, in this process, sorted.
 void noteWithheldReplaced(const std::string& relativePath);
 std::vector<std::string> withheldReplaced();
+// The withheld files whose stand-ins a program drawing since the last call was built with (the
+// program notes them when it is used: gl::Program::use), sorted; the call starts a new period.
+void noteWithheldDrawn(const std::vector<std::string>& relativePaths);
+std::vector<std::string> takeWithheldDrawn();
 
 }  // namespace shadowlab

@@ -12,6 +12,7 @@
 
 #include "core/glsl_es.hpp"
 #include "core/paths.hpp"
+#include "core/shader_files.hpp"
 #include "gl/caps.hpp"
 #include "gl/debug.hpp"
 
@@ -220,10 +221,23 @@ bool Program::finish() {
   }
   gl::label(GL_PROGRAM, p.program.id(), label_);
   program_ = std::move(p.program);
+  standIns_.clear();
+  // The sources name the stand-in read (exercises.glsl), not the withheld file it stood in for.
+  const std::vector<std::string> replaced = withheldReplaced();
+  const std::filesystem::path root = replaced.empty() ? "" : std::filesystem::weakly_canonical(shaderRoot());
+  for (const std::string& rel : replaced) {
+    const std::string standIn = (root / withheldStandIn(rel)).string();
+    if (std::any_of(sources_.begin(), sources_.end(), [&](const ShaderSource& source) {
+          return std::find(source.files.begin(), source.files.end(), standIn) != source.files.end();
+        }))
+      standIns_.push_back(rel);
+  }
   locations_.clear();
   error_.clear();
   return true;
 }
+
+void Program::noteStandInsDrawn() const { noteWithheldDrawn(standIns_); }
 
 bool Program::build() {
   start();

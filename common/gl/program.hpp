@@ -54,7 +54,10 @@ class Program {
   // shader, since a trivial one there gives garbage sizes and no frame to measure. Before build().
   void keepUnderFloor() { keepUnderFloor_ = true; }
 
-  void use() const { glUseProgram(program_.id()); }
+  void use() const {
+    glUseProgram(program_.id());
+    if (!standIns_.empty()) noteStandInsDrawn();
+  }
   GLint location(const char* name) const;  // cached; -1 when the uniform is unused
   void set(const char* name, float v) const;
   void set(const char* name, int v) const;
@@ -81,6 +84,10 @@ class Program {
   std::vector<std::string> files_;
   std::vector<std::string> defines_;
   std::vector<ShaderSource> sources_;
+  // The withheld files (core/shader_files.hpp) this build read from their stand-ins: the student
+  // handout and the browser. use() notes them, so the lesson says whose GLSL draws only while it does.
+  std::vector<std::string> standIns_;
+  void noteStandInsDrawn() const;
   std::unique_ptr<Pending> pending_;
   ProgramHandle program_;
   std::string error_;

@@ -99,8 +99,8 @@ class ShadowMapLesson : public Lesson {
     exercises.add("02.1", "shadowTextureMatrix", "the texture matrix is the identity: the shadows are wrong or gone");
     exercises.add("02.2", "depthCompare", "compare=cpu_vertex lights every vertex: no shadows");
     exercises.add("02.3", "shadowLookup (CPU)", "compare=cpu_vertex lights every vertex: no shadows");
-    exercises.addGlsl("02.4", "shadowCompare", "compare=manual lights every pixel: no shadows");
-    exercises.addGlsl("02.5", "shadowLookup", "compare=manual lights every pixel: no shadows");
+    exercises.addGlsl("02.4", "shadowCompare", "compare=manual lights every pixel: no shadows", "compare=manual");
+    exercises.addGlsl("02.5", "shadowLookup", "compare=manual lights every pixel: no shadows", "compare=manual");
     r.add("shadow.near", &p_.lightNear, 0.05f, 50,
           "the light frustum's near plane: depth precision depends on far/near");
     r.add("shadow.far", &p_.lightFar, 1, 500, "the light frustum's far plane");

@@ -80,7 +80,8 @@ class ShadowQualityLesson : public tech::ShadowLesson {
     exercises.add("03.3", "cubeFace", "");
     exercises.add("03.4", "casterMayShadow", "every caster is kept: the same picture at the full cost");
     exercises.add("03.5", "fitOrthographic", "the sun's map covers nothing: its shadows are gone or wrong");
-    exercises.addGlsl("03.6", "pcfKernel", "filter=pcf_nxn lights every pixel of the 2D maps: no shadows");
+    exercises.addGlsl("03.6", "pcfKernel", "filter=pcf_nxn lights every pixel of the 2D maps: no shadows",
+                      "filter=pcf_nxn");
     r.add("drift", &p_.drift, "move the camera slowly along x (watch edges shimmer without snapping)").hotkey = "G";
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     maps_.declare(r, "");  // this lesson's subject: its parameters keep their bare names

@@ -78,7 +78,8 @@ class ShadowVolumeLesson : public Lesson {
     exercises.add("04.4", "volumeMayReachNearPlane",
                   "method=auto never picks z-fail: wrong shadows with the camera in a volume");
     exercises.addGlsl("04.5", "extrudeToInfinity",
-                      "silhouettes=gpu extrudes nothing: the volumes have no length, nothing is shadowed");
+                      "silhouettes=gpu extrudes nothing: the volumes have no length, nothing is shadowed",
+                      "silhouettes=gpu");
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia: the light shadows never take away");
     r.add("specular", &p_.specular, 0, 1, "ks");
     r.add("shininess", &p_.shininess, 1, 256, "the specular exponent");

@@ -86,7 +86,7 @@ class SoftShadowsLesson : public tech::ShadowLesson {
     exercises.add("05.3", "pcssFilterRadiusUv", "");  // "": not used live, so no banner
     exercises.add("05.4", "rotateTap", "");
     exercises.add("05.5", "lightMeshVisibility", "");
-    exercises.addGlsl("05.6", "blockerSearch", "technique=pcss finds no blocker: no shadows");
+    exercises.addGlsl("05.6", "blockerSearch", "technique=pcss finds no blocker: no shadows", "technique=pcss");
     exercises.add("05.7", "msmLitShare", "");  // technique=msm's bound, graded on its own
     r.add("ambient", &p_.ambient, 0, 1, "ka Ia");
     r.add("theory.edges", &p_.showEdge, "draw the lecture's predicted penumbra of the picked caster edge").hotkey = "G";

@@ -140,8 +140,9 @@ class TextureFilteringLesson : public Lesson {
     exercises.add("06.5", "sampleTrilinear", "view=cpu_reference is black wherever the texture is");
     exercises.add("06.6", "anisotropicProbes", "");
     exercises.add("06.7", "boxDownsample", "");
-    exercises.addGlsl("06.8", "ripLevelOfDetail", "sampling=rip_map reads level 0 everywhere: aliasing");
-    exercises.addGlsl("06.9", "ripBilinear", "sampling=rip_map is black wherever the texture is");
+    exercises.addGlsl("06.8", "ripLevelOfDetail", "sampling=rip_map reads level 0 everywhere: aliasing",
+                      "sampling=rip_map");
+    exercises.addGlsl("06.9", "ripBilinear", "sampling=rip_map is black wherever the texture is", "sampling=rip_map");
     r.add("diff_gain", &p_.diffGain, 1.0f, 64.0f, "difference view: |GPU - CPU| times this");
   }
 

@@ -105,7 +105,8 @@ class ShowdownLesson : public tech::ShadowLesson {
     exercises.add("10.1", "practicalSplits", "technique=csm gets no splits: the sun's cascades are gone (lit)");
     exercises.add("10.2", "snapToTexels", "csm.snap=on: each cascade's map covers nothing: its shadows are gone");
     exercises.add("10.3", "cascadeAt", "");  // "": the lit shader picks the cascade (10.4); not used live
-    exercises.addGlsl("10.4", "cascadeAt", "technique=csm: no point falls in a cascade: the sun casts no shadow");
+    exercises.addGlsl("10.4", "cascadeAt", "technique=csm: no point falls in a cascade: the sun casts no shadow",
+                      "technique=csm");
     techniques_.declare(r);  // each under its own name: uniform.map_size, csm.cascades, ...
     r.setHotkey("csm.colours", "C");
     postView_.declare(r);

@@ -1,7 +1,9 @@
 # gpu.NN.withheld: the student handout's lesson, as the handout has it, without the reference GLSL
 # of any exercise (the `withheld` lines of tools/handout/sealed_shaders.txt). On a copy of the
 # shader tree without those files (SHADOWLAB_ROOT):
-#   - the lesson runs (strict GL) and its banner says the student's exercises.glsl draws instead;
+#   - the lesson runs (strict GL) and, in a view that calls a withheld function (-DVIEW=name=value,
+#     the exercise's usedWhen; empty: every view calls one), its banner says the student's
+#     exercises.glsl draws instead; with VIEW given, the default view (which calls none) has no banner;
 #   - the driver receives no line of the withheld files (Mesa writes every shader it is given to
 #     MESA_SHADER_DUMP_PATH): the reference GLSL is in no form a student could recover there.
 # The same run in this tree, where the files are, must hand the driver a reference line: the check
@@ -60,7 +62,7 @@ endif()
 function(run_lesson root dump result_var)
   execute_process(COMMAND ${CMAKE_COMMAND} -E env SHADOWLAB_ROOT=${root} MESA_SHADER_DUMP_PATH=${dump}
                           SHADOWLAB_STRICT_GL=1 ${LESSON_BINARY} --headless --frames 2 --size 320x180
-                          --set impl=reference ${ARGS}
+                          --set impl=reference ${ARGN}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${LESSON} (SHADOWLAB_ROOT=${root}) exited ${rc}:\n${out}${err}")
@@ -97,9 +99,21 @@ if(NOT in_tree)
   message(FATAL_ERROR "in this tree the driver got no line of the withheld files: the check below could not fail")
 endif()
 
-run_lesson(${OUT}/root ${OUT}/dump_handout handout)
+set(view_args "")
+if(VIEW)
+  set(view_args --set ${VIEW})
+endif()
+run_lesson(${OUT}/root ${OUT}/dump_handout handout ${view_args})
 if(NOT handout MATCHES "your GLSL draws where the reference's is withheld" OR NOT handout MATCHES "shaders/${LESSON}/exercises.glsl")
   message(FATAL_ERROR "without the reference GLSL the banner does not say whose GLSL draws:\n${handout}")
+endif()
+if(VIEW)
+  file(MAKE_DIRECTORY ${OUT}/dump_default)
+  run_lesson(${OUT}/root ${OUT}/dump_default default_view --show-ui)  # the UI runs the exercises' cases too
+  if(default_view MATCHES "your GLSL draws where the reference's is withheld")
+    message(FATAL_ERROR "the default view calls no withheld function (it takes ${VIEW}), yet the banner says "
+                        "the student's GLSL draws:\n${default_view}")
+  endif()
 endif()
 answer_lines_in("${handout_shaders}" leaked)
 if(leaked)
