@@ -38,6 +38,9 @@ glm::ivec2 probePixel(int x, int yFromTop, int width, int height) {
 void followMouse(int& x, int& yFromTop) {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantCaptureMouse || io.MousePos.x < 0 || io.MousePos.y < 0) return;
+  // Only when it moves: a preset's or a link's probe holds until the reader moves the mouse (the
+  // browser's cursor sits at 0,0 until the mouse enters the page).
+  if (io.MouseDelta.x == 0 && io.MouseDelta.y == 0) return;
   x = int(io.MousePos.x * io.DisplayFramebufferScale.x);
   yFromTop = int(io.MousePos.y * io.DisplayFramebufferScale.y);
 }

@@ -19,8 +19,8 @@ namespace shadowlab {
 // The probed pixel in GL's bottom-left origin: (x, yFromTop) as the mouse or probe.x / probe.y give
 // it, clamped into a width x height frame.
 glm::ivec2 probePixel(int x, int yFromTop, int width, int height);
-// Moves (x, yFromTop) to the mouse's framebuffer pixel, unless the UI has the mouse or it is
-// outside the window (from Lesson::gui()).
+// Moves (x, yFromTop) to the mouse's framebuffer pixel when the mouse moved, unless the UI has the
+// mouse or it is outside the window (from Lesson::gui()).
 void followMouse(int& x, int& yFromTop);
 
 // One pixel of a scene pass as the shader wrote it (attachments 1 and 2 of the target).

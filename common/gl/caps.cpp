@@ -72,6 +72,7 @@ const Caps& caps() {
   c.depthClamp = has("GL_EXT_depth_clamp");
   c.floatColorBuffers = has("GL_EXT_color_buffer_float");
   c.floatLinear = has("GL_OES_texture_float_linear");
+  c.polygonMode = has("GL_WEBGL_polygon_mode");
 #else
   c.floatColorBuffers = c.floatLinear = c.polygonMode = c.getTexImage = true;  // core since 3.0 or 1.x
   c.depthClamp = !hidden("GL_ARB_depth_clamp");                                // core since 3.2

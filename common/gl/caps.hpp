@@ -28,7 +28,7 @@ struct Caps {
   bool depthClamp = false;         // GL_DEPTH_CLAMP (4.1 core; WebGL2: EXT_depth_clamp)
   bool geometryShaders = false;    // 4.1 core; none in WebGL2 (lines and volumes expanded on the CPU)
   bool clampToBorder = false;      // GL_CLAMP_TO_BORDER (4.1; WebGL2: clamp to edge and a range test)
-  bool polygonMode = false;        // glPolygonMode wireframe (4.1; WebGL2: none)
+  bool polygonMode = false;        // glPolygonMode wireframe (4.1; WebGL2: WEBGL_polygon_mode)
   bool getTexImage = false;        // glGetTexImage (4.1; WebGL2: read back through a framebuffer)
   bool floatColorBuffers = false;  // render into RGBA32F/RG32F (4.1; WebGL2: EXT_color_buffer_float)
   bool floatLinear = false;        // linear filtering of 32-bit float textures (WebGL2: OES_texture_float_linear)

@@ -3,6 +3,8 @@
 // includes this under __EMSCRIPTEN__). The enums keep desktop code compiling; every function here
 // is reached only where gl::caps() says the feature exists, and otherwise throws naming the call,
 // so a missing caps check is a clear error in the page, never a silent wrong picture.
+#include <emscripten/emscripten.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -53,7 +55,19 @@ inline void glDrawBuffer(GLenum buffer) { glDrawBuffers(1, &buffer); }
 inline void glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count, GLsizei n) {
   for (GLsizei i = 0; i < n; ++i) glDrawArrays(mode, first[i], count[i]);
 }
-inline void glPolygonMode(GLenum, GLenum) { shadowlab::gl::es::unavailable("glPolygonMode"); }
+// WEBGL_polygon_mode (the context enables it where the browser has it: gl::caps().polygonMode), the
+// same enums as desktop GL's; without it, the call is a mistake the caps should have caught.
+inline void glPolygonMode(GLenum face, GLenum mode) {
+  if (!EM_ASM_INT(
+          {
+            var e = GLctx.getExtension('WEBGL_polygon_mode');
+            if (!e) return 0;
+            e.polygonModeWEBGL($0, $1);
+            return 1;
+          },
+          face, mode))
+    shadowlab::gl::es::unavailable("glPolygonMode (no WEBGL_polygon_mode)");
+}
 inline void glGetTexImage(GLenum, GLint, GLenum, GLenum, void*) { shadowlab::gl::es::unavailable("glGetTexImage"); }
 inline void glQueryCounter(GLuint, GLenum) { shadowlab::gl::es::unavailable("glQueryCounter"); }
 inline void glGetQueryObjectui64v(GLuint, GLenum, GLuint64*) {

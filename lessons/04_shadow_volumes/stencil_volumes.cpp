@@ -173,7 +173,7 @@ void StencilVolumes::finishFrame(const Frame& f) {
   if (p_.far == P::FarPlane::DepthClamp && !depthClamp())
     stats_.extra.push_back({"far", "infinite: no EXT_depth_clamp here"});
   if (p_.view == P::View::Wireframe && !gl::caps().polygonMode)
-    stats_.extra.push_back({"wireframe", "drawn filled: no glPolygonMode in WebGL2"});
+    stats_.extra.push_back({"wireframe", "drawn filled: this browser has no WEBGL_polygon_mode"});
   if (p_.fillQuery && gl::caps().gles) stats_.extra.push_back({"fill query", "none: WebGL2 counts no samples"});
   for (std::size_t i = 0; i < c.lights.size(); ++i) {
     stats_.bytes += caches_[i].triangles.size() * sizeof(glm::vec4);

@@ -111,7 +111,7 @@ class StencilVolumes : public ShadowTechnique {
 
   bool casts(std::size_t object) const;
   // What this context runs of the parameters: WebGL2 has no geometry shader (silhouettes on the
-  // CPU), may lack EXT_depth_clamp (the infinite far plane) and glPolygonMode (the wireframe filled).
+  // CPU), may lack EXT_depth_clamp (the infinite far plane) and WEBGL_polygon_mode (the wireframe filled).
   bool gpuSilhouettes() const;
   bool depthClamp() const;
   void buildAdjacency(const SceneCache& scene);
