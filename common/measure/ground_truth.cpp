@@ -263,6 +263,14 @@ bool GroundTruth::update(const Scene& scene, std::uint64_t revision) {
 }
 
 namespace {
+// A read-back pixel whose position or normal is not finite (a shader that wrote no surface: the
+// benchmark's floor shader) is no surface to trace from: Embree aborts on such a ray.
+bool finiteSurface(const SurfaceBuffer& surface, std::size_t i) {
+  const glm::vec3 &p = surface.position[i], &n = surface.normal[i];
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(n.x) && std::isfinite(n.y) &&
+         std::isfinite(n.z);
+}
+
 bool occludedRay(RTCScene scene, const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -303,7 +311,7 @@ ImageF GroundTruth::hardVisibility(const SurfaceBuffer& surface, const Light& li
   parallelRows(surface.height, options_.threads, [&](int y) {
     for (int x = 0; x < surface.width; ++x) {
       std::size_t i = surface.index(x, y);
-      if (!surface.covered[i]) continue;
+      if (!surface.covered[i] || !finiteSurface(surface, i)) continue;
       const glm::vec3 p = surface.position[i], n = surface.normal[i];
       glm::vec3 toLight;
       float distance;
@@ -458,7 +466,7 @@ ImageF GroundTruth::softVisibility(const SurfaceBuffer& surface, const Light& li
   parallelRows(surface.height, options_.threads, [&](int y) {
     for (int x = 0; x < surface.width; ++x) {
       std::size_t i = surface.index(x, y);
-      if (!surface.covered[i]) continue;
+      if (!surface.covered[i] || !finiteSurface(surface, i)) continue;
       const glm::vec3 p = surface.position[i], n = surface.normal[i];
       glm::vec3 toCentre = light.position - p;
       float centreDistance = glm::length(toCentre);

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -141,6 +142,28 @@ TEST_CASE("measure.ground_truth: back-facing, out-of-cone and background pixels 
   light.spotOuter = 0.8f;
   vis = truth.hardVisibility(view, light);
   CHECK(vis.at(2, 0) == 1.0f);
+}
+
+TEST_CASE("measure.ground_truth: a covered pixel with a non-finite position or normal is background, not a ray") {
+  Scene scene;
+  scene.materials.push_back(plainMaterial());
+  addObject(scene, horizontalQuad(-1, 1, -1, 1, 3));
+  GroundTruth truth(scene);
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  SurfaceBuffer view(3, 1);
+  view.set(0, 0, {nan, 0, 0}, {0, 1, 0});  // what the benchmark's floor shader left in the read-back
+  view.set(1, 0, {0, 0, 0}, {0, inf, 0});
+  view.set(2, 0, {5, 0, 0}, {0, 1, 0});  // open sky, traced as ever
+  Light light;
+  light.kind = LightKind::Point;
+  light.position = {0, 6, 0};
+  light.area = AreaShape::Sphere;
+  light.radius = 0.5f;
+  for (const ImageF& vis : {truth.hardVisibility(view, light), truth.softVisibility(view, light, 16, 1)}) {
+    CHECK(vis.at(0, 0) == kBackground);
+    CHECK(vis.at(1, 0) == kBackground);
+    CHECK(vis.at(2, 0) == 1.0f);
+  }
 }
 
 TEST_CASE("measure.ground_truth: a spherical light over a straight edge follows the lecture's A_frac") {
