@@ -67,6 +67,13 @@ async function waitExit(p, ms) {
   return p.evaluate(() => window.shadowlab.exit);
 }
 
+// Waits (up to 10 s) for the lesson's next frames to take an input: `name` no longer `before`. A page
+// under load draws a frame a second or slower, so a fixed wait passed or failed by chance.
+async function changed(p, name, before) {
+  await p.waitForFunction(([n, b]) => window.Module.ccall('shadowlab_param', 'string', ['string'], [n]) !== b,
+                          [name, before], { timeout: 10000 }).catch(() => {});
+}
+
 // The share (percent) of pixels whose largest channel differs by more than `levels`, computed in
 // the page from the two PNGs (the browser decodes them).
 async function compare(p, a, b, levels) {
@@ -145,11 +152,15 @@ for (const view of views) {
     try {
       await p.waitForFunction(() => (window.shadowlab.frameTimes || []).length >= 3, null, { timeout: 60000 });
       await p.click('#canvas');
+      // Two frames before the first key: the frame that takes the click gives it to the UI under it
+      // (ImGui's active item), and a key in that same frame goes to the UI too, as in a native window.
+      const clicked = await p.evaluate(() => window.shadowlab.frameTimes.length);
+      await p.waitForFunction((n) => window.shadowlab.frameTimes.length >= n + 2, clicked, { timeout: 60000 });
       for (const [key, param] of keys) {
         const read = () => p.evaluate((n) => window.Module.ccall('shadowlab_param', 'string', ['string'], [n]), param);
         const before = await read();
         await p.keyboard.press(key.toLowerCase());
-        await p.waitForTimeout(400);
+        await changed(p, param, before);
         const after = await read();
         if (before === after) fail(`hotkey ${key}: ${param} stayed ${before}`);
         else console.log(`ok   hotkey ${key}: ${param} ${before} -> ${after}`);
@@ -175,7 +186,7 @@ for (const view of views) {
     await p.mouse.down();
     await p.mouse.move(600, 310, { steps: 8 });
     await p.mouse.up();
-    await p.waitForTimeout(400);
+    await changed(p, 'camera.yaw', yaw);
     const status = await p.evaluate(() => window.Module.ccall('shadowlab_share', 'string', [], []));
     const link = new URL(await p.evaluate(() => location.href));
     const sets = link.searchParams.getAll('set');
