@@ -151,11 +151,14 @@ for (const view of views) {
     const { p, errors } = await open(`${base}?size=${args.size}`);
     try {
       await p.waitForFunction(() => (window.shadowlab.frameTimes || []).length >= 3, null, { timeout: 60000 });
-      await p.click('#canvas');
-      // Two frames before the first key: the frame that takes the click gives it to the UI under it
-      // (ImGui's active item), and a key in that same frame goes to the UI too, as in a native window.
+      // The keyboard's focus: a click on the picture's bottom right corner, where no window of the UI
+      // is (the canvas's centre at this size is under the header: a click there makes a window the
+      // UI's active item, and ImGui then takes the keys of the next two frames, as natively). Three
+      // frames pass before the first key.
+      const [w, h] = args.size.split('x').map(Number);
+      await p.click('#canvas', { position: { x: w - 4, y: h - 4 } });
       const clicked = await p.evaluate(() => window.shadowlab.frameTimes.length);
-      await p.waitForFunction((n) => window.shadowlab.frameTimes.length >= n + 2, clicked, { timeout: 60000 });
+      await p.waitForFunction((n) => window.shadowlab.frameTimes.length >= n + 3, clicked, { timeout: 60000 });
       for (const [key, param] of keys) {
         const read = () => p.evaluate((n) => window.Module.ccall('shadowlab_param', 'string', ['string'], [n]), param);
         const before = await read();
