@@ -67,6 +67,9 @@ async function waitExit(p, ms) {
   return p.evaluate(() => window.shadowlab.exit);
 }
 
+// A parameter's value in the page's lesson, as --set takes it (shadowlab_param).
+const param = (p, name) => p.evaluate((n) => window.Module.ccall('shadowlab_param', 'string', ['string'], [n]), name);
+
 // Waits (up to 10 s) for the lesson's next frames to take an input: `name` no longer `before`. A page
 // under load draws a frame a second or slower, so a fixed wait passed or failed by chance.
 async function changed(p, name, before) {
@@ -159,14 +162,13 @@ for (const view of views) {
       await p.click('#canvas', { position: { x: w - 4, y: h - 4 } });
       const clicked = await p.evaluate(() => window.shadowlab.frameTimes.length);
       await p.waitForFunction((n) => window.shadowlab.frameTimes.length >= n + 3, clicked, { timeout: 60000 });
-      for (const [key, param] of keys) {
-        const read = () => p.evaluate((n) => window.Module.ccall('shadowlab_param', 'string', ['string'], [n]), param);
-        const before = await read();
+      for (const [key, name] of keys) {
+        const before = await param(p, name);
         await p.keyboard.press(key.toLowerCase());
-        await changed(p, param, before);
-        const after = await read();
-        if (before === after) fail(`hotkey ${key}: ${param} stayed ${before}`);
-        else console.log(`ok   hotkey ${key}: ${param} ${before} -> ${after}`);
+        await changed(p, name, before);
+        const after = await param(p, name);
+        if (before === after) fail(`hotkey ${key}: ${name} stayed ${before}`);
+        else console.log(`ok   hotkey ${key}: ${name} ${before} -> ${after}`);
       }
       for (const e of errors) fail(`hotkeys: ${e}`);
     } catch (e) {
@@ -180,7 +182,6 @@ for (const view of views) {
 // camera and a hotkey, the page's address holds the view; a new page opened at it has the same
 // values. The page without size= fills the window and follows it when the window is resized.
 {
-  const param = (p, n) => p.evaluate((n) => window.Module.ccall('shadowlab_param', 'string', ['string'], [n]), n);
   const { p, errors } = await open(base);
   try {
     await p.waitForFunction(() => (window.shadowlab.frameTimes || []).length >= 3, null, { timeout: 60000 });
