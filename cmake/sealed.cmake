@@ -32,10 +32,22 @@ else()
   target_include_directories(seal_files PRIVATE ${CMAKE_SOURCE_DIR}/common)
   set(seal_tool seal_files)
 endif()
+# The browser's pages show every technique, so by default they seal the withheld GLSL references
+# in as well (obscured like the sealed files, which a browser's shader debugger still shows: see
+# docs/teaching.md). -DSHADOWLAB_WEB_WITHHOLD=ON builds pages that withhold them as the handout does.
+option(SHADOWLAB_WEB_WITHHOLD "browser build: withhold the GLSL exercises' references, as the handout does" OFF)
+set(seal_manifest ${SEALED_MANIFEST})
+if(SHADOWLAB_WEB AND NOT SHADOWLAB_WEB_WITHHOLD)
+  set(seal_manifest ${CMAKE_BINARY_DIR}/generated/sealed_shaders_web.txt)
+  file(READ ${SEALED_MANIFEST} manifest_text)
+  string(REGEX REPLACE "(^|\n)withheld[ \t]+" "\\1" manifest_text "${manifest_text}")
+  file(WRITE ${seal_manifest}.new "${manifest_text}")
+  file(COPY_FILE ${seal_manifest}.new ${seal_manifest} ONLY_IF_DIFFERENT)
+endif()
 set(sealed_cpp ${CMAKE_BINARY_DIR}/generated/sealed_files.cpp)
 add_custom_command(OUTPUT ${sealed_cpp}
-  COMMAND ${seal_tool} ${SEALED_MANIFEST} ${CMAKE_SOURCE_DIR}/shaders ${sealed_cpp}
-  DEPENDS ${seal_tool} ${SEALED_MANIFEST} ${sealed_files}
+  COMMAND ${seal_tool} ${seal_manifest} ${CMAKE_SOURCE_DIR}/shaders ${sealed_cpp}
+  DEPENDS ${seal_tool} ${seal_manifest} ${sealed_files}
   COMMENT "Sealing the shader files of tools/handout/sealed_shaders.txt")
 add_library(shadowlab_sealed STATIC ${sealed_cpp})
 target_include_directories(shadowlab_sealed PRIVATE ${CMAKE_SOURCE_DIR}/common)

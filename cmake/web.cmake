@@ -64,8 +64,8 @@ add_library(shadowlab_web_none INTERFACE)
 add_library(shadowlab::epoxy ALIAS shadowlab_web_none)  # GL comes from <GLES3/gl3.h> (gl/gl.hpp)
 add_library(assimp::assimp ALIAS shadowlab_web_none)
 
-# The lessons the browser build makes pages of (the next ones follow as their WebGL2 paths land).
-set(SHADOWLAB_WEB_LESSONS 01 02 03 04 06 CACHE STRING "Lesson numbers built for the browser")
+# The lessons the browser build makes pages of: every one.
+set(SHADOWLAB_WEB_LESSONS 01 02 03 04 05 06 07 08 09 10)
 
 # shadowlab_web_page(TARGET LESSON): the lesson's program as a page in ${CMAKE_BINARY_DIR}/site:
 # TARGET.html (tools/wasm/shell.html around the canvas), .js, .wasm and .data (the files the

@@ -97,6 +97,8 @@ if(NOT SHADOWLAB_UNIT_ONLY AND SHADOWLAB_LESSONS)
     SOFT_MAX_SAMPLES  # soft_maps.glsl's own array size (#ifndef: 64, SoftMaps::kMaxSamples), never overridden
     SOFT_MAX_TAPS     # the same for the tap arrays
     SHADOWLAB_NO_BORDER_CLAMP   # gl::Program's, where caps() has no border clamp: WebGL2 (the web tests)
+    SHADOWLAB_NO_CLIP_DISTANCE  # the same without gl_ClipDistance
+    SHADOWLAB_NO_DEPTH_CLAMP    # the same without GL_DEPTH_CLAMP
     SHADOWLAB_GLES)             # core/glsl_es's, in the browser build (shader.variants.es checks those)
   set(variant_logs "")
   foreach(lesson IN LISTS SHADOWLAB_LESSONS)

@@ -33,8 +33,9 @@ class WebContext final : public Context {
     glfwMakeContextCurrent(window_);
     // What WebGL2 offers only when asked: the extensions gl::caps() reports and the fallbacks test.
     const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE gl = emscripten_webgl_get_current_context();
-    for (const char* e : {"EXT_depth_clamp", "EXT_color_buffer_float", "OES_texture_float_linear",
-                          "EXT_texture_filter_anisotropic", "EXT_float_blend", "WEBGL_polygon_mode"})
+    for (const char* e :
+         {"EXT_depth_clamp", "EXT_color_buffer_float", "OES_texture_float_linear", "EXT_texture_filter_anisotropic",
+          "EXT_float_blend", "WEBGL_polygon_mode", "EXT_texture_norm16"})
       emscripten_webgl_enable_extension(gl, e);
     gl::resetCaps();
   }

@@ -36,13 +36,19 @@ std::string toGlslEs(const std::string& source) {
   if (version == lines.size())
     throw std::invalid_argument("toGlslEs: the shader has no #version line (expand it with loadShaderSource first)");
   std::vector<std::string> extensions;
+  // An ARB extension is desktop OpenGL's, never WebGL2's: its line goes (the shader uses it only
+  // where gl::caps() found it, under a define the browser build never sets: PCSS's QUAD_SEARCH).
   for (std::size_t i = version + 1; i < lines.size(); ++i)
-    if (directive(lines[i]) == "extension") extensions.push_back(lines[i]), lines[i].clear();
+    if (directive(lines[i]) == "extension") {
+      if (lines[i].find("GL_ARB_") == std::string::npos) extensions.push_back(lines[i]);
+      lines[i].clear();
+    }
   std::string out;
   for (std::size_t i = 0; i < version; ++i) out += lines[i] + '\n';
   out += "#version 300 es\n";
   for (const std::string& e : extensions) out += e + '\n';
-  out += std::string(kPrecisions) + "\n#define SHADOWLAB_GLES 1\n";
+  // GLSL ES 3.00 has no `precise` (3.20 does): the desktop shaders' qualifier is dropped.
+  out += std::string(kPrecisions) + "\n#define SHADOWLAB_GLES 1\n#define precise\n";
   out += "#line " + std::to_string(version + 2) + '\n';  // GLSL numbers lines from 1: the next one's number
   for (std::size_t i = version + 1; i < lines.size(); ++i) out += lines[i] + '\n';
   return out;

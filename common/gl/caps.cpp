@@ -16,7 +16,9 @@ bool g_detected = false;
 
 // Whether SHADOWLAB_GL_HIDE names the extension: a feature the driver has is then treated as
 // absent, so its fallback runs here (core features are hidden by the ARB extension that brought
-// them: GL_ARB_geometry_shader4, GL_ARB_depth_clamp, GL_ARB_texture_border_clamp).
+// them: GL_ARB_geometry_shader4, GL_ARB_depth_clamp, GL_ARB_texture_border_clamp; those core
+// since 3.0 that WebGL2 lacks by the name WebGL2 gives them: GL_EXT_color_buffer_float,
+// GL_OES_texture_float_linear, GL_EXT_clip_cull_distance, GL_EXT_texture_norm16; glGetTexImage by its own name).
 bool hidden(const std::string& name) {
   const char* list = std::getenv("SHADOWLAB_GL_HIDE");
   return list && (std::string(",") + list + ",").find("," + name + ",") != std::string::npos;
@@ -73,11 +75,17 @@ const Caps& caps() {
   c.floatColorBuffers = has("GL_EXT_color_buffer_float");
   c.floatLinear = has("GL_OES_texture_float_linear");
   c.polygonMode = has("GL_WEBGL_polygon_mode");
+  c.norm16 = has("GL_EXT_texture_norm16");
 #else
-  c.floatColorBuffers = c.floatLinear = c.polygonMode = c.getTexImage = true;  // core since 3.0 or 1.x
-  c.depthClamp = !hidden("GL_ARB_depth_clamp");                                // core since 3.2
-  c.geometryShaders = !hidden("GL_ARB_geometry_shader4");                      // core since 3.2
-  c.clampToBorder = !hidden("GL_ARB_texture_border_clamp");                    // core since 1.3
+  c.polygonMode = true;                                        // core since 1.0
+  c.getTexImage = !hidden("glGetTexImage");                    // core since 1.0
+  c.floatColorBuffers = !hidden("GL_EXT_color_buffer_float");  // core since 3.0
+  c.floatLinear = !hidden("GL_OES_texture_float_linear");      // core since 3.0
+  c.clipDistance = !hidden("GL_EXT_clip_cull_distance");       // core since 3.0
+  c.norm16 = !hidden("GL_EXT_texture_norm16");                 // core since 3.0
+  c.depthClamp = !hidden("GL_ARB_depth_clamp");                // core since 3.2
+  c.geometryShaders = !hidden("GL_ARB_geometry_shader4");      // core since 3.2
+  c.clampToBorder = !hidden("GL_ARB_texture_border_clamp");    // core since 1.3
 #endif
   c.khrDebug = !c.gles && (c.atLeast(4, 3) || has("GL_KHR_debug"));
   c.clipControl = c.atLeast(4, 5) || has("GL_ARB_clip_control");

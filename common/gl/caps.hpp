@@ -32,7 +32,9 @@ struct Caps {
   bool getTexImage = false;        // glGetTexImage (4.1; WebGL2: read back through a framebuffer)
   bool floatColorBuffers = false;  // render into RGBA32F/RG32F (4.1; WebGL2: EXT_color_buffer_float)
   bool floatLinear = false;        // linear filtering of 32-bit float textures (WebGL2: OES_texture_float_linear)
-  int maxTextureSize = 0;          // GL_MAX_TEXTURE_SIZE: render targets and textures, a side
+  bool norm16 = false;             // GL_RGBA16 render targets (4.1 core; WebGL2: EXT_texture_norm16)
+  bool clipDistance = false;  // gl_ClipDistance (4.1 core; WebGL2: a varying and discard, SHADOWLAB_NO_CLIP_DISTANCE)
+  int maxTextureSize = 0;     // GL_MAX_TEXTURE_SIZE: render targets and textures, a side
   int maxRenderbufferSize = 0;
   int maxViewport[2] = {0, 0};  // GL_MAX_VIEWPORT_DIMS
   bool atLeast(int ma, int mi) const { return major > ma || (major == ma && minor >= mi); }

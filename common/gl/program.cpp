@@ -175,8 +175,11 @@ void Program::start() {
                                                     : loadShaderSources(paths, {root}));
       const std::string& file = unit.front();
       std::string text = withDefines(pending_->sources.back().text, defines_);
-      // What the context lacks, for the shaders' fallbacks: no border clamp (test the range).
+      // What the context lacks, for the shaders' fallbacks: no border clamp (test the range), no
+      // gl_ClipDistance (interpolate the distances and discard), no depth clamp (flatten in the shader).
       if (!caps().clampToBorder) text = withDefines(text, {"SHADOWLAB_NO_BORDER_CLAMP"});
+      if (!caps().clipDistance) text = withDefines(text, {"SHADOWLAB_NO_CLIP_DISTANCE"});
+      if (!caps().depthClamp) text = withDefines(text, {"SHADOWLAB_NO_DEPTH_CLAMP"});
       if (caps().gles) text = toGlslEs(text);  // WebGL2: GLSL ES 3.00 (core/glsl_es.hpp)
       ShaderHandle shader(glCreateShader(glStage(stageFromPath(file))));
       const char* src = text.c_str();

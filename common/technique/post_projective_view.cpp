@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -63,7 +64,7 @@ void PostProjectiveView::declare(ParamRegistry& r, const std::string& n) {
 
 void PostProjectiveView::init() {
   scene_.build();
-  lines_.build();
+  linesProgram().build();
   blit_.build();
   linesVao_ = gl::makeVertexArray("post-projective view: lines");
   lineVertices_ = gl::makeBuffer(GL_ARRAY_BUFFER, "post-projective view: lines");
@@ -118,35 +119,46 @@ std::vector<glm::vec4> PostProjectiveView::drawLines(const ShadowContext& c, con
   psm::PostProjectiveShapes shapes;
   addFrame(shapes, camera, psm::homogeneousLight(c.lights[std::size_t(light)]));
   if (const auto* s = dynamic_cast<const PostProjectiveSubject*>(&t)) s->describePostProjective(c, light, shapes);
+  // Two vertices a segment for lines.geom; six (corners 0 1 2, 1 3 2, each with both ends) for
+  // lines_quad.vert.
   struct V {
-    glm::vec4 p, c;
+    glm::vec4 a, b, c;
+    float corner;
   };
+  const bool quads = !gl::caps().geometryShaders;
   std::vector<V> v;
-  v.reserve(shapes.lines().size() * 2);
+  v.reserve(shapes.lines().size() * (quads ? 6 : 2));
   std::vector<glm::vec4> colours;
   for (const auto& l : shapes.lines()) {
     if (std::find(colours.begin(), colours.end(), l.colour) == colours.end()) colours.push_back(l.colour);
     // Scaled to a common length first: a far point's huge coordinates would lose float digits.
     const double sa = std::max(glm::length(l.a), 1e-300), sb = std::max(glm::length(l.b), 1e-300);
-    v.push_back({glm::vec4(l.a / sa), l.colour});
-    v.push_back({glm::vec4(l.b / sb), l.colour});
+    const glm::vec4 a(l.a / sa), b(l.b / sb);
+    if (quads)
+      for (int corner : {0, 1, 2, 1, 3, 2}) v.push_back({a, b, l.colour, float(corner)});
+    else v.push_back({a, b, l.colour, 0.0f}), v.push_back({b, a, l.colour, 0.0f});
   }
   glBindVertexArray(linesVao_.id());
   glBindBuffer(GL_ARRAY_BUFFER, lineVertices_.id());
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(V)), v.data(), GL_STREAM_DRAW);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(V), nullptr);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(V), reinterpret_cast<void*>(sizeof(glm::vec4)));
+  const auto attribute = [](GLuint index, int size, std::size_t offset) {
+    glEnableVertexAttribArray(index);
+    glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, sizeof(V), reinterpret_cast<void*>(offset));
+  };
+  // lines.geom's program: position (a) and colour; lines_quad.vert's: both ends, colour, corner.
+  attribute(0, 4, offsetof(V, a));
+  if (quads) attribute(1, 4, offsetof(V, b)), attribute(2, 4, offsetof(V, c)), attribute(3, 1, offsetof(V, corner));
+  else attribute(1, 4, offsetof(V, c));
   const float aspect = float(target_.width) / float(target_.height);
-  lines_.use();
-  lines_.set("uDisplay", glm::perspective(0.7f, aspect, 0.05f, 500.0f) * view);
-  lines_.set("uViewport", glm::vec2(float(target_.width), float(target_.height)));
-  lines_.set("uWidth", LineRenderer::projectorWidth(c.frame.height));
+  gl::Program& lines = linesProgram();
+  lines.use();
+  lines.set(quads ? "uViewProj" : "uDisplay", glm::perspective(0.7f, aspect, 0.05f, 500.0f) * view);
+  lines.set("uViewport", glm::vec2(float(target_.width), float(target_.height)));
+  lines.set("uWidth", LineRenderer::projectorWidth(c.frame.height));
   glDepthFunc(GL_LEQUAL);
   for (const float sign : {1.0f, -1.0f}) {
-    lines_.set("uSign", sign);
-    glDrawArrays(GL_LINES, 0, GLsizei(v.size()));
+    lines.set("uSign", sign);
+    glDrawArrays(quads ? GL_TRIANGLES : GL_LINES, 0, GLsizei(v.size()));
   }
   glDepthFunc(GL_LESS);
   glBindVertexArray(0);
@@ -170,11 +182,13 @@ void PostProjectiveView::draw(const ShadowContext& c, const ShadowTechnique& t, 
   glClearColor(0.09f, 0.1f, 0.14f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
-  for (int k = 0; k < 7; ++k) glEnable(GLenum(GL_CLIP_DISTANCE0 + k));
+  // The clip planes (post_projective.vert); without gl_ClipDistance the shaders discard instead.
+  const bool clip = gl::caps().clipDistance;
+  for (int k = 0; k < 7 && clip; ++k) glEnable(GLenum(GL_CLIP_DISTANCE0 + k));
   drawScene(c, glm::mat4(camera), view);
-  for (int k = 1; k < 7; ++k) glDisable(GLenum(GL_CLIP_DISTANCE0 + k));
+  for (int k = 1; k < 7 && clip; ++k) glDisable(GLenum(GL_CLIP_DISTANCE0 + k));
   legends.push_back(postProjectiveLegend(drawLines(c, t, light, camera, view)));
-  glDisable(GL_CLIP_DISTANCE0);
+  if (clip) glDisable(GL_CLIP_DISTANCE0);
   composite(c, corner.x, corner.y, w, h);
   if (const auto i = inset(c.frame.width, c.frame.height)) insets.push_back(*i);
 }

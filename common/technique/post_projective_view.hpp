@@ -85,6 +85,10 @@ class PostProjectiveView {
   gl::Program lines_{"post-projective view: lines",
                      {"common/post_lines.vert", "common/lines.geom", "common/lines.frag"},
                      {"CLIP_DISTANCE0"}};
+  // Without a geometry shader (WebGL2): each segment as two triangles (common/lines_quad.vert).
+  gl::Program linesQuad_{
+      "post-projective view: lines", {"common/lines_quad.vert", "common/lines.frag"}, {"CLIP_DISTANCE0"}};
+  gl::Program& linesProgram() { return gl::caps().geometryShaders ? lines_ : linesQuad_; }
   gl::Program blit_{"post-projective view: composite", {"common/fullscreen.vert", "common/overlay.frag"}};
   gl::VertexArray linesVao_, emptyVao_;
   gl::Buffer lineVertices_;

@@ -1,15 +1,28 @@
 #include "filterable_maps.hpp"
 
 #include "algorithms/moment_maps.hpp"
+#include "gl/caps.hpp"
 #include "technique/map_pass.hpp"
 #include "technique/scene_cache.hpp"
 
 namespace shadowlab::tech {
 namespace {
+// The channels a moment format holds, as glTexImage2D names them (OpenGL ES wants them to match).
+GLenum channels(GLenum internal) {
+  switch (internal) {
+    case GL_R32F:
+    case GL_R16F: return GL_RED;
+    case GL_RG32F:
+    case GL_RG16F: return GL_RG;
+    default: return GL_RGBA;
+  }
+}
+
 gl::Texture floatTexture(GLenum internal, int size, const std::string& label) {
   gl::Texture t = gl::makeTexture(GL_TEXTURE_2D, label);
   glBindTexture(GL_TEXTURE_2D, t.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), size, size, 0, GL_RGBA, GL_FLOAT, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), size, size, 0, channels(internal),
+               internal == GL_RGBA16 ? GL_UNSIGNED_SHORT : GL_FLOAT, nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // filterable: the point of it
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -75,7 +88,7 @@ void FilterableMaps::init() {
   casters_.build();
   blur_.build();
   vao_ = gl::makeVertexArray("filterable maps: fullscreen");
-  dummy_ = floatTexture(GL_RG32F, 1, "filterable maps: none");
+  dummy_ = floatTexture(storedFormat(GL_RG32F), 1, "filterable maps: none");
   const float far[2] = {1.0f, 1.0f};  // VSM: everything at t = 1; ESM reads exp(c) * exp(-c t) >= 1
   glBindTexture(GL_TEXTURE_2D, dummy_.id());
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RG, GL_FLOAT, far);
@@ -104,19 +117,74 @@ GLenum FilterableMaps::textureFormat() const {
   return GL_RG32F;
 }
 
+// The format the moments are stored in: textureFormat(), or what this context can render into and
+// filter instead (WebGL2 without EXT_color_buffer_float or OES_texture_float_linear: 16-bit floats;
+// without EXT_texture_norm16: the 16-bit quantised moments in 32-bit floats). formatNote() says so.
+GLenum FilterableMaps::storedFormat(GLenum format) {
+  const gl::Caps& caps = gl::caps();
+  if (format == GL_RGBA16 && !caps.norm16) format = GL_RGBA32F;
+  if (caps.floatColorBuffers && caps.floatLinear) return format;
+  switch (format) {
+    case GL_R32F: return GL_R16F;
+    case GL_RG32F: return GL_RG16F;
+    case GL_RGBA32F: return GL_RGBA16F;
+    default: return format;
+  }
+}
+
+// The exponents the stored format holds: a 32-bit float's (ESM's c <= 88; EVSM's <= 42, its square
+// too) or, in the 16-bit fallback, a half float's (65504 = e^11.09: ESM's c <= 11, EVSM's <= 5.5).
+bool FilterableMaps::halfFloats() const {
+  const GLenum f = storedFormat(textureFormat());
+  return f == GL_R16F || f == GL_RG16F || f == GL_RGBA16F;
+}
+float FilterableMaps::esmExponent() const { return std::min(p_.exponent, halfFloats() ? 11.0f : 88.0f); }
+glm::vec2 FilterableMaps::evsmExponents() const {
+  const float most = halfFloats() ? 5.5f : float(soft::kEvsmMaxExponent);
+  return {std::min(p_.evsmPositive, most), std::min(p_.evsmNegative, most)};
+}
+
+std::string FilterableMaps::formatNote() const {
+  const GLenum wanted = textureFormat(), stored = storedFormat(wanted);
+  if (stored == wanted) return "";
+  const auto name = [](GLenum f) {
+    switch (f) {
+      case GL_R32F: return "R32F";
+      case GL_RG32F: return "RG32F";
+      case GL_RGBA32F: return "RGBA32F";
+      case GL_R16F: return "R16F";
+      case GL_RG16F: return "RG16F";
+      case GL_RGBA16F: return "RGBA16F";
+      default: return "RGBA16";
+    }
+  };
+  const gl::Caps& caps = gl::caps();
+  const char* why = wanted == GL_RGBA16 && !caps.norm16 ? "no EXT_texture_norm16"
+                    : !caps.floatColorBuffers           ? "no EXT_color_buffer_float"
+                                                        : "no OES_texture_float_linear";
+  std::string note = std::string(name(stored)) + " instead of " + name(wanted) + " (" + why + ")";
+  if (kind_ == Kind::Esm && esmExponent() < p_.exponent)
+    note += ", exponent " + std::to_string(int(esmExponent())) + " (a half float's largest)";
+  if ((kind_ == Kind::Evsm2 || kind_ == Kind::Evsm4) && evsmExponents() != glm::vec2(p_.evsmPositive, p_.evsmNegative))
+    note += ", exponents at most 5.5 (a half float's largest square)";
+  return note;
+}
+
 int FilterableMaps::bytesPerTexel() const {
-  switch (textureFormat()) {
+  switch (storedFormat(textureFormat())) {
     case GL_R32F: return 4;
+    case GL_R16F: return 2;
     case GL_RGBA32F: return 16;
-    default: return 8;  // RG32F, RGBA16
+    case GL_RG16F: return 4;
+    default: return 8;  // RG32F, RGBA16, RGBA16F
   }
 }
 
 glm::vec4 FilterableMaps::farMoments() const {
   switch (kind_) {
-    case Kind::Esm: return glm::vec4(std::exp(p_.exponent), 0, 0, 0);
+    case Kind::Esm: return glm::vec4(std::exp(esmExponent()), 0, 0, 0);
     case Kind::Evsm2:
-    case Kind::Evsm4: return glm::vec4(soft::evsmMoments(1.0, p_.evsmPositive, p_.evsmNegative));
+    case Kind::Evsm4: return glm::vec4(soft::evsmMoments(1.0, evsmExponents().x, evsmExponents().y));
     case Kind::Msm: return glm::vec4(msm16() ? soft::msmQuantise(soft::msmMoments(1.0)) : soft::msmMoments(1.0));
     case Kind::Vsm: break;
   }
@@ -124,7 +192,7 @@ glm::vec4 FilterableMaps::farMoments() const {
 }
 
 void FilterableMaps::ensure(Target& t, int size, const std::string& label) {
-  const GLenum format = textureFormat();
+  const GLenum format = storedFormat(textureFormat());
   if (t.fbo && t.size == size && t.format == format) return;
   t.moments = floatTexture(format, size, label + " moments");
   t.scratch = floatTexture(format, size, label + " blur scratch");
@@ -192,10 +260,9 @@ void FilterableMaps::render(const ShadowContext& c) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     casters_.setUniforms([&](const gl::Program& p) {
       p.set("uDepthRange", glm::vec2(lights[i].nearZ, lights[i].farZ));
-      p.set("uExponent", p_.exponent);
+      p.set("uExponent", esmExponent());
       p.set("uKind", int(kind_));
-      p.set("uEvsm", glm::vec2(std::min(p_.evsmPositive, float(soft::kEvsmMaxExponent)),
-                               std::min(p_.evsmNegative, float(soft::kEvsmMaxExponent))));
+      p.set("uEvsm", evsmExponents());
       p.set("uMsm16", msm16());
     });
     stats_.triangles += casters_.draw(c.scene, lights[i].centre.viewProj(), lights[i].centre.casters, {true, false});
@@ -207,15 +274,15 @@ void FilterableMaps::render(const ShadowContext& c) {
   glViewport(0, 0, c.frame.width, c.frame.height);
   stats_.extra.push_back(
       {"blur", std::to_string(2 * p_.blur + 1) + " taps per direction, " + std::to_string(size) + "^2"});
+  if (const std::string note = formatNote(); !note.empty()) stats_.extra.push_back({"moments", note});
 }
 
 void FilterableMaps::bindVisibility(const gl::Program& lit, int firstUnit) const {
   maps_.bind(lit, firstUnit);
   lit.set("uMinVariance", p_.minVariance);
   lit.set("uBleed", std::min(p_.bleed, 0.95f));
-  lit.set("uExponent", p_.exponent);
-  lit.set("uEvsm", glm::vec2(std::min(p_.evsmPositive, float(soft::kEvsmMaxExponent)),
-                             std::min(p_.evsmNegative, float(soft::kEvsmMaxExponent))));
+  lit.set("uExponent", esmExponent());
+  lit.set("uEvsm", evsmExponents());
   lit.set("uMomentBias", p_.momentBias);
   const auto& lights = maps_.lights();
   for (int i = 0; i < kMaxLights; ++i) {

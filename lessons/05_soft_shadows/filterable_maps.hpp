@@ -66,6 +66,11 @@ class FilterableMaps : public ShadowTechnique {
   void ensure(Target& t, int size, const std::string& label);
   bool msm16() const { return kind_ == Kind::Msm && p_.msmFormat == MomentFormat::Unorm16; }
   GLenum textureFormat() const;
+  static GLenum storedFormat(GLenum format);
+  std::string formatNote() const;  // "" where the moments are stored as textureFormat() says
+  bool halfFloats() const;         // stored in 16-bit floats (the fallback): smaller exponents
+  float esmExponent() const;
+  glm::vec2 evsmExponents() const;  // (c+, c-), as the format holds them
   int bytesPerTexel() const;
   glm::vec4 farMoments() const;  // what a texel holds where nothing is in front (t = 1)
   void blur(Target& t);

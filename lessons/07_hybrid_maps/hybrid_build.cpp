@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "gl/caps.hpp"
+
 namespace shadowlab::tech {
 namespace {
 
@@ -25,13 +27,31 @@ void bindUnit(int unit, GLuint texture) {
   glBindSampler(GLuint(unit), 0);
 }
 
-template <class T>
-std::vector<T> readTexture(GLuint texture, GLenum format, std::size_t count) {
-  std::vector<T> out(count);
-  glBindTexture(GL_TEXTURE_2D, texture);
+// The words of a width x height unsigned-integer texture (GL_RED_INTEGER: R32UI, one a texel;
+// GL_RGBA_INTEGER: RGBA32UI, four). Without glGetTexImage (WebGL2) through a framebuffer, as a
+// colour target: OpenGL ES reads an integer target only as RGBA_INTEGER, so one-channel texels come back
+// four words wide and are packed here.
+std::vector<std::uint32_t> readTexture(GLuint texture, GLenum format, int width, int height) {
+  const std::size_t perTexel = format == GL_RED_INTEGER ? 1 : 4;
+  std::vector<std::uint32_t> out(std::size_t(width) * std::size_t(height) * perTexel);
+  if (gl::caps().getTexImage) {
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_2D, 0, format, GL_UNSIGNED_INT, out.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return out;
+  }
+  GLint bound = 0;  // the caller's framebuffer, bound again after
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &bound);
+  const gl::Framebuffer fbo = gl::makeFramebuffer("hybrid map: read back");
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  std::vector<std::uint32_t> rgba(std::size_t(width) * std::size_t(height) * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTexImage(GL_TEXTURE_2D, 0, format, format == GL_DEPTH_COMPONENT ? GL_FLOAT : GL_UNSIGNED_INT, out.data());
-  glBindTexture(GL_TEXTURE_2D, 0);
+  glReadPixels(0, 0, width, height, GL_RGBA_INTEGER, GL_UNSIGNED_INT, rgba.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(bound));
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = rgba[(i / perTexel) * 4 + (perTexel == 1 ? 0 : i % 4)];
   return out;
 }
 
@@ -188,7 +208,7 @@ void HybridBuilder::countAndStarts(HybridMapGpu& map) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   // The total and the records per level: the record texture's size, and the header's figures.
-  const auto total = readTexture<std::uint32_t>(p[std::size_t(top)].counts.id(), GL_RGBA_INTEGER, 4);
+  const auto total = readTexture(p[std::size_t(top)].counts.id(), GL_RGBA_INTEGER, 1, 1);
   map.recordCount = total[0];
   map.recordsAt = {0, total[1], total[2], total[3]};
 }
@@ -294,10 +314,9 @@ hybrid::HybridMap HybridBuilder::download(const HybridMapGpu& map) {
   out.sourceSize = map.sourceSize;
   out.levels = map.levels;
   out.rootSize = map.rootSize;
-  out.root = readTexture<std::uint32_t>(map.root.id(), GL_RED_INTEGER, std::size_t(map.rootSize) * map.rootSize);
+  out.root = readTexture(map.root.id(), GL_RED_INTEGER, map.rootSize, map.rootSize);
   if (!map.records) return out;
-  const auto words = readTexture<std::uint32_t>(map.records.id(), GL_RGBA_INTEGER,
-                                                std::size_t(map.recordRows) * HybridMapGpu::kRecordRow * 4);
+  const auto words = readTexture(map.records.id(), GL_RGBA_INTEGER, HybridMapGpu::kRecordRow, map.recordRows);
   out.records.resize(map.recordCount);
   for (std::size_t r = 0; r < map.recordCount; ++r)
     for (std::size_t i = 0; i < 4; ++i) out.records[r][i] = words[4 * r + i];

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "algorithms/psm/bias.hpp"
+#include "gl/caps.hpp"
 #include "algorithms/psm/receivers.hpp"
 #include "technique/map_pass.hpp"
 #include "technique/map_settings.hpp"
@@ -109,6 +110,7 @@ void ProjectiveMapSet::setBiasUniforms(const glm::dmat4& worldToClip, int side, 
   const bool world = p_.bias == ProjectiveBias::WorldTexel;
   const psm::TexelStep step = world ? psm::texelStepFactors(worldToClip, glm::dvec2(double(side))) : psm::TexelStep{};
   casters_.setUniforms([&](const gl::Program& p) {
+    p.set("uSlopeOffset", p_.slopeOffset);  // depth_psm.frag, without GL_DEPTH_CLAMP
     p.set("uWorldBias", world);
     if (!world) return;
     p.set("uTexelStep", glm::vec4(step.u));
@@ -140,8 +142,10 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   // Casters nearer than the near plane (or, for the inverse projection, far behind the camera at
-  // depth below -1) still shade: clamp their depth instead of clipping them.
-  glEnable(GL_DEPTH_CLAMP);
+  // depth below -1) still shade: clamp their depth instead of clipping them (without GL_DEPTH_CLAMP,
+  // depth_psm.frag clamps it per fragment).
+  const bool depthClamp = gl::caps().depthClamp;
+  if (depthClamp) glEnable(GL_DEPTH_CLAMP);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(p_.slopeOffset, 0.0f);
   const bool biasOnCpu = student.worldBias && p_.bias == ProjectiveBias::WorldTexel;  // 09.4, lesson 09
@@ -158,14 +162,15 @@ void ProjectiveMapSet::render(const ShadowContext& c, int light, std::span<const
     l.clipW[std::size_t(k)] = glm::vec4(step.r);
     const std::span<const char> drawn = maps[std::size_t(k)].keep.empty() ? keep : maps[std::size_t(k)].keep;
     if (biasOnCpu) {
-      stats.triangles += student.worldBias({c, m, side, drawn, worldLight, p_.worldA, p_.worldB, kNoCulling});
+      stats.triangles +=
+          student.worldBias({c, m, side, drawn, worldLight, p_.worldA, p_.worldB, kNoCulling, p_.slopeOffset});
     } else {
       setBiasUniforms(m, side, worldLight);
       stats.triangles += casters_.draw(c.scene, l.matrices[std::size_t(k)], drawn, kNoCulling);
     }
     stats.texels += std::uint64_t(side) * std::uint64_t(side);
   }
-  glDisable(GL_DEPTH_CLAMP);
+  if (depthClamp) glDisable(GL_DEPTH_CLAMP);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glBindFramebuffer(GL_FRAMEBUFFER, c.frame.framebuffer);
   glViewport(0, 0, c.frame.width, c.frame.height);

@@ -117,6 +117,7 @@ class ProjectiveMapSet {
     const glm::dvec4& worldLight;  // (position, 1) or (-direction, 0)
     double a, b;                   // bias.a, bias.b
     const CasterOptions& options;  // both faces, alpha-tested, as the reference's pass
+    float slopeOffset;             // glPolygonOffset's factor (depth_psm.frag without GL_DEPTH_CLAMP)
   };
   using WorldBias = std::function<std::size_t(const BiasedDraw&)>;
   // The steps of lessons 08 and 09 that the maps run (impl=student, set by the PSM technique);
@@ -150,7 +151,8 @@ class ProjectiveMapSet {
 
   ProjectiveMapParams p_;
   std::array<PerLight, kPsmLights> lights_;
-  CasterPass casters_{"projective maps: depth pass", "08_psm/depth_psm.vert"};
+  CasterPass casters_{"projective maps: depth pass", "08_psm/depth_psm.vert", "uLightViewProj",
+                      "08_psm/depth_psm.frag"};
   gl::Sampler compareNearest_, compareLinear_, raw_;
   gl::Texture dummy_;
   gl::Program layersView_{"projective maps: layers", {"common/fullscreen.vert", "08_psm/depth_layers.frag"}};

@@ -50,6 +50,10 @@ std::size_t CpuBiasPass::draw(const Bias& bias, const ProjectiveMapSet::BiasedDr
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.id());
     return vaos_[i].id();
   };
+  casters_.setUniforms([&](const gl::Program& p) {
+    p.set("uWorldBias", false);  // moved above
+    p.set("uSlopeOffset", d.slopeOffset);
+  });
   const std::size_t triangles = casters_.draw(d.c.scene, glm::mat4(d.worldToClip), d.keep, options);
   glBindVertexArray(0);
   return triangles;

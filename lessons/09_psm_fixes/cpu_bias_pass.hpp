@@ -25,7 +25,9 @@ class CpuBiasPass {
 
  private:
   std::size_t draw(const Bias& bias, const ProjectiveMapSet::BiasedDraw& d);
-  CasterPass casters_{"lesson 09: depth pass (CPU-biased vertices)"};
+  // The reference's depth pass with its own bias off (uWorldBias false): its depth clamp as well.
+  CasterPass casters_{"lesson 09: depth pass (CPU-biased vertices)", "08_psm/depth_psm.vert", "uLightViewProj",
+                      "08_psm/depth_psm.frag"};
   gl::Buffer vertices_;
   std::vector<glm::vec3> moved_;       // every kept caster's vertices, biased, in world space
   std::vector<gl::VertexArray> vaos_;  // per scene object: its moved positions, its mesh's uvs

@@ -12,6 +12,20 @@
 #include "05_soft_shadows/soft_maps.glsl"
 
 uniform sampler2D uMoments[MAX_LIGHTS];
+
+// GLSL ES 3.00 (WebGL2) indexes an array of samplers with constants only: a switch there.
+vec4 momentsAt(int i, vec2 uv) {
+#ifdef SHADOWLAB_GLES
+  switch (i) {
+    case 0: return texture(uMoments[0], uv);
+    case 1: return texture(uMoments[1], uv);
+    case 2: return texture(uMoments[2], uv);
+    default: return texture(uMoments[3], uv);
+  }
+#else
+  return texture(uMoments[i], uv);
+#endif
+}
 uniform float uMinVariance;
 uniform float uBleed;
 uniform float uExponent;
@@ -38,7 +52,7 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   if (softOutside(i, r) || any(lessThan(r.uv, vec2(0.0))) || any(greaterThan(r.uv, vec2(1.0)))) return 1.0;
   vec2 range = uSoftDepthRange[i];
   float t = clamp((r.z - softBias(r) - range.x) / (range.y - range.x), 0.0, 1.0);
-  vec4 m = texture(uMoments[i], r.uv);
+  vec4 m = momentsAt(i, r.uv);
 #if defined(ESM)
   float v = clamp(m.x * exp(-uExponent * t), 0.0, 1.0);
 #elif defined(EVSM)

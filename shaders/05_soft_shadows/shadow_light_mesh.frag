@@ -9,6 +9,19 @@
 
 uniform int uMeshOn[MAX_LIGHTS];
 uniform sampler3D uMesh[MAX_LIGHTS];
+// GLSL ES 3.00 (WebGL2) indexes an array of samplers with constants only: a switch there.
+float meshAt(int i, vec3 uvw) {
+#ifdef SHADOWLAB_GLES
+  switch (i) {
+    case 0: return texture(uMesh[0], uvw).r;
+    case 1: return texture(uMesh[1], uvw).r;
+    case 2: return texture(uMesh[2], uvw).r;
+    default: return texture(uMesh[3], uvw).r;
+  }
+#else
+  return texture(uMesh[i], uvw).r;
+#endif
+}
 uniform vec3 uMeshOrigin[MAX_LIGHTS];
 uniform vec3 uMeshStep[MAX_LIGHTS];
 uniform vec3 uMeshNodes[MAX_LIGHTS];
@@ -20,5 +33,5 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   vec3 q = worldPos + N * (uMeshOffset * uMeshStep[i].y);
   // Node k sits at the centre of texel k: (k + 0.5) / nodes.
   vec3 uvw = ((q - uMeshOrigin[i]) / uMeshStep[i] + 0.5) / uMeshNodes[i];
-  return texture(uMesh[i], uvw).r * softHorizon(i, worldPos, N);
+  return meshAt(i, uvw) * softHorizon(i, worldPos, N);
 }

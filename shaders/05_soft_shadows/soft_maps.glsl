@@ -29,7 +29,7 @@ uniform float uSoftMapSize;
 uniform float uSoftBias, uSoftSlopeBias;  // texels of world size at the receiver; per tan(theta)
 uniform float uSoftNormalOffset;          // texels along the normal
 uniform float uSoftCardSlopeBias, uSoftCardNormalOffset;  // the same two on two-sided materials
-uniform bool uTwoSided;                   // scene.frag's: the receiver is a two-sided card
+#include "common/two_sided.glsl"        // scene.frag's: the receiver is a two-sided card
 uniform sampler2DArrayShadow uSoftMaps;   // comparison, GL_LINEAR: hardware 2x2 PCF per lookup
 uniform sampler2DArray uSoftDepths;       // the same texture, raw: the blocker search reads depths
 
@@ -83,11 +83,17 @@ vec3 softProjectSample(int i, vec3 view, int k) {
 // Sample k's map at uv for a receiver at view distance z (bias already subtracted): 1 lit, 0
 // shadowed, hardware 2x2 PCF between.
 float softCompare(int i, int k, vec2 uv, float z) {
+#ifdef SHADOWLAB_NO_BORDER_CLAMP  // WebGL2: outside the map is lit, as the sampler's border says natively
+  if (uv != clamp(uv, 0.0, 1.0)) return 1.0;
+#endif
   return texture(uSoftMaps, vec4(uv, float(uSoftLayer[i] + k), softWindowDepth(i, z)));
 }
 
 // The stored depth of sample k's map at uv, as a view distance (far outside the map).
 float softDepthAt(int i, int k, vec2 uv) {
+#ifdef SHADOWLAB_NO_BORDER_CLAMP  // WebGL2: the border's depth 1, as natively
+  if (uv != clamp(uv, 0.0, 1.0)) return softLinearDepth(i, 1.0);
+#endif
   return softLinearDepth(i, texture(uSoftDepths, vec3(uv, float(uSoftLayer[i] + k))).r);
 }
 

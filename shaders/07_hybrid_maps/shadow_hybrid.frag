@@ -31,12 +31,26 @@ uniform int uPcfSize;  // N of the N x N box (odd)
 // common/shadow_bias_slope.glsl (through shadow_bias.glsl): at level 0 it is exercise 03.1's
 // slope-scaled bias, so it is sealed in the student handout with it.
 
+// GLSL ES 3.00 (WebGL2) indexes an array of samplers with constants only: a switch there.
+HybridTexel hybridDescendLight(int i, ivec2 s) {
+#ifdef SHADOWLAB_GLES
+  switch (i) {
+    case 0: return hybridDescend(uHybridRoot[0], uHybridRecords[0], uHybridLevels[0], s);
+    case 1: return hybridDescend(uHybridRoot[1], uHybridRecords[1], uHybridLevels[1], s);
+    case 2: return hybridDescend(uHybridRoot[2], uHybridRecords[2], uHybridLevels[2], s);
+    default: return hybridDescend(uHybridRoot[3], uHybridRecords[3], uHybridLevels[3], s);
+  }
+#else
+  return hybridDescend(uHybridRoot[i], uHybridRecords[i], uHybridLevels[i], s);
+#endif
+}
+
 // One comparison at source texel s: lit (1) when depth - levelBias <= the stored depth; outside the
 // map, lit (a standard map's border of depth 1).
 float hybridTap(int i, ivec2 s, float depth, float cosTheta, inout int level, inout int steps) {
   int size = uHybridSize[i];
   if (s.x < 0 || s.y < 0 || s.x >= size || s.y >= size) return 1.0;
-  HybridTexel t = hybridDescend(uHybridRoot[i], uHybridRecords[i], uHybridLevels[i], s);
+  HybridTexel t = hybridDescendLight(i, s);
   level = min(level, t.level);
   steps = max(steps, t.steps);
   return depth - levelBias(cosTheta, t.level) <= t.depth ? 1.0 : 0.0;

@@ -20,6 +20,9 @@ uniform vec4 uLightWorld;  // (position, 1), or (-direction, 0) for a directiona
 uniform float uBiasA, uBiasB, uBiasMax;
 
 out vec2 vUv;
+#ifdef SHADOWLAB_NO_DEPTH_CLAMP
+out vec2 vClipZW;  // the map's clip depth, clamped per fragment in depth_psm.frag
+#endif
 
 void main() {
   vUv = aUv;
@@ -34,4 +37,10 @@ void main() {
     if (len > 0.0) p += L / len * min(uBiasA + uBiasB * texel, uBiasMax);
   }
   gl_Position = uLightViewProj * vec4(p, 1.0);
+#ifdef SHADOWLAB_NO_DEPTH_CLAMP
+  // No GL_DEPTH_CLAMP (WebGL2 without EXT_depth_clamp): depth_psm.frag clamps the depth per
+  // fragment; z = 0 keeps what lies before the near plane (or beyond the far one) from being clipped.
+  vClipZW = gl_Position.zw;
+  gl_Position.z = 0.0;
+#endif
 }

@@ -33,6 +33,18 @@ uniform Light uLights[MAX_LIGHTS];
 #include "08_psm/exercises_reference.glsl"
 #endif
 
+// The comparison of map `layer` at uv with depth z: 1 lit, 0 shadowed (hardware 2x2 PCF between).
+float psmCompare(int light, int layer, vec2 uv, float z) {
+#ifdef SHADOWLAB_NO_BORDER_CLAMP  // WebGL2: outside the map is lit, as the sampler's border says natively
+  if (uv != clamp(uv, 0.0, 1.0)) return 1.0;
+#endif
+#ifdef SHADOWLAB_GLES  // GLSL ES 3.00 (WebGL2) indexes an array of samplers with constants only
+  return light == 0 ? texture(uPsmMaps[0], vec4(uv, float(layer), z)) : texture(uPsmMaps[1], vec4(uv, float(layer), z));
+#else
+  return texture(uPsmMaps[light], vec4(uv, float(layer), z));
+#endif
+}
+
 #ifdef PSM_RECEIVER_PLANE
 // The receiver plane (Isidoro, "Shadow Mapping: GPU-based Tips and Techniques", GDC 2006): the
 // depth change per unit of map u and v on the receiver's plane, from the world point's screen
@@ -51,7 +63,7 @@ vec2 projectiveDepthSlope(mat4 M, vec3 worldPos, vec3 dPdx, vec3 dPdy, out bool 
 // One nearest comparison at texel t (integer coordinates) against the plane through p.
 float planeTap(int light, int layer, vec3 p, vec2 slope, vec2 t) {
   vec2 uv = (t + 0.5) / uPsmSize[light];
-  return texture(uPsmMaps[light], vec4(uv, float(layer), p.z + dot(slope, uv - p.xy) - uPsmConstantBias));
+  return psmCompare(light, layer, uv, p.z + dot(slope, uv - p.xy) - uPsmConstantBias);
 }
 
 // The 2x2 taps of hardware PCF (PSM_RECEIVER_PLANE 2), or the one nearest tap, against the plane.
@@ -115,7 +127,7 @@ float projectiveLookup(int light, int layer, vec3 worldPos, vec3 N, vec3 dPdx, v
 #ifdef PSM_RECEIVER_PLANE
   return planeLookup(light, layer, p, slope);
 #else
-  return texture(uPsmMaps[light], vec4(p.xy, float(layer), p.z - uPsmConstantBias));
+  return psmCompare(light, layer, p.xy, p.z - uPsmConstantBias);
 #endif
 }
 

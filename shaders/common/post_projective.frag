@@ -7,8 +7,15 @@ in vec2 vDepth;
 uniform vec3 uAlbedo;
 uniform float uSign;
 layout(location = 0) out vec4 fragColor;
+#ifdef SHADOWLAB_NO_CLIP_DISTANCE
+in float vClip[7];  // post_projective.vert's clip distances, tested here (WebGL2)
+#endif
 
 void main() {
+#ifdef SHADOWLAB_NO_CLIP_DISTANCE
+  for (int k = 0; k < 7; ++k)
+    if (vClip[k] < 0.0) discard;
+#endif
   vec3 p = vView.xyz / vView.w;
   vec3 n = normalize(cross(dFdx(p), dFdy(p)));
   float shade = 0.35 + 0.65 * abs(n.z);

@@ -13,18 +13,28 @@ uniform vec2 uBox;          // what is drawn: |x|, |y| <= uBox.x and -uBox.x <= 
 
 out vec4 vView;  // display view space, homogeneous: divided per fragment, for flat shading
 out vec2 vDepth;  // post-projective (z, w): the colour ramp from the near face to the far one
+#ifdef SHADOWLAB_NO_CLIP_DISTANCE
+// No gl_ClipDistance (WebGL2): the same seven distances interpolated, and post_projective.frag
+// discards where one is negative. Each is linear in clip space, so the pixels kept are the ones the
+// clipper would have kept.
+out float vClip[7];
+#else
+out float gl_ClipDistance[7];  // sized: the loop below indexes it
+#endif
 
 void main() {
   vec4 h = uSign * (uCamera * (uModel * vec4(aPosition, 1.0)));
   // In front of the camera plane (or, negated, behind it), and inside a box around the unit cube:
   // what lies beside the frustum near the camera plane would stretch to infinity and hide it.
-  gl_ClipDistance[0] = h.w;
-  gl_ClipDistance[1] = uBox.x * h.w - h.x;
-  gl_ClipDistance[2] = uBox.x * h.w + h.x;
-  gl_ClipDistance[3] = uBox.x * h.w - h.y;
-  gl_ClipDistance[4] = uBox.x * h.w + h.y;
-  gl_ClipDistance[5] = uBox.x * h.w + h.z;
-  gl_ClipDistance[6] = uBox.y * h.w - h.z;
+  float clip[7] = float[7](h.w, uBox.x * h.w - h.x, uBox.x * h.w + h.x, uBox.x * h.w - h.y, uBox.x * h.w + h.y,
+                           uBox.x * h.w + h.z, uBox.y * h.w - h.z);
+  for (int k = 0; k < 7; ++k) {
+#ifdef SHADOWLAB_NO_CLIP_DISTANCE
+    vClip[k] = clip[k];
+#else
+    gl_ClipDistance[k] = clip[k];
+#endif
+  }
   gl_Position = uDisplay * h;
   vView = uDisplayView * h;
   vDepth = h.zw;

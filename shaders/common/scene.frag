@@ -37,7 +37,7 @@ uniform float uSpecular, uShininess;
 uniform bool uUseTexture;
 uniform sampler2D uTexture;
 uniform float uAlphaCutoff;
-uniform bool uTwoSided;
+#include "common/two_sided.glsl"
 uniform int uView;  // 0 lit, 1 the visibility of the measured light (light 0 when none is measured)
 
 layout(location = 0) out vec4 fragColor;

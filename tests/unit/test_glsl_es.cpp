@@ -40,22 +40,28 @@ struct Scratch {
 };
 }  // namespace
 
-TEST_CASE("glsl_es: the version line, the precisions, SHADOWLAB_GLES, and the numbering kept") {
+TEST_CASE("glsl_es: the version line, the precisions, SHADOWLAB_GLES, no `precise`, and the numbering kept") {
   const std::string in = "#version 410 core\nuniform float a;\nvoid main() {}\n";
-  CHECK(toGlslEs(in) ==
-        "#version 300 es\n" + kPrecisions + "\n#define SHADOWLAB_GLES 1\n#line 2\nuniform float a;\nvoid main() {}\n");
+  CHECK(toGlslEs(in) == "#version 300 es\n" + kPrecisions +
+                            "\n#define SHADOWLAB_GLES 1\n#define precise\n#line 2\nuniform float a;\nvoid main() {}\n");
 }
 
 TEST_CASE("glsl_es: comments before #version stay before it; #line names the line after it") {
   const std::string in = "// a comment\n#version 410 core\nfloat f;\n";
-  CHECK(toGlslEs(in) ==
-        "// a comment\n#version 300 es\n" + kPrecisions + "\n#define SHADOWLAB_GLES 1\n#line 3\nfloat f;\n");
+  CHECK(toGlslEs(in) == "// a comment\n#version 300 es\n" + kPrecisions +
+                            "\n#define SHADOWLAB_GLES 1\n#define precise\n#line 3\nfloat f;\n");
 }
 
 TEST_CASE("glsl_es: #extension lines move up to the version, leaving a blank line behind") {
   const std::string in = "#version 410 core\nfloat f;\n  #extension GL_X : enable\nfloat g;\n";
   CHECK(toGlslEs(in) == "#version 300 es\n  #extension GL_X : enable\n" + kPrecisions +
-                            "\n#define SHADOWLAB_GLES 1\n#line 2\nfloat f;\n\nfloat g;\n");
+                            "\n#define SHADOWLAB_GLES 1\n#define precise\n#line 2\nfloat f;\n\nfloat g;\n");
+}
+
+TEST_CASE("glsl_es: a desktop ARB extension's line goes, wherever it stands") {
+  const std::string in = "#version 410 core\n#ifdef QUAD\n#extension GL_ARB_derivative_control : require\n#endif\n";
+  CHECK(toGlslEs(in) == "#version 300 es\n" + kPrecisions +
+                            "\n#define SHADOWLAB_GLES 1\n#define precise\n#line 2\n#ifdef QUAD\n\n#endif\n");
 }
 
 TEST_CASE("glsl_es: a source without #version is refused") {
