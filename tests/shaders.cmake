@@ -99,6 +99,8 @@ if(NOT SHADOWLAB_UNIT_ONLY AND SHADOWLAB_LESSONS)
     SHADOWLAB_NO_BORDER_CLAMP   # gl::Program's, where caps() has no border clamp: WebGL2 (the web tests)
     SHADOWLAB_NO_CLIP_DISTANCE  # the same without gl_ClipDistance
     SHADOWLAB_NO_DEPTH_CLAMP    # the same without GL_DEPTH_CLAMP
+    CLIP_DISTANCE0              # lines_quad.vert's: the post-projective lines without a geometry shader
+                                # (WebGL2: web.shaders_es_fallbacks validates that variant)
     SHADOWLAB_GLES)             # core/glsl_es's, in the browser build (shader.variants.es checks those)
   set(variant_logs "")
   foreach(lesson IN LISTS SHADOWLAB_LESSONS)

@@ -6,6 +6,7 @@
 # installs them). Emscripten's system libraries are cached outside the build (tools/wasm/build.sh).
 #   web.build         the pages (fixture)
 #   web.NN_name       one lesson's page
+#   web.slides_live   the decks' live figures
 #   web.shaders_es    every shader variant the web lessons compile, valid GLSL ES 3.00 (glslang)
 
 if(NOT TARGET lesson_01_lighting)
@@ -55,6 +56,13 @@ foreach(lesson IN LISTS web_lessons)
                    --out ${CMAKE_BINARY_DIR}/web-check/${lesson})
   set_tests_properties(web.${lesson} PROPERTIES LABELS web FIXTURES_REQUIRED web_site TIMEOUT 900)
 endforeach()
+
+# The decks' live figures (live=... in slides/*.md) in the site's decks: each against its still,
+# stopped when its slide is left, and the stills in the printed deck (tools/wasm/check_slides.mjs).
+add_test(NAME web.slides_live
+         COMMAND ${NODE} ${CMAKE_SOURCE_DIR}/tools/wasm/check_slides.mjs --site ${WEB_BUILD}/site
+                 --out ${CMAKE_BINARY_DIR}/web-check/slides)
+set_tests_properties(web.slides_live PROPERTIES LABELS web FIXTURES_REQUIRED web_site TIMEOUT 1200)
 
 # The shaders as WebGL2 compiles them, from the variants the native lessons record (shaders.cmake):
 # glslang in ES mode finds what GLSL ES 3.00 refuses without a browser.

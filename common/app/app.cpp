@@ -85,14 +85,14 @@ class Runner {
         throw CliError("--measure: lesson " + info_.name + " computes no shadows to measure");
       presets_ = PresetFile::load(sourceRoot() + "/lessons/" + info_.name + "/presets.txt");
       ab_.declare(params_, presets_);
-      params_.validate();      // the defaults, then every preset, pass the registry's checks
-      exposeParams(&params_);  // a browser page reads them (frame_loop.hpp)
-      presets_.validate(params_);
+      params_.validate();  // the defaults, then every preset, pass the registry's checks
+      exposeParams(&params_), presets_.validate(params_);  // a browser page reads them (frame_loop.hpp)
       checkHotkeys(params_);
       if (answerQuery(cl_, info_, params_, presets_, lesson_.exercises, argv[0])) return 0;
       if (!cl_.preset.empty()) presets_.apply(cl_.preset, params_);
       if (!cl_.model.empty()) cl_.sets.insert(cl_.sets.begin(), modelSceneAssignment(params_, info_.name));
-      params_.assignAll(cl_.sets);  // one change: checked once, whatever the order
+      params_.assignAll(cl_.sets);            // one change: checked once, whatever the order
+      ui_.panelOnly(cl_.panelOnly, params_);  // --panel: names the lesson has
       if (cl_.model.empty() && sceneIsModel(params_))
         throw CliError("scene=model draws the file given with --model FILE (OBJ + MTL, glTF 2.0); none given");
       homeCamera_ = lesson_.camera;  // Home comes back here

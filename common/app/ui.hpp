@@ -60,6 +60,9 @@ class Ui {
   bool exercisesPanel(const Exercises& exercises);
   // A banner across the top of the frame: the stub banner while impl=student.
   void banner(const std::string& text);
+  // --panel: the panel with these parameters only, no preset row, and no header, stats, help or
+  // exercises window (a lesson inside a slide). Throws ParamError on a name the lesson lacks.
+  void panelOnly(const std::vector<std::string>& names, const ParamRegistry& params);
 
   // Where this frame's UI sits, in framebuffer pixels (windows by title; the A/B labels as
   // "A label" / "B label"): --ui-layout writes it, tests check nothing overlaps.
@@ -91,7 +94,8 @@ class Ui {
   Rect legendRect_;             // this frame's legend (bottom right): the panel stops above it
   bool panelApplied_ = false;   // the open state last given to ImGui (a click may change it there)
   bool panelSet_ = false;
-  bool exercisesOpen_ = false;  // last frame's: collapsed, the exercises' bar is as narrow as its title
+  bool exercisesOpen_ = false;     // last frame's: collapsed, the exercises' bar is as narrow as its title
+  std::vector<std::string> only_;  // --panel's parameters; empty: every window as usual
 };
 
 // --ui-layout FILE: the viewport and the UI's rectangles as JSON. Throws std::runtime_error.

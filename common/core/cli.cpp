@@ -33,6 +33,8 @@ constexpr Flag kFlags[] = {
     {"--show-help", nullptr, "draw the F1 help (and the UI) from the first frame, e.g. into a screenshot"},
     {"--show-stats", nullptr, "draw the F2 stats (renderer, passes, every counter) and the UI from the first frame"},
     {"--show-panel", nullptr, "draw the parameter panel open (F3) and the UI from the first frame"},
+    {"--panel", "NAME,NAME",
+     "the parameter panel open with only these parameters and no other window: a lesson inside a slide"},
     {"--keys", "LIST",
      "press keys through the window's key handler, one after the other from the first frame: \"Tab,W*10,Home\" "
      "(KEY*N: held N frames; A-Z, 0-9, Tab, Home, F1, F2, F3, F4); tests and slides script the fly camera and hotkeys"},
@@ -172,7 +174,15 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
     else if (flag == "--show-help") cl.showUi = cl.showHelp = true;
     else if (flag == "--show-stats") cl.showUi = cl.showStats = true;
     else if (flag == "--show-panel") cl.showUi = cl.showPanel = true;
-    else if (flag == "--ui-layout") cl.uiLayout = value;
+    else if (flag == "--panel") {
+      cl.showUi = cl.showPanel = true;
+      for (std::size_t at = 0; at <= value.size();) {
+        const std::size_t comma = std::min(value.find(',', at), value.size());
+        if (comma == at) throw CliError("--panel: '" + value + "' has an empty name (NAME,NAME,...)");
+        cl.panelOnly.push_back(value.substr(at, comma - at));
+        at = comma + 1;
+      }
+    } else if (flag == "--ui-layout") cl.uiLayout = value;
     else if (flag == "--keys") cl.keys = parseKeyScript(value);
     else if (flag == "--drop") parseDrop(value, cl);
     else if (flag == "--fullscreen") cl.fullscreen = true;

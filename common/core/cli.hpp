@@ -43,7 +43,10 @@ struct CommandLine {
   bool showHelp = false;   // the F1 help open from the first frame (implies showUi)
   bool showStats = false;  // the F2 stats open from the first frame (implies showUi)
   bool showPanel = false;  // the parameter panel open (F3) from the first frame (implies showUi)
-  std::string uiLayout;    // the last frame's UI rectangles, JSON (tests: nothing overlaps)
+  // --panel a,b: the panel open with these parameters only, and no other window (a lesson inside a
+  // slide: the picture and the few knobs the slide is about). Implies showPanel.
+  std::vector<std::string> panelOnly;
+  std::string uiLayout;  // the last frame's UI rectangles, JSON (tests: nothing overlaps)
   bool fullscreen = false;
   std::vector<ScriptedKey> keys;  // --keys "Tab,W*10,Home": pressed one after the other, from frame 0
   std::string drop;               // --drop FILE[@N]: dropped on the window before frame N (default 1)

@@ -15,7 +15,7 @@ import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { DeckError, escapeHtml, expandGenerated, makeMarkdown, parseDeck, passesOf, usesGenerated } from './deck.mjs';
 import { webPackageDir } from './deps.mjs';
-import { FigureError, FigureRenderer, parseFigureUrl } from './figures.mjs';
+import { FigureError, FigureRenderer, livePage, parseFigureUrl } from './figures.mjs';
 
 const HERE = path.dirname(fileURLToPath(import.meta.url));
 const ROOT = path.resolve(HERE, '../..');
@@ -132,12 +132,43 @@ const FIT_FIGURES = `function fitFigures(s) {
       s.dataset.fitted = '1';
     });
 }
+// Live figures (live=...): the slide shown gets the lesson's page over each still (an iframe the
+// still's size, scaled with it), once its figures are fitted; the slide left loses them, so only
+// the slide on screen runs a lesson (a deck of fifteen live slides never runs fifteen at once).
+// The stills stay where the page cannot run: a PDF, a deck opened from disk (no server for the
+// WebAssembly), a browser without WebGL2, a deck without the site's pages (make slides), ?live=off.
+// The deck's own ?set=name=value reach every live page (a slow laptop: ?set=budget.fps=10).
+const live = {
+  on: !/print-pdf|[?&]live=off/.test(location.search) && /^https?:$/.test(location.protocol) &&
+      !!document.createElement('canvas').getContext('webgl2'),
+  sets: new URLSearchParams(location.search).getAll('set'),
+  start(slide) {
+    if (!live.on || !slide) return;
+    for (const box of slide.querySelectorAll('.live')) {
+      fetch(box.dataset.page, { method: 'HEAD' }).then((r) => {
+        if (!r.ok || Reveal.getCurrentSlide() !== slide || box.querySelector('iframe')) return;
+        const [w, h] = box.dataset.size.split('x').map(Number), img = box.querySelector('img');
+        const f = document.createElement('iframe');
+        f.src = box.dataset.page + live.sets.map((s) => '&set=' + encodeURIComponent(s)).join('');
+        f.width = w;
+        f.height = h;
+        f.title = 'the lesson, live';
+        f.style.transform = 'scale(' + img.clientWidth / w + ')';
+        box.appendChild(f);
+      }).catch(() => {});
+    }
+  },
+  stop(slide) { if (slide) slide.querySelectorAll('.live iframe').forEach((f) => f.remove()); },
+};
 if (/print-pdf/.test(window.location.search)) {
   document.addEventListener('pdf-ready', () => Promise.all(Reveal.getSlides().map(fitFigures))
     .then(() => { window.__shadowlabFitted = true; }));
 } else {
-  Reveal.on('ready', () => fitFigures(Reveal.getCurrentSlide()));
-  Reveal.on('slidechanged', (e) => fitFigures(e.currentSlide));
+  Reveal.on('ready', () => fitFigures(Reveal.getCurrentSlide()).then(() => live.start(Reveal.getCurrentSlide())));
+  Reveal.on('slidechanged', (e) => {
+    live.stop(e.previousSlide);
+    fitFigures(e.currentSlide).then(() => live.start(e.currentSlide));
+  });
 }`;
 
 function deckHtml(deck, sections) {
@@ -199,6 +230,7 @@ async function buildDeck(file, opts, figures, usedFigures) {
         let spec;
         try { spec = parseFigureUrl(img.href); } catch (e) { throw new DeckError(where, 0, e.message); }
         if (spec.zoom) img.zoom = { ...spec.zoom, size: spec.size };
+        if (spec.live) img.live = { page: livePage(spec), size: spec.size };
         jobs.push(figures.render(spec).then((out) => { img.href = out; usedFigures.add(out); })
           .catch((e) => { throw Object.assign(new Error(e.message), { where }); }));
       } else {

@@ -85,8 +85,10 @@ function renderMath(tex, displayMode, ctx) {
 //   ctx.mathErrors formulas KaTeX could not parse
 // A figure's image; with zoom (figures.mjs) only its region, enlarged, in a box of the figure's
 // size and aspect that clips the rest (CSS only: the PNG stays whole, and so does its cache).
+// A live figure (live=...): the image in a box the deck's script puts the lesson's page over.
 function figureImage(t) {
   const img = `<img src="${escapeHtml(t.href)}" alt="${escapeHtml(t.text)}">`;
+  if (t.live) return `<span class="live" data-page="${escapeHtml(t.live.page)}" data-size="${t.live.size}">${img}</span>`;
   const z = t.zoom;
   if (!z) return img;
   const [w, h] = z.size.split('x').map(Number);

@@ -1,4 +1,4 @@
-// Figures rendered by the lessons themselves: `lesson:NN_name?preset=P&set=k=v&size=WxH&frames=N&zoom=X,Y,W`
+// Figures rendered by the lessons themselves: `lesson:NN_name?preset=P&set=k=v&size=WxH&frames=N&zoom=X,Y,W&live=a,b`
 // runs build/<preset>/bin/lesson_NN_name --headless ... --screenshot FILE.png. PNGs are cached by a
 // hash of the command line and the binary's size and mtime, so an unchanged lesson is not re-run and
 // a rebuilt one always is. A failed render fails the build with the lesson's own message.
@@ -12,6 +12,14 @@ export const DEFAULT_FRAMES = 3;
 const TIMEOUT_MS = 120_000;
 
 export class FigureError extends Error {}
+
+// A live figure's page in the browser build's site (the decks sit in site/slides, the lessons'
+// pages beside that folder): the lesson at the figure's preset, sets, size and panel.
+export function livePage(spec) {
+  const q = [`preset=${encodeURIComponent(spec.preset)}`, ...spec.sets.map((s) => `set=${encodeURIComponent(s)}`),
+    `size=${spec.size}`, `panel=${spec.live.join(',')}`];
+  return `../lesson_${spec.lesson}.html?${q.join('&')}`;
+}
 
 // "lesson:01_lighting?preset=three_lights&set=a=1&size=640x360" -> spec (throws on bad syntax).
 export function parseFigureUrl(url) {
@@ -42,8 +50,15 @@ export function parseFigureUrl(url) {
         throw new FigureError(`figure "${url}": zoom=${value} is not X,Y,W with 0 < W <= 1, X + W <= 1 and Y + W <= 1`);
       }
       spec.zoom = { x: z[0], y: z[1], w: z[2] };
-    } else throw new FigureError(`figure "${url}": unknown option "${key}" (preset, set, size, frames, zoom)`);
+    } else if (key === 'live') {
+      // live=a,b: the deck shows the lesson's page in the slide instead (where the site has it and the
+      // browser WebGL2), with the parameter panel open on these parameters only (--panel); the still,
+      // rendered with the same panel, stays underneath for the PDF and for browsers without WebGL2.
+      if (!/^[a-z0-9_.]+(,[a-z0-9_.]+)*$/.test(value)) throw new FigureError(`figure "${url}": live=${value} is not NAME,NAME (the parameters its panel shows)`);
+      spec.live = value.split(',');
+    } else throw new FigureError(`figure "${url}": unknown option "${key}" (preset, set, size, frames, zoom, live)`);
   }
+  if (spec.live && spec.zoom) throw new FigureError(`figure "${url}": live and zoom together: a live figure shows the whole lesson`);
   if (!spec.preset) throw new FigureError(`figure "${url}": needs preset=NAME (a figure always names a lesson preset)`);
   return spec;
 }
@@ -108,6 +123,7 @@ export class FigureRenderer {
   args(spec, file) {
     const args = ['--headless', '--size', spec.size, '--frames', String(spec.frames), '--preset', spec.preset];
     for (const s of spec.sets) args.push('--set', s);
+    if (spec.live) args.push('--panel', spec.live.join(','));
     return file ? [...args, '--screenshot', file] : args;
   }
 

@@ -7,6 +7,8 @@
 //     beside the same lesson's native frame time from frame_bench's CSV of the same `make bench`;
 //   - the frames per second the page holds with the frame budget on, and the render scale the budget
 //     settled on (the median frame of the run's second half, the last frame's scale).
+// Per deck of the site's slides: the time from opening the deck at its first live slide to that
+// slide's first live frame (the median of three openings), at 1280x720.
 // Every figure comes from the lesson's own --bench CSV (written into the page's file system), whose
 // frame time in the browser is the time between frames. With --markdown FILE the table replaces the
 // section "## In the browser" of FILE (appended when FILE has none).
@@ -16,6 +18,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { launchChromium } from '../web/check-page.mjs';
+import { liveFrames, liveSlides, siteDecks } from './decks.mjs';
 import { serveSite } from './site_server.mjs';
 
 const opts = { site: 'build/web/site', size: '1280x720', native: '', markdown: '', 'window-frames': '60' };
@@ -52,10 +55,11 @@ function frames(csv) {
 const server = await serveSite(root);
 const browser = await launchChromium();
 const [w, h] = opts.size.split('x').map(Number);
+const base = `http://127.0.0.1:${server.address().port}`;
 // One run of the page; resolves with its first frame's time and its --bench CSV.
 async function run(page, query) {
   const p = await browser.newPage({ viewport: { width: w, height: h } });
-  await p.goto(`http://127.0.0.1:${server.address().port}/${page}?size=${opts.size}&bench=/bench.csv&${query}`);
+  await p.goto(`${base}/${page}?size=${opts.size}&bench=/bench.csv&${query}`);
   await p.waitForFunction(() => window.shadowlab && window.shadowlab.exit !== undefined, null, { timeout: 900000 });
   const r = await p.evaluate(() => ({
     exit: window.shadowlab.exit,
@@ -84,6 +88,25 @@ for (const page of pages) {
             `${fps.toFixed(1)} (${late.at(-1).scale.toFixed(2)}) | ${nat && nat.fps ? `${nat.fps} (${nat.scale})` : ''} |`);
   console.error(rows.at(-1));
 }
+// The decks: opening at the first live slide, to its first live frame.
+const deckRows = [];
+for (const deck of siteDecks(root)) {
+  const times = [];
+  for (let k = 0; k < 3; ++k) {
+    const p = await browser.newPage({ viewport: { width: 1280, height: 720 } });
+    await p.goto(`${base}/slides/${deck}#/0`);
+    await p.waitForFunction(() => window.Reveal && Reveal.isReady());
+    const live = await liveSlides(p);
+    await p.close();
+    if (!live.length) break;
+    const q = await browser.newPage({ viewport: { width: 1280, height: 720 } });
+    await q.goto(`${base}/slides/${deck}#/${live[0][0]}`);
+    times.push(await liveFrames(q, live[0][1], 1));
+    await q.close();
+  }
+  if (times.length) deckRows.push(`| ${deck.replace(/\.html$/, '')} | ${(median(times) / 1000).toFixed(2)} s |`);
+  if (times.length) console.error(deckRows.at(-1));
+}
 await browser.close();
 server.close();
 
@@ -99,6 +122,13 @@ ${opts['window-frames']} frames, and the render scale it settled on. Goals: unde
 | lesson | download (gzip) | first frame | frame ms, browser | frame ms, native | ratio | page fps (render scale) | native window fps (render scale) |
 |---|---|---|---|---|---|---|---|
 ${rows.join('\n')}
+
+The decks (\`make web\` puts them in the site): the time from opening a deck at its first live slide to that
+slide's first live frame, the median of three openings, at 1280x720.
+
+| deck | first live frame |
+|---|---|
+${deckRows.join('\n')}
 `;
 console.log(section);
 if (opts.markdown) {

@@ -18,6 +18,7 @@ import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { launchChromium } from '../web/check-page.mjs';
+import { comparePngs, webglError } from './compare.mjs';
 import { serveSite } from './site_server.mjs';
 
 const args = { size: '320x180', bound: '1.0', levels: '8', presets: '', out: '' };
@@ -51,11 +52,7 @@ async function open(url, { ms = 90000, init } = {}) {
   const p = await browser.newPage({ viewport: { width: 800, height: 450 } });
   const errors = [];
   p.on('console', (m) => {
-    const t = m.text();
-    // Chromium's advice when a page enables WEBGL_polygon_mode (lesson 04's wireframe, behind
-    // gl::caps().polygonMode) is not an error; every other "WebGL:" line is.
-    if (/^WebGL: this extension has very low support on mobile devices.*: WEBGL_polygon_mode$/.test(t)) return;
-    if (/WebGL: |GL error|INVALID_|shader.*(error|failed)/i.test(t)) errors.push(t);
+    if (webglError(m.text())) errors.push(m.text());
   });
   p.on('pageerror', (e) => errors.push('page error: ' + e.message));
   if (init) await p.addInitScript(init);
@@ -75,34 +72,6 @@ const param = (p, name) => p.evaluate((n) => window.Module.ccall('shadowlab_para
 async function changed(p, name, before) {
   await p.waitForFunction(([n, b]) => window.Module.ccall('shadowlab_param', 'string', ['string'], [n]) !== b,
                           [name, before], { timeout: 10000 }).catch(() => {});
-}
-
-// The share (percent) of pixels whose largest channel differs by more than `levels`, computed in
-// the page from the two PNGs (the browser decodes them).
-async function compare(p, a, b, levels) {
-  const urls = [a, b].map((f) => 'data:image/png;base64,' + fs.readFileSync(f).toString('base64'));
-  return p.evaluate(async ({ urls, levels }) => {
-    const pixels = await Promise.all(urls.map(async (u) => {
-      const img = new Image();
-      img.src = u;
-      await img.decode();
-      const c = document.createElement('canvas');
-      c.width = img.width;
-      c.height = img.height;
-      const g = c.getContext('2d');
-      g.drawImage(img, 0, 0);
-      return { w: img.width, h: img.height, d: g.getImageData(0, 0, img.width, img.height).data };
-    }));
-    const [x, y] = pixels;
-    if (x.w !== y.w || x.h !== y.h) return { error: `sizes differ: ${x.w}x${x.h} against ${y.w}x${y.h}` };
-    let over = 0, worst = 0;
-    for (let i = 0; i < x.d.length; i += 4) {
-      const d = Math.max(Math.abs(x.d[i] - y.d[i]), Math.abs(x.d[i + 1] - y.d[i + 1]), Math.abs(x.d[i + 2] - y.d[i + 2]));
-      worst = Math.max(worst, d);
-      if (d > levels) ++over;
-    }
-    return { percent: (100 * over) / (x.w * x.h), worst };
-  }, { urls, levels });
 }
 
 // --presets a,b:8: a view's own bound after a colon, for pictures the two rasterisers may draw
@@ -134,7 +103,7 @@ for (const view of views) {
   const bytes = await p.evaluate(() => { try { return Array.from(window.FS.readFile('/shot.png')); } catch { return null; } });
   if (!bytes) { fail(`${name}: the page wrote no screenshot`); await p.close(); continue; }
   fs.writeFileSync(webPng, Buffer.from(bytes));
-  const r = await compare(p, nativePng, webPng, Number(args.levels));
+  const r = await comparePngs(p, fs.readFileSync(nativePng), fs.readFileSync(webPng), Number(args.levels));
   await p.close();
   if (r.error) { fail(`${name}: ${r.error}`); continue; }
   const ok = r.percent <= bound;

@@ -4,8 +4,12 @@ import fs from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
 
+// The decks' stylesheets and fonts too: a browser ignores a stylesheet served as anything but
+// text/css (the decks then showed every slide at once, unstyled).
 const types = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.wasm': 'application/wasm',
-                '.data': 'application/octet-stream', '.md': 'text/plain; charset=utf-8', '.png': 'image/png' };
+                '.data': 'application/octet-stream', '.md': 'text/plain; charset=utf-8', '.png': 'image/png',
+                '.css': 'text/css', '.woff2': 'font/woff2', '.woff': 'font/woff', '.ttf': 'font/ttf',
+                '.svg': 'image/svg+xml', '.pdf': 'application/pdf', '.json': 'application/json' };
 
 // Resolves to the listening server; server.address().port is the port.
 export async function serveSite(dir, port = 0) {
