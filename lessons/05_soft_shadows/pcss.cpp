@@ -44,7 +44,9 @@ void PcssShadows::render(const ShadowContext& c) {
   const std::string filter = std::to_string(filterCount()) + " filter";
   std::string search = std::to_string(searchCount()) + " search";
   if (quadSearchOn()) search += " (" + std::to_string(searchCount() / 4) + " a pixel, shared by its quad)";
-  else if (adaptive_ && p_.quadSearch) search += " (quad search off: no GL_ARB_derivative_control)";
+  else if (adaptive_ && p_.quadSearch)
+    search += gl::caps().gles ? " (quad search off: WebGL2 has no fine derivatives)"
+                              : " (quad search off: no GL_ARB_derivative_control)";
   stats_.extra.push_back({"taps", adaptive_ ? search + " + " + filter : filter});
 }
 
