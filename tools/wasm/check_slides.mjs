@@ -9,7 +9,9 @@
 // squares of --block x --block pixels (the two are resampled differently to the slide's scale), at
 // most --bound percent of the squares' means may differ by more than --levels. Then the deck turns to the
 // next slide: the page must be gone and must have drawn no frame since (a deck runs only the live
-// slide on screen). The deck printed for the PDF (?print-pdf) must show every still and no page.
+// slide on screen). On each deck's first live slide, a drag in the page must turn the lesson's
+// camera and PageDown pressed in it must turn the slide. The deck printed for the PDF
+// (?print-pdf) must show every still and no page.
 // Prints each deck's time from opening (at its first live slide) to that slide's first live frame.
 // Exit status: 0 all held, 1 any failed (each failure one line), 2 bad usage.
 import fs from 'node:fs';
@@ -56,6 +58,34 @@ async function openDeck(deck, slide, errors) {
   return p;
 }
 
+// The first live slide of a deck as a lecturer uses it: a drag in the page turns the lesson's
+// camera, and PageDown pressed in the page (a presenter's clicker) turns the slide; back on the
+// slide, its page opens again.
+async function interact(p, name, index, count) {
+  const frame = p.locator('section.present .live iframe').first();
+  const yaw = () => frame.evaluate((f) => f.contentWindow.Module.ccall('shadowlab_param', 'string', ['string'], ['camera.yaw']));
+  const box = await frame.boundingBox();
+  const before = await yaw();
+  await p.mouse.move(box.x + box.width * 0.3, box.y + box.height * 0.7);
+  await p.mouse.down();
+  for (let i = 1; i <= 10; ++i) await p.mouse.move(box.x + box.width * (0.3 + 0.03 * i), box.y + box.height * 0.7);
+  await p.mouse.up();
+  await p.waitForFunction(([b]) => document.querySelector('section.present .live iframe').contentWindow.Module
+    .ccall('shadowlab_param', 'string', ['string'], ['camera.yaw']) !== b, [before], { timeout: 10000 }).catch(() => {});
+  const after = await yaw();
+  if (after === before) fail(`${name} slide ${index + 1}: a drag in the live page left camera.yaw at ${before}`);
+  else console.log(`ok   ${name} slide ${index + 1}: a drag in the live page turned the camera (yaw ${before} -> ${after})`);
+  // The drag gave the page the keyboard: PageDown goes to it, not to the deck (the page hands it on).
+  if (!(await p.evaluate(() => document.activeElement && document.activeElement.tagName === 'IFRAME')))
+    fail(`${name} slide ${index + 1}: the live page did not take the keyboard from a click in it`);
+  await p.keyboard.press('PageDown');
+  const turned = await p.waitForFunction((i) => Reveal.getIndices().h === i + 1, index, { timeout: 10000 }).then(() => true, () => false);
+  if (!turned) fail(`${name} slide ${index + 1}: PageDown in the live page did not turn the slide`);
+  else console.log(`ok   ${name} slide ${index + 1}: PageDown in the live page turned the slide`);
+  await p.evaluate((i) => Reveal.slide(i), index);
+  await liveFrames(p, count);
+}
+
 for (const deck of decks) {
   const name = deck.replace(/\.html$/, '');
   const errors = [];
@@ -91,6 +121,7 @@ for (const deck of decks) {
       else if (r.percent > Number(args.bound)) fail(`${where}: ${r.percent.toFixed(3)} % of ${args.block}x${args.block} squares differ from the still by more than ${args.levels} levels (bound ${args.bound} %)`);
       else console.log(`ok   ${where}: ${r.percent.toFixed(3)} % of squares differ from the still (bound ${args.bound} %); ${((Date.now() - started) / 1000).toFixed(1)} s`);
     }
+    if (p === opened && index === live[0][0]) await interact(p, name, index, count);
     // Leave the slide: its pages go, and draw nothing more.
     // The pages' frame counts are read in the same task as the turn: no frame can come between.
     const before = await p.evaluate((i) => {
