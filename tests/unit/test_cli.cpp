@@ -59,6 +59,17 @@ TEST_CASE("cli: bad input is one line naming it and the valid choices") {
   CHECK(errorOf({"--record", "a", "--replay", "b"}) == "--record and --replay exclude each other");
 }
 
+TEST_CASE("cli: --panel names the panel's parameters (a lesson inside a slide) and opens it") {
+  const auto cl = parse({"--panel", "bias.constant,bias.slope"});
+  CHECK(cl.panelOnly == std::vector<std::string>{"bias.constant", "bias.slope"});
+  CHECK(cl.showPanel);
+  CHECK(cl.showUi);
+  CHECK(parse({"--panel=fit"}).panelOnly == std::vector<std::string>{"fit"});
+  CHECK(errorOf({"--panel", "a,,b"}) == "--panel: 'a,,b' has an empty name (NAME,NAME,...)");
+  CHECK(errorOf({"--panel", "a,"}) == "--panel: 'a,' has an empty name (NAME,NAME,...)");
+  CHECK(errorOf({"--panel", ",a"}) == "--panel: ',a' has an empty name (NAME,NAME,...)");
+}
+
 TEST_CASE("cli: an empty value is an error, never a silently dropped output") {
   CHECK(errorOf({"--screenshot="}) == "--screenshot needs a value, got an empty one: --screenshot FILE");
   CHECK(errorOf({"--measure="}) == "--measure needs a value, got an empty one: --measure FILE");
