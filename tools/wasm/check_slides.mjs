@@ -108,10 +108,15 @@ for (const deck of decks) {
     }
     if (p === opened && index === live[0][0]) console.log(`ok   ${name}: ${(first / 1000).toFixed(2)} s from opening the deck to its first live frame`);
     for (let k = 0; k < count; ++k) {
+      // The page's own screenshot of the box's rectangle: an element screenshot waits for the box to
+      // hold still over animation frames, which a loaded machine drawing the live page (on the deck's
+      // thread: same origin) did not give it within 20 s.
       const box = p.locator('section.present .live').nth(k);
-      const livePng = await box.screenshot();
+      const rect = await box.evaluate((b) => { const r = b.getBoundingClientRect(); return { x: r.x, y: r.y, width: r.width, height: r.height }; });
+      const shot = () => p.screenshot({ clip: rect, timeout: 120000 });
+      const livePng = await shot();
       await box.evaluate((b) => { b.querySelector('iframe').style.visibility = 'hidden'; });
-      const stillPng = await box.screenshot();
+      const stillPng = await shot();
       await box.evaluate((b) => { b.querySelector('iframe').style.visibility = ''; });
       const where = `${name} slide ${index + 1} figure ${k + 1}`;
       fs.writeFileSync(path.join(out, `${name}-${index + 1}-${k + 1}.live.png`), livePng);
