@@ -46,10 +46,13 @@ void putString(std::string& out, const std::string& s) {
   encodeAnswer(out, std::uint64_t(s.size()));
   out += s;
 }
-std::string getString(std::istream& in) {
+// A length field is the file's word, not the truth: never allocate more than the bytes that are
+// left (a damaged length of 2 GiB must fail as "truncated", not take the memory first).
+std::string getString(std::istream& in, std::uint64_t total) {
   std::uint64_t n = 0;
-  if (!in.read(reinterpret_cast<char*>(&n), sizeof n) || n > (std::uint64_t(1) << 31))
-    throw std::runtime_error("truncated or damaged");
+  if (!in.read(reinterpret_cast<char*>(&n), sizeof n)) throw std::runtime_error("truncated or damaged");
+  const std::streamoff at = in.tellg();
+  if (at < 0 || n > total - std::uint64_t(at)) throw std::runtime_error("truncated");
   std::string s(std::size_t(n), '\0');
   if (n > 0 && !in.read(s.data(), std::streamsize(n))) throw std::runtime_error("truncated");
   return s;
@@ -92,6 +95,7 @@ std::string serializeAnswers(const std::vector<Answer>& answers) {
 bool parseAnswers(const std::string& bytes, std::vector<Answer>& answers, std::string& error) {
   answers.clear();
   std::istringstream in(bytes);
+  const std::uint64_t total = bytes.size();
   std::string magic(sizeof kMagic - 1, '\0');
   if (!in.read(magic.data(), std::streamsize(magic.size())) || magic != kMagic) {
     error = "not an answers file";
@@ -100,15 +104,15 @@ bool parseAnswers(const std::string& bytes, std::vector<Answer>& answers, std::s
   try {
     while (in.peek() != std::char_traits<char>::eof()) {
       Answer a;
-      a.call = getString(in);
+      a.call = getString(in, total);
       std::uint64_t stubs = 0;
       if (!in.read(reinterpret_cast<char*>(&stubs), sizeof stubs) || stubs > 64) throw std::runtime_error("damaged");
-      for (std::uint64_t k = 0; k < stubs; ++k) a.stubs.push_back(getString(in));
+      for (std::uint64_t k = 0; k < stubs; ++k) a.stubs.push_back(getString(in, total));
       std::int32_t thrown = 0;
       if (!in.read(reinterpret_cast<char*>(&thrown), sizeof thrown)) throw std::runtime_error("truncated");
       a.thrown = thrown;
-      a.what = getString(in);
-      a.value = getString(in);
+      a.what = getString(in, total);
+      a.value = getString(in, total);
       answers.push_back(std::move(a));
     }
   } catch (const std::exception& e) {

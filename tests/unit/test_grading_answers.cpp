@@ -115,6 +115,23 @@ TEST_CASE("answers: an answer out of order or damaged fails, never passes") {
   CHECK_THROWS_WITH_AS(gHalf(1.0f), "the recorded answer is shorter than its type", std::runtime_error);
 }
 
+TEST_CASE("answers: a length field longer than the file is refused before anything is allocated") {
+  // The fuzzer's find: a call name claiming 1.9 GB in a 150-byte file took 2 GB of memory first.
+  std::string bytes = grading::serializeAnswers({{"answers_test::half", {}, 0, "", "abcd"}});
+  const std::size_t lengthAt = std::string("shadowlab answers 1\n").size();
+  const std::uint64_t huge = std::uint64_t(0x7b005911);
+  bytes.replace(lengthAt, sizeof huge, reinterpret_cast<const char*>(&huge), sizeof huge);
+  std::vector<grading::Answer> answers;
+  std::string error;
+  CHECK_FALSE(grading::parseAnswers(bytes, answers, error));
+  CHECK(error == "answer 1 is truncated");
+  // One byte past the end is as wrong as a gigabyte: the value's length says 5, four bytes follow.
+  bytes = grading::serializeAnswers({{"answers_test::half", {}, 0, "", "abcd"}});
+  bytes[bytes.size() - 4 - 8] = 5;
+  CHECK_FALSE(grading::parseAnswers(bytes, answers, error));
+  CHECK(error == "answer 1 is truncated");
+}
+
 TEST_CASE("answers: without record or replay a proxy calls the function") {
   using namespace answers_test;
   grading::useDirectAnswers();
