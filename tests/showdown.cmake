@@ -8,6 +8,8 @@
 #   gpu.showdown.control.*       broken set-ups the same check must reject
 #   gpu.showdown.cascades_alias  four cascades alias less than one at the same total texels
 #   gpu.showdown.cascades_warp   the warp inside each cascade (csm.warp) aliases less than without it
+#   gpu.showdown.sdsm_against_csm the sample-distribution cascades: the depth range from the GPU's tiles,
+#                                less aliasing and fewer misclassified pixels than the practical cascades
 #   gpu.showdown.csm_cull_*      caster culling per cascade: the same picture, fewer triangles
 #   gpu.showdown.four_up*        each quarter of the four-up view is its technique's own picture, and
 #                                that picture's ground-truth figures are within the bounds
@@ -28,7 +30,7 @@ function(showdown_case name expect)
   set_tests_properties(gpu.showdown.${name} PROPERTIES LABELS gpu TIMEOUT 300)
 endfunction()
 
-foreach(t uniform psm lispsm csm volumes)
+foreach(t uniform psm lispsm csm sdsm volumes)
   showdown_case(${t} ok --set technique=${t})
 endforeach()
 # The hybrid maps within the bounds under lesson 07's own sun. Under the showdown's low sun behind
@@ -77,6 +79,11 @@ endforeach()
 add_test(NAME gpu.showdown.cascades_alias COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
          -DOUT_DIR=${showdown_out} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_showdown_cascades.cmake)
 set_tests_properties(gpu.showdown.cascades_alias PROPERTIES LABELS gpu TIMEOUT 300)
+add_test(NAME gpu.showdown.sdsm_against_csm COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
+         -DOUT_DIR=${showdown_out} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_showdown_sdsm.cmake)
+set_tests_properties(gpu.showdown.sdsm_against_csm PROPERTIES LABELS gpu TIMEOUT 300)
+showdown_case(sdsm_two ok --set technique=sdsm --set sdsm.cascades=2)
+showdown_case(sdsm_warp ok --set technique=sdsm --set sdsm.warp=true)
 add_test(NAME gpu.showdown.cascades_warp COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_10_showdown>
          -DOUT_DIR=${showdown_out} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_showdown_warp.cmake)
 set_tests_properties(gpu.showdown.cascades_warp PROPERTIES LABELS gpu TIMEOUT 300)

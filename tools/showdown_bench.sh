@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Lesson 10's benchmark (issue 15): every hard-shadow technique at EQUAL TOTAL TEXELS per light
-# (uniform, PSM with the fixes, LiSPSM, cascades; the hybrid maps render the same full map before
-# merging; the stencil volumes have no texels), through lesson 10's parameters, over the committed
-# camera paths (bench/paths: the city and terrain orbits put the light behind, along, beside and
-# facing the view; the forest walk) and a sweep of sun directions over the sphere
+# (uniform, PSM with the fixes, LiSPSM, cascades, sample-distribution cascades; the hybrid maps
+# render the same full map before merging; the stencil volumes have no texels), through lesson
+# 10's parameters, over the committed camera paths (bench/paths: the city and terrain orbits put
+# the light behind, along, beside and facing the view; the forest walk) and a sweep of sun
+# directions over the sphere
 # (psm_light_sweep). Each run is measured against Embree's ground truth (misclassified %: leaks and
 # false shadows; aliasing m: mean, p95, max) and timed (shadow-pass and frame GPU ms, on a software
 # renderer the synchronous timers' wall time). shadowlab_bench writes per path a report
@@ -62,7 +63,7 @@ mkdir -p "$out"
 # The configurations: each map technique at each budget (texels: the side of a light's total),
 # the volumes once. (tests/gpu/registry_test.cpp: every technique of the showdown's registry has a
 # configuration here, in this list or as technique=NAME.)
-map_techniques="uniform psm lispsm csm hybrid"
+map_techniques="uniform psm lispsm csm sdsm hybrid"
 configs=()
 for b in $budgets; do
   for t in $map_techniques; do

@@ -100,16 +100,29 @@ CascadeSet fitCascades(const glm::vec3& direction, const CasterBoxes& scene, con
                        const CascadeOptions& o) {
   if (o.count < 1 || o.count > 4)
     throw std::invalid_argument("cascade count = " + std::to_string(o.count) + " must be 1..4");
-  CascadeSet set;
   const double zFar = o.farZ > 0.0 ? std::min(o.farZ, double(v.farZ)) : cascadeFar(v, scene.bounds);
   const double zn = double(v.nearZ), zf = std::max(zFar, double(v.nearZ) * 1.001);
-  set.splits = o.splitter ? o.splitter(zn, zf, o.count, o.lambda) : cascadeSplits(zn, zf, o.count, o.lambda);
+  std::vector<double> splits =
+      o.splitter ? o.splitter(zn, zf, o.count, o.lambda) : cascadeSplits(zn, zf, o.count, o.lambda);
+  return fitCascadesOver(std::move(splits), zn, zf, direction, scene, v, o, {});
+}
+
+CascadeSet fitCascadesOver(std::vector<double> splits, double zn, double zf, const glm::vec3& direction,
+                           const CasterBoxes& scene, const CascadeViewer& v, const CascadeOptions& o,
+                           const CascadeReceivers& receivers) {
+  if (o.count < 1 || o.count > 4)
+    throw std::invalid_argument("cascade count = " + std::to_string(o.count) + " must be 1..4");
+  CascadeSet set;
+  set.splits = std::move(splits);
   set.problem = splitProblem(set.splits, o.count, zn, zf);
   if (!set.problem.empty()) return set;
+  std::vector<glm::vec3> points;
   for (int i = 0; i < o.count; ++i) {
     const glm::mat4 slice =
         glm::perspective(v.fovY, v.aspect, float(set.splits[std::size_t(i)]), float(set.splits[std::size_t(i) + 1]));
-    set.cameras.push_back(fitDirectional(direction, scene, volumeFromViewProj(slice * v.view), o.fit));
+    points.clear();
+    if (receivers) receivers(i, points);
+    set.cameras.push_back(fitDirectionalTo(direction, scene, volumeFromViewProj(slice * v.view), points, o.fit));
   }
   cullPerCascade(set, scene, o.cullPerCascade);
   return set;

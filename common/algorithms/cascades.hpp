@@ -81,6 +81,15 @@ double cascadeFar(const CascadeViewer& viewer, const Aabb& bounds);
 CascadeSet fitCascades(const glm::vec3& direction, const CasterBoxes& scene, const CascadeViewer& viewer,
                        const CascadeOptions& options);
 
+// The cascades over splits already made (count + 1 view depths from zNear to zFar, checked as a
+// split scheme's are: `problem` says why not), cascade i fitted to the points `receivers(i, out)`
+// gives (left empty: its slice of the view frustum where it meets the scene, as fitCascades fits).
+// The sample-distribution cascades (algorithms/sdsm) give the points their depth tiles hold.
+using CascadeReceivers = std::function<void(int cascade, std::vector<glm::vec3>& out)>;
+CascadeSet fitCascadesOver(std::vector<double> splits, double zNear, double zFar, const glm::vec3& direction,
+                           const CasterBoxes& scene, const CascadeViewer& viewer, const CascadeOptions& options,
+                           const CascadeReceivers& receivers);
+
 // Warping inside each z-partition (Lloyd et al. 2006, [Lloyd2006]): cascade k's map becomes the
 // LiSPSM camera of its own slice of the view frustum (psm::fitLispsm: n_opt from the depths the
 // slice's receivers span), fitted to the receiver volumes the slice cuts, so the perspective warp

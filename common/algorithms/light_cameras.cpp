@@ -47,6 +47,11 @@ ConvexVolume orthoVolumeToward(const LightCamera& ortho, const Aabb& bounds) {
 
 LightCamera fitDirectional(const glm::vec3& direction, const CasterBoxes& scene, const ConvexVolume& view,
                            const DirectionalFitOptions& o) {
+  return fitDirectionalTo(direction, scene, view, {}, o);
+}
+
+LightCamera fitDirectionalTo(const glm::vec3& direction, const CasterBoxes& scene, const ConvexVolume& view,
+                             std::span<const glm::vec3> given, const DirectionalFitOptions& o) {
   requireConsistent(scene);
   const glm::vec3 d = glm::normalize(direction);
   const CasterTest test = o.casterTest ? o.casterTest : CasterTest(casterMayShadow);
@@ -62,9 +67,9 @@ LightCamera fitDirectional(const glm::vec3& direction, const CasterBoxes& scene,
   }
   // Receivers: where the scene's bounds and the view frustum meet (the whole scene when they do
   // not, or when fitting to the scene); casters only push the near plane toward the light.
-  std::vector<glm::vec3> receivers;
+  std::vector<glm::vec3> receivers(given.begin(), given.end());
   const ConvexVolume sceneVolume = volumeFromBox(scene.bounds);
-  if (o.fitToView) receivers = intersectionPoints(sceneVolume, view);
+  if (o.fitToView && receivers.empty()) receivers = intersectionPoints(sceneVolume, view);
   if (receivers.empty()) receivers.assign(sceneVolume.corners.begin(), sceneVolume.corners.end());
   const std::span<const Aabb> casters = o.fitToView ? std::span<const Aabb>(kept) : std::span<const Aabb>();
   const bool snap = o.snap && o.fitToView;

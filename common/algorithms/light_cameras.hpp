@@ -67,6 +67,11 @@ ConvexVolume orthoVolumeToward(const LightCamera& ortho, const Aabb& bounds);
 // camera's). Throws std::invalid_argument as fitOrthographic does.
 LightCamera fitDirectional(const glm::vec3& direction, const CasterBoxes& scene, const ConvexVolume& view,
                            const DirectionalFitOptions& options);
+// The same with the receivers given: the points the map must cover (a sample distribution's tight
+// bounds, lessons/10_showdown/sdsm); casters still culled against `view`. Empty receivers: as
+// fitDirectional.
+LightCamera fitDirectionalTo(const glm::vec3& direction, const CasterBoxes& scene, const ConvexVolume& view,
+                             std::span<const glm::vec3> receivers, const DirectionalFitOptions& options);
 
 // The spot's frustum: a square perspective whose field of view holds the cone,
 // min(2 * spotOuter + 0.05, 3) radians, from nearZ to max(farZ, nearZ + 0.1).

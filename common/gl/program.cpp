@@ -331,6 +331,9 @@ void Program::set(const char* n, int v) const {
 void Program::set(const char* n, const glm::vec2& v) const {
   if (program_) glUniform2fv(location(n), 1, glm::value_ptr(v));
 }
+void Program::set(const char* n, const glm::ivec2& v) const {
+  if (program_) glUniform2iv(location(n), 1, glm::value_ptr(v));
+}
 void Program::set(const char* n, const glm::vec3& v) const {
   if (program_) glUniform3fv(location(n), 1, glm::value_ptr(v));
 }

@@ -63,6 +63,7 @@ class Program {
   void set(const char* name, int v) const;
   void set(const char* name, bool v) const { set(name, int(v)); }
   void set(const char* name, const glm::vec2& v) const;
+  void set(const char* name, const glm::ivec2& v) const;
   void set(const char* name, const glm::vec3& v) const;
   void set(const char* name, const glm::vec4& v) const;
   void set(const char* name, const glm::mat3& v) const;

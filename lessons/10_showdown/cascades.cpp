@@ -53,6 +53,12 @@ void CascadedShadowMaps::declare(ParamRegistry& r, const std::string& n) {
 }
 
 // ==== 1. the slices and their light cameras (GL-free: algorithms/cascades) ===============
+shadow::CascadeSet CascadedShadowMaps::fitSet(const ShadowContext& c, const glm::vec3& direction,
+                                              const shadow::CascadeViewer& viewer, const shadow::CascadeOptions& o,
+                                              const std::string&) {
+  return shadow::fitCascades(direction, c.scene.casterBoxes(), viewer, o);
+}
+
 bool CascadedShadowMaps::fitLight(const ShadowContext& c, int i, int side) {
   PerLight& l = lights_[std::size_t(i)];
   l.set = {};
@@ -74,7 +80,7 @@ bool CascadedShadowMaps::fitLight(const ShadowContext& c, int i, int side) {
   o.cullPerCascade = p_.cullPerCascade;
   o.splitter = student.splits;
   const shadow::CascadeViewer viewer{c.viewer.view(), c.viewer.fovY, c.viewerAspect(), c.viewer.nearZ, c.viewer.farZ};
-  l.set = shadow::fitCascades(light.direction, c.scene.casterBoxes(), viewer, o);
+  l.set = fitSet(c, light.direction, viewer, o, n);
   if (!l.set.problem.empty()) {
     stats_.extra.push_back({n + "cascades", "none: " + l.set.problem + " (lit)"});
     return false;

@@ -68,13 +68,22 @@ class CascadedShadowMaps : public ShadowTechnique, public PostProjectiveSubject 
   const shadow::CascadeSet& cascades(int light) const { return lights_[std::size_t(light)].set; }
   void drawMaps(int light, int x, int y, int w, int h) { maps_.drawLayers(light, x, y, w, h); }
 
+ protected:
+  void render(const ShadowContext& c) override;
+  // Light i's slices and their light cameras: the practical split scheme over [near, the deepest
+  // point of the scene in view] (algorithms/cascades). The sample-distribution cascades (sdsm.hpp)
+  // split what the camera's depth buffer holds instead; `n` starts their header lines.
+  virtual shadow::CascadeSet fitSet(const ShadowContext& c, const glm::vec3& direction,
+                                    const shadow::CascadeViewer& viewer, const shadow::CascadeOptions& o,
+                                    const std::string& n);
+  ShadowStats stats_;
+
  private:
   struct PerLight {
     bool fitted = false;
     shadow::CascadeSet set;
     std::vector<glm::dmat4> matrices;  // each cascade's world -> map clip: its camera's, or its warp's
   };
-  void render(const ShadowContext& c) override;
   bool fitLight(const ShadowContext& c, int i, int side);
   void warpLight(const ShadowContext& c, int i);
 
@@ -85,7 +94,6 @@ class CascadedShadowMaps : public ShadowTechnique, public PostProjectiveSubject 
   glm::vec4 viewZ_{0.0f};
   float near_ = 0.1f;
   LitPass colours_{"cascades: colouring view", "common/scene.vert", "10_showdown/cascade_colours.frag"};
-  ShadowStats stats_;
 };
 
 }  // namespace shadowlab::tech

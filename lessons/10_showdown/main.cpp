@@ -3,6 +3,7 @@
 // of the course can be asked with figures: which technique when?
 //   hard      uniform (lesson 03's fitted maps), psm (lesson 09: PSM with the fixes), lispsm,
 //             csm (cascaded shadow maps: practical splits, blend band, texel snapping per cascade),
+//             sdsm (the cascades split over the depths on screen, each fitted to its samples),
 //             hybrid (lesson 07's hybrid-resolution maps), volumes (lesson 04's stencil volumes)
 //   soft      lesson 05's many, pcf, pcss, parker, haines, mesh, vsm, esm, evsm2, evsm4, msm (they need a spherical
 //             light: the soft_* presets switch the sun off and light1, lesson 05's sphere, on)
@@ -61,7 +62,7 @@ struct Params {
 const char* const kSummary =
     "Every technique of the course on one scene at equal texels: uniform, PSM, LiSPSM, cascades, hybrid, "
     "volumes and the soft methods; the A/B split, a four-up view, and the benchmark's time against error.";
-const char* const kHelp = R"(technique (T): uniform, psm, lispsm, csm, hybrid, volumes, the soft ones, none.
+const char* const kHelp = R"(technique (T): uniform, psm, lispsm, csm, sdsm, hybrid, volumes, the soft ones, none.
 texels: each light's total budget, shared by a technique's maps (equal_texels (U): on or off).
 view (V): lit, visibility, the maps, four-up (quarter.0..3 pick the four). csm.colours (C): cascade colours.
 ab.enabled (X): the A/B split against ab.preset (one preset per technique). view.god (O), view.post (P).
@@ -200,6 +201,7 @@ class ShowdownLesson : public tech::ShadowLesson {
     psm_.maps().params().mapSize = p_.texels;
     lispsm_.maps().params().mapSize = p_.texels;
     csm_.maps().params().mapSize = p_.texels;
+    sdsm_.maps().params().mapSize = p_.texels;
     hybrid_.params().mapSize = p_.texels;
   }
 
@@ -212,9 +214,10 @@ class ShowdownLesson : public tech::ShadowLesson {
     const int room = std::max(f.width - x, 1);
     if (name == "psm") psm_.drawMaps(0, x, 0, std::min(room, h * 6), h);
     if (name == "lispsm") lispsm_.drawMaps(0, x, 0, h, h);
-    if (name == "csm") csm_.drawMaps(0, x, 0, std::min(room, h * csm_.params().count), h);
-    const int w = name == "psm" ? std::min(room, h * 6) : name == "csm" ? std::min(room, h * csm_.params().count) : h;
-    if (name == "psm" || name == "lispsm" || name == "csm")
+    tech::CascadedShadowMaps* cascades = name == "csm" ? &csm_ : name == "sdsm" ? &sdsm_ : nullptr;
+    if (cascades) cascades->drawMaps(0, x, 0, std::min(room, h * cascades->params().count), h);
+    const int w = name == "psm" ? std::min(room, h * 6) : cascades ? std::min(room, h * cascades->params().count) : h;
+    if (name == "psm" || name == "lispsm" || cascades)
       insets.push_back({"map view", x, 0, w, h});  // the UI stays clear of it
   }
 
@@ -281,6 +284,7 @@ class ShowdownLesson : public tech::ShadowLesson {
   tech::PerspectiveShadowMaps& psm_ = techniques_.get<tech::PerspectiveShadowMaps>("psm");
   tech::LightSpacePsm& lispsm_ = techniques_.get<tech::LightSpacePsm>("lispsm");
   tech::CascadedShadowMaps& csm_ = techniques_.get<tech::CascadedShadowMaps>("csm");
+  tech::CascadedShadowMaps& sdsm_ = techniques_.get<tech::CascadedShadowMaps>("sdsm");
   tech::HybridShadowMaps& hybrid_ = techniques_.get<tech::HybridShadowMaps>("hybrid");
   tech::PostProjectiveView postView_;
   std::array<Quarter, 4> quarters_;
