@@ -44,7 +44,7 @@ void DepthTileReduction::init() {
 }
 
 // The depth texture at the frame's size and the reduction's levels under it: tiles of 8 pixels,
-// then a quarter of the side each step until at most kMaxTiles a side.
+// then half the side each step until at most kMaxTiles a side.
 void DepthTileReduction::resize(int width, int height) {
   if (width == width_ && height == height_) return;
   width_ = width;
@@ -63,7 +63,7 @@ void DepthTileReduction::resize(int width, int height) {
     const std::string label = "sdsm: tiles of " + std::to_string(pixels) + " pixels";
     levels_.push_back({makeTexture2D(GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, w, h, label), w, h, pixels});
     if (w <= kMaxTiles && h <= kMaxTiles) break;
-    w = (w + 3) / 4, h = (h + 3) / 4, pixels *= 4;
+    w = (w + 1) / 2, h = (h + 1) / 2, pixels *= 2;
   }
 }
 
@@ -84,7 +84,7 @@ shadow::DepthTiles DepthTileReduction::run(const ShadowContext& c, const shadow:
     for (std::size_t i = 0; i < keep_.size(); ++i) keep_[i] = !shadow::boxOutsideClip(viewProj, c.scene.boxes()[i]);
     depth_.draw(c.scene, viewProj, keep_, {.alphaTest = true, .allObjects = true, .alphaLevel0 = false});
   }
-  // ---- 1. the reduction: nearest and farthest depth per tile, then per 4 x 4 tiles, ...
+  // ---- 1. the reduction: nearest and farthest depth per tile, then per 2 x 2 tiles, ...
   {
     auto t = gl::TimerScope(c.timers, "sdsm reduction");
     glDisable(GL_DEPTH_TEST);

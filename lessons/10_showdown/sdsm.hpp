@@ -3,10 +3,11 @@
 // cascades.hpp, split over the depths the camera actually sees and each fitted to the points it
 // sees, found on the GPU each frame:
 //   0. the camera's depth       the scene from the viewer into a depth texture of the frame's size
-//   1. the reduction            tiles of 8 x 8 pixels, then 4 x 4 of those, ... each texel the
+//   1. the reduction            tiles of 8 x 8 pixels, then 2 x 2 of those, ... each texel the
 //                               nearest and farthest view depth under it (shaders/10_showdown/
 //                               sdsm_tiles.frag, sdsm_reduce.frag: fragment passes, OpenGL 4.1 has no
-//                               compute), until at most 64 x 64 tiles remain; those are read back
+//                               compute), until at most 128 x 128 tiles remain (a 1280 x 720 frame:
+//                               80 x 45 tiles of 16 pixels); those are read back
 //   2. the fit                  GL-free (algorithms/sdsm): the practical split scheme over the tiles'
 //                               [nearest, farthest], each cascade's map fitted to the tiles' pieces of
 //                               its slice (tight_fit), then the cascades' passes and lookup unchanged.
@@ -24,8 +25,8 @@ namespace shadowlab::tech {
 
 class DepthTileReduction {
  public:
-  static constexpr int kTile = 8;       // the first step's tile, in pixels
-  static constexpr int kMaxTiles = 64;  // reduce until at most this many tiles a side
+  static constexpr int kTile = 8;        // the first step's tile, in pixels
+  static constexpr int kMaxTiles = 128;  // reduce until at most this many tiles a side
   void init();
   // The scene's depth from `viewer` at the frame's size, reduced and read back (passes timed).
   shadow::DepthTiles run(const ShadowContext& c, const shadow::CascadeViewer& viewer);
