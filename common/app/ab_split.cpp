@@ -84,7 +84,7 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
   lesson.timers.setEnabled(false);
   lesson.update(b);
   if (measured) measurementB_.mirror(*measured);
-  b.framebuffer = measurementB_.begin(target_.fbo.id(), frame.width, frame.height);
+  b.framebuffer = measurementB_.begin(target_.fbo.id(), frame.width, frame.height, b.projection * b.view);
   b.measureLight = measurementB_.measuredLight();
   glBindFramebuffer(GL_FRAMEBUFFER, b.framebuffer);
   glViewport(0, 0, frame.width, frame.height);

@@ -407,7 +407,7 @@ class Runner {
 
   void drawLessonAndViews(FrameInfo& fi, unsigned frameFbo) {
     lesson_.update(fi);
-    fi.framebuffer = measurement_.begin(frameFbo, fi.width, fi.height);
+    fi.framebuffer = measurement_.begin(frameFbo, fi.width, fi.height, fi.projection * fi.view);
     fi.measureLight = measurement_.measuredLight();
     glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
     glViewport(0, 0, fi.width, fi.height);

@@ -124,7 +124,8 @@ void Measurement::ensureTarget(int w, int h) {
 // frame is drawn as it is, without the surfaces the ground truth would read back.
 constexpr const char* kNoTruthInBrowser = "ground truth: run the lesson natively (make run)";
 
-unsigned Measurement::begin(unsigned frameFbo, int w, int h) {
+unsigned Measurement::begin(unsigned frameFbo, int w, int h, const glm::mat4& viewProj) {
+  viewProj_ = viewProj;
   if (active() && gl::caps().gles) result_ = {}, result_.unmeasurable = kNoTruthInBrowser;
   if (!active() || gl::caps().gles) return frameFbo;
   if (!overlayProgram_.valid()) overlayProgram_.build();
@@ -160,14 +161,24 @@ void Measurement::end(const MeasureSource& source, unsigned frameFbo, bool viewC
 
 // Shimmer: against the frame measured just before this one, when it was the previous frame, of the
 // same light, at the same resolution (a still view is not re-measured: nothing moved).
-void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& reference) {
+void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& reference, const ImageF& position) {
   result_.hasTemporal = lastMeasured_ + 1 == frame_ && lastLight_ == light_ &&
                         lastTechnique_.width == technique.width && lastTechnique_.height == technique.height &&
                         !lastTechnique_.data.empty();
-  if (result_.hasTemporal)
+  result_.reprojected = result_.hasTemporal && viewProj_ != lastViewProj_;
+  if (result_.reprojected) {
+    const measure::ReprojectedTemporalErrors r =
+        measure::compareFramesReprojected({&lastTechnique_, &lastReference_, &lastPosition_, lastViewProj_},
+                                          {&technique, &reference, &position, viewProj_});
+    result_.temporal = r.errors;
+    result_.unmatched = r.unmatched;
+  } else if (result_.hasTemporal) {
     result_.temporal = measure::compareFrames(lastTechnique_, technique, lastReference_, reference);
+  }
   lastTechnique_ = technique;
   lastReference_ = reference;
+  lastPosition_ = position;
+  lastViewProj_ = viewProj_;
   lastMeasured_ = frame_;
   lastLight_ = light_;
 }
@@ -301,7 +312,7 @@ void Measurement::compute(const MeasureSource& source) {
     result_.band = measure::compareHard(technique, reference, band);
     if (result_.hasAliasing) result_.bandAliasing = measure::aliasingStats(measure::keepWhere(shaded.jacobian, band));
   }
-  compareWithLastFrame(technique, reference);
+  compareWithLastFrame(technique, reference, shaded.position);
   result_.referenceImage = referenceImage(reference);
   result_.valid = true;
   uploadOverlay();
@@ -410,8 +421,8 @@ std::vector<std::pair<std::string, std::string>> Measurement::summary() const {
       std::snprintf(buf, sizeof buf, "mean |dV| %.4f beyond the reference's (%.4f)", t.extraChange,
                     t.referenceMeanChange);
     else
-      std::snprintf(buf, sizeof buf, "%.2f%% of px flip, the reference not (it flips %.2f%%)", t.extraFlipPct,
-                    t.referenceFlipPct);
+      std::snprintf(buf, sizeof buf, "%.2f%% of px flip, the reference not (it flips %.2f%%)%s", t.extraFlipPct,
+                    t.referenceFlipPct, result_.reprojected ? ", world points followed" : "");
     out.push_back({"shimmer", buf});
   }
   std::snprintf(buf, sizeof buf, "%dx%d: rays %.0f ms, read-back %.0f ms%s", result_.width, result_.height,

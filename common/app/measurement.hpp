@@ -79,9 +79,13 @@ struct MeasureResult {
   float bandRadius = 0.0f;
   measure::HardShadowErrors band;
   measure::AliasingStats bandAliasing;
-  // Shimmer: this frame against the one measured just before it (consecutive frames only).
+  // Shimmer: this frame against the one measured just before it (consecutive frames only). When
+  // the camera moved, each pixel against the previous frame's sample of the same world point
+  // (reprojected; `unmatched`: pixels whose point that frame did not see).
   bool hasTemporal = false;
   measure::TemporalErrors temporal;
+  bool reprojected = false;
+  std::size_t unmatched = 0;
   std::size_t nonFiniteVisibility = 0;  // covered pixels whose V is NaN or infinite (a broken matrix)
   std::size_t nonFiniteJacobian = 0;    // covered pixels whose texel Jacobian is (else they pass for background)
   double groundTruthMs = 0, readbackMs = 0, buildMs = 0;
@@ -112,8 +116,9 @@ class Measurement {
   void requestFullResolution() { forceFull_ = true; }
 
   // Before the lesson renders: the framebuffer it should draw into (the measurement target when
-  // active, else `frameFbo`).
-  unsigned begin(unsigned frameFbo, int width, int height);
+  // active, else `frameFbo`). `viewProj`: the camera it draws with (the shimmer figures follow
+  // world points from frame to frame when it moves).
+  unsigned begin(unsigned frameFbo, int width, int height, const glm::mat4& viewProj = glm::mat4(1.0f));
   // After it rendered: copies the colour into `frameFbo`, measures if needed, draws the overlay.
   void end(const MeasureSource& source, unsigned frameFbo, bool viewChanged);
 
@@ -135,7 +140,7 @@ class Measurement {
   void uploadOverlay();
   void drawOverlay(unsigned frameFbo);
 
-  void compareWithLastFrame(const ImageF& technique, const ImageF& reference);
+  void compareWithLastFrame(const ImageF& technique, const ImageF& reference, const ImageF& position);
 
   enum class Overlay { None, Error, Aliasing, Reference, Figures };
   Overlay overlay_ = Overlay::None;
@@ -162,7 +167,8 @@ class Measurement {
   // The last measured frame's visibilities, for the shimmer figures.
   std::uint64_t frame_ = 0, lastMeasured_ = 0;
   int lastLight_ = -1;
-  ImageF lastTechnique_, lastReference_;
+  ImageF lastTechnique_, lastReference_, lastPosition_;
+  glm::mat4 viewProj_{1.0f}, lastViewProj_{1.0f};
 };
 
 }  // namespace shadowlab

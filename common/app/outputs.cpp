@@ -79,7 +79,9 @@ nlohmann::ordered_json figures(const MeasureResult& r) {
                      {"reference_flip_pct", t.referenceFlipPct},
                      {"mean_change", t.meanChange},
                      {"reference_mean_change", t.referenceMeanChange},
-                     {"extra_change", t.extraChange}};
+                     {"extra_change", t.extraChange},
+                     {"reprojected", r.reprojected},
+                     {"unmatched", r.unmatched}};
   }
   if (r.soft) {
     const auto& s = r.soft_;

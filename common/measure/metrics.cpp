@@ -223,17 +223,14 @@ SoftShadowErrors compareSoft(const ImageF& technique, const ImageF& reference, f
   return e;
 }
 
-TemporalErrors compareFrames(const ImageF& techniqueBefore, const ImageF& technique, const ImageF& referenceBefore,
-                             const ImageF& reference, float litThreshold) {
-  checkPair(technique, reference, "compareFrames");
-  checkPair(techniqueBefore, referenceBefore, "compareFrames");
-  checkPair(technique, techniqueBefore, "compareFrames");
+namespace {
+
+// One pixel's two frames at a time, then the shares: compareFrames and its reprojected form.
+struct FlipCount {
   TemporalErrors e;
   double change = 0, referenceChange = 0, extra = 0;
-  for (std::size_t i = 0; i < reference.data.size(); ++i) {
-    const float r0 = referenceBefore.data[i], r1 = reference.data[i];
-    if (!(r0 >= 0.0f) || !(r1 >= 0.0f)) continue;
-    const float t0 = techniqueBefore.data[i], t1 = technique.data[i];
+  float litThreshold = 0.5f;
+  void add(float t0, float t1, float r0, float r1) {
     ++e.pixels;
     const bool flip = (t0 >= litThreshold) != (t1 >= litThreshold);
     const bool referenceFlip = (r0 >= 0.5f) != (r1 >= 0.5f);
@@ -245,15 +242,87 @@ TemporalErrors compareFrames(const ImageF& techniqueBefore, const ImageF& techni
     referenceChange += dr;
     extra += std::max(d - dr, 0.0);
   }
-  if (e.pixels) {
-    const double n = double(e.pixels);
-    e.extraFlipPct = 100.0 * double(e.extraFlips) / n;
-    e.referenceFlipPct = 100.0 * double(e.referenceFlips) / n;
-    e.meanChange = change / n;
-    e.referenceMeanChange = referenceChange / n;
-    e.extraChange = extra / n;
+  TemporalErrors done() {
+    if (e.pixels) {
+      const double n = double(e.pixels);
+      e.extraFlipPct = 100.0 * double(e.extraFlips) / n;
+      e.referenceFlipPct = 100.0 * double(e.referenceFlips) / n;
+      e.meanChange = change / n;
+      e.referenceMeanChange = referenceChange / n;
+      e.extraChange = extra / n;
+    }
+    return e;
   }
-  return e;
+};
+
+}  // namespace
+
+TemporalErrors compareFrames(const ImageF& techniqueBefore, const ImageF& technique, const ImageF& referenceBefore,
+                             const ImageF& reference, float litThreshold) {
+  checkPair(technique, reference, "compareFrames");
+  checkPair(techniqueBefore, referenceBefore, "compareFrames");
+  checkPair(technique, techniqueBefore, "compareFrames");
+  FlipCount count{.litThreshold = litThreshold};
+  for (std::size_t i = 0; i < reference.data.size(); ++i) {
+    const float r0 = referenceBefore.data[i], r1 = reference.data[i];
+    if (!(r0 >= 0.0f) || !(r1 >= 0.0f)) continue;
+    count.add(techniqueBefore.data[i], technique.data[i], r0, r1);
+  }
+  return count.done();
+}
+
+ReprojectedTemporalErrors compareFramesReprojected(const FrameSamples& before, const FrameSamples& now,
+                                                   float footprints, float litThreshold) {
+  if (!before.technique || !before.reference || !before.position || !now.technique || !now.reference || !now.position)
+    throw std::invalid_argument("compareFramesReprojected: an image is missing");
+  checkPair(*now.technique, *now.reference, "compareFramesReprojected");
+  checkPair(*before.technique, *before.reference, "compareFramesReprojected");
+  checkPair(*now.technique, *before.technique, "compareFramesReprojected");
+  const int w = now.reference->width, h = now.reference->height;
+  for (const ImageF* p : {before.position, now.position})
+    if (p->width != w || p->height != h || p->channels != 4)
+      throw std::invalid_argument("compareFramesReprojected: positions are not RGBA " + std::to_string(w) + "x" +
+                                  std::to_string(h));
+  ReprojectedTemporalErrors out;
+  FlipCount count{.litThreshold = litThreshold};
+  const auto point = [](const ImageF& p, std::size_t i) {
+    return glm::vec4(p.data[4 * i], p.data[4 * i + 1], p.data[4 * i + 2], 1.0f);
+  };
+  for (std::size_t i = 0; i < now.reference->data.size(); ++i) {
+    const float r1 = now.reference->data[i];
+    if (!(r1 >= 0.0f)) continue;
+    // Where the previous camera saw this pixel's point: its sample there (top row first).
+    const glm::vec4 world = point(*now.position, i);
+    const glm::vec4 clip = before.viewProj * world;
+    const float fx = (clip.x / clip.w * 0.5f + 0.5f) * float(w), fy = (clip.y / clip.w * 0.5f + 0.5f) * float(h);
+    bool seen = clip.w > 0.0f && fx >= 0.0f && fx < float(w) && fy >= 0.0f && fy < float(h);  // NaN: false
+    std::size_t j = 0;
+    if (seen) {
+      const int px = int(fx), py = h - 1 - int(fy);
+      j = std::size_t(py) * std::size_t(w) + std::size_t(px);
+      // Hidden then: that sample's point lies farther from this one than its neighbours on the same
+      // surface lie from it (those within 4x the nearest one: across a silhouette, not).
+      const glm::vec3 there(point(*before.position, j));
+      float gaps[4], nearest = INFINITY, spacing = 0.0f;
+      int n = 0;
+      for (const glm::ivec2 d : {glm::ivec2(1, 0), glm::ivec2(-1, 0), glm::ivec2(0, 1), glm::ivec2(0, -1)}) {
+        const int nx = px + d.x, ny = py + d.y;
+        const std::size_t k = std::size_t(ny) * std::size_t(w) + std::size_t(nx);
+        if (nx >= 0 && nx < w && ny >= 0 && ny < h && before.reference->data[k] >= 0.0f)
+          nearest = std::min(nearest, gaps[n++] = glm::distance(there, glm::vec3(point(*before.position, k))));
+      }
+      for (int k = 0; k < n; ++k)
+        if (gaps[k] <= 4.0f * nearest) spacing = std::max(spacing, gaps[k]);
+      seen = before.reference->data[j] >= 0.0f && glm::distance(there, glm::vec3(world)) <= footprints * spacing;
+    }
+    if (!seen) {
+      ++out.unmatched;
+      continue;
+    }
+    count.add(before.technique->data[j], now.technique->data[i], before.reference->data[j], r1);
+  }
+  out.errors = count.done();
+  return out;
 }
 
 Image8 hardErrorHeatmap(const ImageF& technique, const ImageF& reference, float litThreshold) {

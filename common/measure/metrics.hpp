@@ -98,6 +98,27 @@ struct TemporalErrors {
 TemporalErrors compareFrames(const ImageF& techniqueBefore, const ImageF& technique, const ImageF& referenceBefore,
                              const ImageF& reference, float litThreshold = 0.5f);
 
+// The same figures under a moving camera, where a pixel sees another world point each frame: each
+// pixel is compared with the previous frame's pixel that saw ITS point (the point projected with the
+// previous frame's view-projection, the sample whose block holds it), so a shadow edge fixed in the
+// world (snapped maps) does not flip, and one that crawls over the geometry does. Pixels whose point
+// the previous frame did not see (off screen, behind the camera, or hidden: the sample there lies
+// farther from it than `footprints` times the largest spacing of that sample to its neighbours) are
+// left out and counted. Positions are world space, one per pixel of the images (top row first), as
+// the measurement reads them back.
+struct FrameSamples {
+  const ImageF* technique = nullptr;
+  const ImageF* reference = nullptr;
+  const ImageF* position = nullptr;  // RGBA: world xyz (w unused), the same size as the two above
+  glm::mat4 viewProj{1.0f};          // the camera that drew them
+};
+struct ReprojectedTemporalErrors {
+  TemporalErrors errors;
+  std::size_t unmatched = 0;  // facing pixels now whose point the previous frame did not see
+};
+ReprojectedTemporalErrors compareFramesReprojected(const FrameSamples& before, const FrameSamples& now,
+                                                   float footprints = 1.5f, float litThreshold = 0.5f);
+
 // ---- Heatmaps (RGBA, alpha 255; 0 for background) ----------------------------------------------
 inline constexpr Rgb8 kLeakColor{255, 48, 32};          // lit, should be shadowed
 inline constexpr Rgb8 kFalseShadowColor{40, 110, 255};  // shadowed, should be lit

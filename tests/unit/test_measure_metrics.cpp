@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "measure/ground_truth.hpp"
 #include "measure/metrics.hpp"
 
@@ -213,4 +215,69 @@ TEST_CASE("measure.metrics: the m heatmap ramp separates alias-free from aliased
   CHECK(heat.at(0, 0)[3] == 255);
   CHECK(heat.at(1, 0)[3] == 0);
   CHECK(Rgb8{heat.at(0, 0)[0], heat.at(0, 0)[1], heat.at(0, 0)[2]} == below);
+}
+
+namespace {
+
+// A camera looking straight down on the ground (orthographic, pixels of 0.1 m, 16 x 8 of them) at
+// x = cameraX: each pixel's ground point, and a technique's visibility from it. Top row first.
+struct TopDown {
+  static constexpr int kW = 16, kH = 8;
+  static constexpr float kPixel = 0.1f;
+  glm::mat4 viewProj{1.0f};
+  ImageF position, reference, technique;
+  template <class V>
+  TopDown(float cameraX, V visibility) {
+    const glm::mat4 view = glm::lookAt(glm::vec3(cameraX, 10, 0), glm::vec3(cameraX, 0, 0), glm::vec3(0, 0, -1));
+    viewProj = glm::ortho(-kW * kPixel / 2, kW * kPixel / 2, -kH * kPixel / 2, kH * kPixel / 2, 1.0f, 20.0f) * view;
+    const glm::mat4 toWorld = glm::inverse(viewProj);
+    position = {kW, kH, 4, std::vector<float>(kW * kH * 4)};
+    reference = {kW, kH, 1, std::vector<float>(kW * kH, 1.0f)};  // the ground is lit everywhere
+    technique = {kW, kH, 1, std::vector<float>(kW * kH)};
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) {
+        const glm::vec4 ndc((x + 0.5f) / kW * 2 - 1, 1 - (y + 0.5f) / kH * 2, 0.0f, 1.0f);  // row 0 on top
+        glm::vec4 p = toWorld * ndc;
+        p /= p.w;
+        p.y = 0.0f;
+        const std::size_t i = std::size_t(y * kW + x);
+        for (int c = 0; c < 3; ++c) position.data[4 * i + std::size_t(c)] = p[c];
+        technique.data[i] = visibility(glm::vec3(p), x);
+      }
+  }
+  FrameSamples samples() const { return {&technique, &reference, &position, viewProj}; }
+};
+
+}  // namespace
+
+TEST_CASE("measure.metrics: under a moving camera shimmer follows world points, not pixels") {
+  // The camera moves one pixel (0.1 m) along x between the frames. A map whose wrong stripes stay
+  // put in the world (snapped) flips no point; stripes that move with the camera (a fit that slides
+  // with the view) flip a point at every stripe edge. Comparing pixel with pixel says the opposite.
+  const auto fixedInWorld = [](const glm::vec3& p, int) { return std::fmod(std::floor(p.x / 0.4f + 100.0f), 2.0f); };
+  const auto movingWithView = [](const glm::vec3&, int x) { return float((x / 4) % 2); };
+  const TopDown a0(0.0f, fixedInWorld), a1(0.1f, fixedInWorld);
+  const ReprojectedTemporalErrors world = compareFramesReprojected(a0.samples(), a1.samples());
+  CHECK(world.errors.pixels == (TopDown::kW - 1) * TopDown::kH);
+  CHECK(world.unmatched == TopDown::kH);  // the new column on the right: not seen before
+  CHECK(world.errors.extraFlips == 0);
+  CHECK(compareFrames(a0.technique, a1.technique, a0.reference, a1.reference).extraFlips > 0);
+
+  const TopDown b0(0.0f, movingWithView), b1(0.1f, movingWithView);
+  const ReprojectedTemporalErrors view = compareFramesReprojected(b0.samples(), b1.samples());
+  CHECK(view.errors.extraFlips == 3 * TopDown::kH);  // the edges at columns 4, 8 and 12, a point each row
+  CHECK(view.errors.extraFlipPct == doctest::Approx(100.0 * 3 / (TopDown::kW - 1)));
+  CHECK(compareFrames(b0.technique, b1.technique, b0.reference, b1.reference).extraFlips == 0);
+
+  // Points hidden in the previous frame (a box's top 3 m up covered columns 4-8 of rows 0-4 then)
+  // are not compared: the new frame's columns 3-7 of those rows reproject there.
+  TopDown c0(0.0f, fixedInWorld);
+  for (int y = 0; y < 5; ++y)
+    for (int x = 4; x < 9; ++x) c0.position.data[4 * std::size_t(y * TopDown::kW + x) + 1] = 3.0f;
+  const ReprojectedTemporalErrors hidden = compareFramesReprojected(c0.samples(), a1.samples());
+  CHECK(hidden.unmatched == TopDown::kH + 25);
+  // Images that do not match are refused.
+  FrameSamples broken = a1.samples();
+  broken.position = &a1.reference;
+  CHECK_THROWS_AS(compareFramesReprojected(a0.samples(), broken), std::invalid_argument);
 }
