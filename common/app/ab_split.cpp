@@ -75,14 +75,16 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
   for (const auto& [name, value] : a)
     if (sharedWithB(name)) shared.emplace_back(name, value);
   params.setAll(shared);
-  const auto bValues = params.snapshot();
-  whatA_ = differences(a, bValues);
-  whatB_ = differences(bValues, a);
 
   FrameInfo b = frame;
   const std::vector<Counter> countersA = lesson.counters;  // the header shows A's work, not B's
   lesson.timers.setEnabled(false);
   lesson.update(b);
+  // What sets the halves apart, each as its update left it: a lesson that derives parameters there
+  // (lesson 10's equal texels sets every map's size) must not show them as a difference of B's.
+  const auto bValues = params.snapshot();
+  whatA_ = differences(a, bValues);
+  whatB_ = differences(bValues, a);
   if (measured) measurementB_.mirror(*measured);
   b.framebuffer = measurementB_.begin(target_.fbo.id(), frame.width, frame.height, b.projection * b.view);
   b.measureLight = measurementB_.measuredLight();

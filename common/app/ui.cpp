@@ -327,19 +327,21 @@ void Ui::help(const LessonInfo& info, const ParamRegistry& params, bool* open) {
 void Ui::splitLabels(float divider, const std::string& a, const std::string& b) {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImVec2 size = ImGui::GetIO().DisplaySize;
-  // Both labels' tops on one line, as high as the taller needs (at most three lines: what the half
-  // is, a key figure, its error), clear of the bottom.
-  const auto lines = [](const std::string& t) { return 1 + float(std::count(t.begin(), t.end(), '\n')); };
-  const float x = divider * size.x,
-              y = size.y - ImGui::GetTextLineHeightWithSpacing() * (std::max(lines(a), lines(b)) + 0.6f);
-  auto label = [&](float left, const std::string& text) {
-    const ImVec2 t = ImGui::CalcTextSize(text.c_str());
+  // Each label wrapped to its own half (a projector's UI scale makes a long key figure wider than
+  // the half), both tops on one line as high as the taller needs, clear of the bottom.
+  const float x = divider * size.x, gap = 16.0f;
+  const float wrapA = std::max(x - gap - 8.0f, 40.0f), wrapB = std::max(size.x - x - gap - 8.0f, 40.0f);
+  const ImVec2 ta = ImGui::CalcTextSize(a.c_str(), nullptr, false, wrapA);
+  const ImVec2 tb = ImGui::CalcTextSize(b.c_str(), nullptr, false, wrapB);
+  const float y = size.y - std::max(ta.y, tb.y) - ImGui::GetTextLineHeightWithSpacing() * 0.6f - 4.0f;
+  auto label = [&](float left, const std::string& text, const ImVec2& t, float wrap, const char* name) {
     draw->AddRectFilled(ImVec2(left - 4, y - 4), ImVec2(left + t.x + 4, y + t.y + 4), IM_COL32(0, 0, 0, 180), 4.0f);
-    draw->AddText(ImVec2(left, y), IM_COL32(255, 255, 255, 255), text.c_str());
-    layout_.push_back({&text == &a ? "A label" : "B label", left - 4, y - 4, t.x + 8, t.y + 8});
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(left, y), IM_COL32(255, 255, 255, 255), text.c_str(),
+                  nullptr, wrap);
+    layout_.push_back({name, left - 4, y - 4, t.x + 8, t.y + 8});
   };
-  label(std::max(8.0f, x - ImGui::CalcTextSize(a.c_str()).x - 16.0f), a);
-  label(x + 16.0f, b);
+  label(std::max(8.0f, x - ta.x - gap), a, ta, wrapA, "A label");
+  label(x + gap, b, tb, wrapB, "B label");
   legendTop_ = std::min(legendTop_, y - 4.0f);  // the bottom-left stack (legend, exercises) stays above them
 }
 

@@ -118,7 +118,7 @@ class ShowdownLesson : public tech::ShadowLesson {
     LessonInfo i{"10", "10_showdown", "The showdown: every technique, time against error", kSummary, 5, kHelp, true};
     i.minutes = 90;
     i.prerequisites = {"04", "05", "07", "09"};
-    i.keyFigures = {"light0 light", "light0 maps", "light0 splits", "light0 cascade texels"};
+    i.keyFigures = {"light0 light", "light0 maps", "light0 splits", "light0 depth range", "light0 cascade texels"};
     return i;
   }
 

@@ -179,11 +179,12 @@ shadow::CascadeSet SampleDistributionShadowMaps::fitSet(const ShadowContext& c, 
   const shadow::SdsmFit fit =
       shadow::fitSampleDistribution(direction, c.scene.casterBoxes(), viewer, history_.back(), so);
   char b[160];
+  const int age = int(history_.size()) - 1;
+  const std::string old = age == 0 ? "" : ", " + std::to_string(age) + (age == 1 ? " frame old" : " frames old");
   if (fit.fellBack) std::snprintf(b, sizeof b, "nothing on screen: the practical splits");
   else
-    std::snprintf(b, sizeof b, "%.3g - %.3g m (%d of %d tiles, %d frame%s old)", fit.range.nearest, fit.range.farthest,
-                  fit.range.tiles, int(history_.back().depths.size()), int(history_.size()) - 1,
-                  history_.size() == 2 ? "" : "s");
+    std::snprintf(b, sizeof b, "%.3g - %.3g m, %d of %d tiles%s", fit.range.nearest, fit.range.farthest,
+                  fit.range.tiles, int(history_.back().depths.size()), old.c_str());
   stats_.extra.push_back({n + "depth range", b});
   return fit.set;
 }

@@ -25,8 +25,8 @@ string(JSON range GET "${json}" counters "light0 depth range")
 message(STATUS "csm: mean m ${m_csm}, ${bad_csm} misclassified, splits ${splits_csm}")
 message(STATUS "sdsm: mean m ${m_sdsm}, ${bad_sdsm} misclassified, splits ${splits_sdsm}, depth range ${range}")
 message(STATUS "sdsm, slices fitted whole: mean m ${m_loose}, ${bad_loose} misclassified")
-# "11.1 - 200 m (2040 of 2040 tiles, 0 frames old)": 480x270 in tiles of 8 pixels is 60 x 34.
-if(NOT range MATCHES "^([0-9.]+) - ([0-9.]+) m \\(2040 of 2040 tiles, 0 frames old\\)$")
+# "11.1 - 200 m, 2040 of 2040 tiles" (no latency: no age): 480x270 in tiles of 8 pixels is 60 x 34.
+if(NOT range MATCHES "^([0-9.]+) - ([0-9.]+) m, 2040 of 2040 tiles$")
   message(FATAL_ERROR "the depth range is not read from all 2040 tiles of the frame: '${range}'")
 endif()
 set(nearest ${CMAKE_MATCH_1})
