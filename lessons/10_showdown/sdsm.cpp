@@ -160,7 +160,11 @@ void SampleDistributionShadowMaps::render(const ShadowContext& c) {
   bool directional = false;
   for (const Light& l : c.lights) directional = directional || (l.enabled && l.kind == LightKind::Directional);
   if (directional) {
-    history_.push_front(reduction_.run(c, viewer));
+    // A second view of the same frame (the A/B split's B half, a four-up quarter) replaces this
+    // frame's tiles instead of ageing the others by a frame.
+    if (!history_.empty() && history_.front().frame == c.frame.index)
+      history_.front().tiles = reduction_.run(c, viewer);
+    else history_.push_front({c.frame.index, reduction_.run(c, viewer)});
     while (int(history_.size()) > s_.latency + 1) history_.pop_back();
   }
   CascadedShadowMaps::render(c);
@@ -177,14 +181,14 @@ shadow::CascadeSet SampleDistributionShadowMaps::fitSet(const ShadowContext& c, 
   // The oldest tiles kept: `latency` frames old once the history is full (the first frames use
   // the oldest there is).
   const shadow::SdsmFit fit =
-      shadow::fitSampleDistribution(direction, c.scene.casterBoxes(), viewer, history_.back(), so);
+      shadow::fitSampleDistribution(direction, c.scene.casterBoxes(), viewer, history_.back().tiles, so);
   char b[160];
   const int age = int(history_.size()) - 1;
   const std::string old = age == 0 ? "" : ", " + std::to_string(age) + (age == 1 ? " frame old" : " frames old");
   if (fit.fellBack) std::snprintf(b, sizeof b, "nothing on screen: the practical splits");
   else
     std::snprintf(b, sizeof b, "%.3g - %.3g m, %d of %d tiles%s", fit.range.nearest, fit.range.farthest,
-                  fit.range.tiles, int(history_.back().depths.size()), old.c_str());
+                  fit.range.tiles, int(history_.back().tiles.depths.size()), old.c_str());
   stats_.extra.push_back({n + "depth range", b});
   return fit.set;
 }

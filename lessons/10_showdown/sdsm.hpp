@@ -67,7 +67,11 @@ class SampleDistributionShadowMaps : public CascadedShadowMaps {
  private:
   SdsmParams s_;
   DepthTileReduction reduction_;
-  std::deque<shadow::DepthTiles> history_;  // newest first: [latency] is the one fitted to
+  struct FrameTiles {
+    int frame = 0;  // FrameInfo::index
+    shadow::DepthTiles tiles;
+  };
+  std::deque<FrameTiles> history_;  // newest first: [latency] is the one fitted to
 };
 
 }  // namespace shadowlab::tech
