@@ -86,7 +86,7 @@ void AbSplit::draw(const FrameInfo& frame, ParamRegistry& params, const PresetFi
   whatA_ = differences(a, bValues);
   whatB_ = differences(bValues, a);
   if (measured) measurementB_.mirror(*measured);
-  b.framebuffer = measurementB_.begin(target_.fbo.id(), frame.width, frame.height, b.projection * b.view);
+  b.framebuffer = measurementB_.begin(target_.fbo.id(), b);
   b.measureLight = measurementB_.measuredLight();
   glBindFramebuffer(GL_FRAMEBUFFER, b.framebuffer);
   glViewport(0, 0, frame.width, frame.height);

@@ -200,7 +200,7 @@ class Runner {
     bannerPrinted_ = bannerPrinted_ || !banner_.empty();
   }
 
-  // Recorded camera and light paths (--replay FILE[@T]) and the --bench CSV.
+  // Recorded camera and light paths (--replay FILE[@T|@T0..T1]) and the --bench CSV.
   Exit openOutputs() {
     if (!cl_.replay.empty()) {
       measure::ReplaySpec spec;
@@ -210,7 +210,7 @@ class Runner {
         std::cerr << info_.name << ": --replay " << cl_.replay << ": " << e.what() << '\n';
         return 2;
       }
-      replayAt_ = spec.holdAt;
+      replaySpan_ = spec;
       try {  // a missing or malformed path file: exit 1, naming file:line
         replay_ = measure::CameraLightPath::load(spec.file);
         if (replay_.empty()) throw std::runtime_error(spec.file + ": the path has no keys");
@@ -353,9 +353,7 @@ class Runner {
     }
     if (!replay_.empty()) {
       const double t0 = replay_.keys().front().time;
-      const double t = replayAt_ >= 0   ? t0 + replayAt_
-                       : cl_.frames > 1 ? t0 + replay_.duration() * double(frame) / double(cl_.frames - 1)
-                                        : t0 + time_;
+      const double t = t0 + replaySpan_.timeAt(replay_.duration(), frame, cl_.frames, time_);
       const measure::PathKey key = replay_.sample(t);
       lesson_.camera.lookFrom(key.cameraPosition, key.cameraTarget);
       lesson_.applyPathLight(key.lightPosition, key.lightDirection);
@@ -407,7 +405,7 @@ class Runner {
 
   void drawLessonAndViews(FrameInfo& fi, unsigned frameFbo) {
     lesson_.update(fi);
-    fi.framebuffer = measurement_.begin(frameFbo, fi.width, fi.height, fi.projection * fi.view);
+    fi.framebuffer = measurement_.begin(frameFbo, fi);
     fi.measureLight = measurement_.measuredLight();
     glBindFramebuffer(GL_FRAMEBUFFER, fi.framebuffer);
     glViewport(0, 0, fi.width, fi.height);
@@ -417,7 +415,8 @@ class Runner {
     const bool viewChanged = view != lastView_ || params_.revision() != lastRevision_;
     lastView_ = view;
     lastRevision_ = params_.revision();
-    measurement_.end(lesson_.measureSource(), frameFbo, viewChanged);
+    measurement_.end(lesson_.measureSource(), frameFbo, viewChanged,
+                     [&](const FrameInfo& f) { return lesson_.redrawLit(f); });
     fi.framebuffer = frameFbo;
     if (ab_.enabled()) {
       ab_.draw(fi, params_, presets_, lesson_, info_.measurable ? &measurement_ : nullptr,
@@ -573,7 +572,7 @@ class Runner {
   KeyScript keys_;  // --keys
   BenchLog bench_;
   measure::CameraLightPath recording_, replay_;
-  double replayAt_ = -1;
+  measure::ReplaySpec replaySpan_;
   bool uiVisible_ = false, helpOpen_ = false, statsOpen_ = false, panelOpen_ = false, bannerPrinted_ = false,
        rerunExercises_ = false;
   OrbitCamera homeCamera_;  // the pose after the preset and --set: Home returns to it

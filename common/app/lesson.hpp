@@ -17,6 +17,7 @@
 #include "core/camera.hpp"
 #include "app/debug_draw.hpp"
 #include "app/exercises.hpp"
+#include "app/frame_info.hpp"
 #include "app/measurement.hpp"
 #include "core/params.hpp"
 #include "gl/timer.hpp"
@@ -36,21 +37,6 @@ struct LessonInfo {
   // The counters the compact header shows (by name, those present this frame); every counter is in
   // the stats (F2). The ground truth's figures (misclassified, aliasing m, soft error) come with M.
   std::vector<std::string> keyFigures;
-};
-
-struct FrameInfo {
-  int index = 0;
-  double time = 0, dt = 0;  // seconds; headless runs use a fixed dt so frames are reproducible
-  int width = 0, height = 0;
-  float renderScale = 1.0f;  // width and height over the window's: below 1 while the frame budget scales
-  unsigned framebuffer = 0;  // draw here (not necessarily 0)
-  int measureLight = -1;     // pass to the scene shader's uMeasureLight (shaders/common/measure.glsl)
-  // The camera to DRAW with: the lesson's camera, or the god view's camera outside the scene.
-  // Shadow techniques fit themselves to `Lesson::camera` (the viewer), never to these, so the god
-  // view shows the very shadows the viewer sees.
-  glm::mat4 view{1.0f}, projection{1.0f};
-  glm::vec3 eye{0.0f};
-  bool godView = false;
 };
 
 // A corner of the frame a lesson (or the framework's god view) draws a view into, in GL pixels
@@ -81,6 +67,11 @@ class Lesson {
   virtual MeasureSource measureSource() { return {}; }
   // Replaying a recorded camera and light path (--replay): move the lesson's primary light.
   virtual void applyPathLight(const glm::vec3& position, const glm::vec3& direction) {}
+  // After render(): the lit scene once more from frame's camera (view, projection, eye) into
+  // frame.framebuffer, this frame's shadows as they are (no map redrawn, nothing refitted). The
+  // shimmer figures evaluate a frame's shadows at the previous frame's very points this way when
+  // the camera moved. False: the lesson cannot (the figures then follow points by reprojection).
+  virtual bool redrawLit(const FrameInfo& frame) { return false; }
 
   // Set up by the framework before init(); lessons use them freely.
   OrbitCamera camera;

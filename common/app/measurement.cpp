@@ -124,8 +124,10 @@ void Measurement::ensureTarget(int w, int h) {
 // frame is drawn as it is, without the surfaces the ground truth would read back.
 constexpr const char* kNoTruthInBrowser = "ground truth: run the lesson natively (make run)";
 
-unsigned Measurement::begin(unsigned frameFbo, int w, int h, const glm::mat4& viewProj) {
-  viewProj_ = viewProj;
+unsigned Measurement::begin(unsigned frameFbo, const FrameInfo& frame) {
+  frameInfo_ = frame;
+  viewProj_ = frame.projection * frame.view;
+  const int w = frame.width, h = frame.height;
   if (active() && gl::caps().gles) result_ = {}, result_.unmeasurable = kNoTruthInBrowser;
   if (!active() || gl::caps().gles) return frameFbo;
   if (!overlayProgram_.valid()) overlayProgram_.build();
@@ -140,7 +142,7 @@ unsigned Measurement::begin(unsigned frameFbo, int w, int h, const glm::mat4& vi
   return fbo_.id();
 }
 
-void Measurement::end(const MeasureSource& source, unsigned frameFbo, bool viewChanged) {
+void Measurement::end(const MeasureSource& source, unsigned frameFbo, bool viewChanged, const Redraw& redraw) {
   if (!active() || gl::caps().gles) return;
   // The lesson's picture goes where the frame belongs.
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
@@ -151,36 +153,12 @@ void Measurement::end(const MeasureSource& source, unsigned frameFbo, bool viewC
   ++frame_;
   if (viewChanged && live_) dirty_ = true;
   if (dirty_ || forceFull_) {
-    compute(source);
+    compute(source, redraw);
     dirty_ = false;
     forceFull_ = false;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, frameFbo);
   if (overlay_ != Overlay::None && overlay_ != Overlay::Figures) drawOverlay(frameFbo);
-}
-
-// Shimmer: against the frame measured just before this one, when it was the previous frame, of the
-// same light, at the same resolution (a still view is not re-measured: nothing moved).
-void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& reference, const ImageF& position) {
-  result_.hasTemporal = lastMeasured_ + 1 == frame_ && lastLight_ == light_ &&
-                        lastTechnique_.width == technique.width && lastTechnique_.height == technique.height &&
-                        !lastTechnique_.data.empty();
-  result_.reprojected = result_.hasTemporal && viewProj_ != lastViewProj_;
-  if (result_.reprojected) {
-    const measure::ReprojectedTemporalErrors r =
-        measure::compareFramesReprojected({&lastTechnique_, &lastReference_, &lastPosition_, lastViewProj_},
-                                          {&technique, &reference, &position, viewProj_});
-    result_.temporal = r.errors;
-    result_.unmatched = r.unmatched;
-  } else if (result_.hasTemporal) {
-    result_.temporal = measure::compareFrames(lastTechnique_, technique, lastReference_, reference);
-  }
-  lastTechnique_ = technique;
-  lastReference_ = reference;
-  lastPosition_ = position;
-  lastViewProj_ = viewProj_;
-  lastMeasured_ = frame_;
-  lastLight_ = light_;
 }
 
 namespace {
@@ -266,7 +244,67 @@ void Measurement::measureAliasing(ImageF jacobian, const std::vector<std::uint8_
   }
 }
 
-void Measurement::compute(const MeasureSource& source) {
+// Shimmer: against the frame measured just before this one, when it was the previous frame, of the
+// same light, at the same resolution (a still view is not re-measured: nothing moved). When the
+// camera moved, this frame's shadows drawn again from the previous camera put them at the previous
+// frame's very points (and the reference there, traced again if the light moved too); a lesson that
+// cannot redraw is compared point by point through reprojection.
+void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& reference, const ImageF& position,
+                                       const measure::SurfaceBuffer& surface, const Light& light,
+                                       const Redraw& redraw) {
+  result_.hasTemporal = lastMeasured_ + 1 == frame_ && lastLight_ == light_ &&
+                        lastTechnique_.width == technique.width && lastTechnique_.height == technique.height &&
+                        !lastTechnique_.data.empty();
+  const bool moved = result_.hasTemporal && viewProj_ != lastViewProj_;
+  const std::optional<ImageF> again = moved ? techniqueFromLastCamera(redraw) : std::nullopt;
+  if (again) {
+    const bool lightMoved = light.position != lastLightState_.position || light.direction != lastLightState_.direction;
+    const ImageF referenceAgain = !lightMoved ? lastReference_
+                                  : result_.soft
+                                      ? truth_->softVisibility(lastSurface_, light, samples_, std::uint64_t(seed_))
+                                      : truth_->hardVisibility(lastSurface_, light);
+    result_.redrawn = true;
+    result_.temporal = measure::compareFrames(lastTechnique_, *again, lastReference_, referenceAgain);
+  } else if (moved) {
+    result_.reprojected = true;
+    const measure::ReprojectedTemporalErrors r =
+        measure::compareFramesReprojected({&lastTechnique_, &lastReference_, &lastPosition_, lastViewProj_},
+                                          {&technique, &reference, &position, viewProj_});
+    result_.temporal = r.errors;
+    result_.unmatched = r.unmatched;
+  } else if (result_.hasTemporal) {
+    result_.temporal = measure::compareFrames(lastTechnique_, technique, lastReference_, reference);
+  }
+  lastTechnique_ = technique;
+  lastReference_ = reference;
+  lastPosition_ = position;
+  lastSurface_ = surface;
+  lastLightState_ = light;
+  lastViewProj_ = viewProj_;
+  lastFrame_ = frameInfo_;
+  lastMeasured_ = frame_;
+  lastLight_ = light_;
+}
+
+// This frame's shadows drawn from the last measured frame's camera into the measurement target,
+// their V read back at the same resolution; nothing when the lesson cannot.
+std::optional<ImageF> Measurement::techniqueFromLastCamera(const Redraw& redraw) {
+  if (!redraw || lastFrame_.width != width_ || lastFrame_.height != height_) return std::nullopt;
+  FrameInfo again = frameInfo_;
+  again.view = lastFrame_.view;
+  again.projection = lastFrame_.projection;
+  again.eye = lastFrame_.eye;
+  again.framebuffer = fbo_.id();
+  again.measureLight = light_;
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  const float zero[4] = {0, 0, 0, 0};
+  for (int a = 1; a <= 3; ++a) glClearBufferfv(GL_COLOR, a, zero);
+  if (!redraw(again)) return std::nullopt;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+  return techniqueVisibility(subsample(readFloat(GL_COLOR_ATTACHMENT2, GL_RGBA, 4, width_, height_), factor_));
+}
+
+void Measurement::compute(const MeasureSource& source, const Redraw& redraw) {
   result_ = {};
   if (!source.scene || source.lights.empty() || !source.unmeasurable.empty()) {
     result_.unmeasurable = source.unmeasurable;
@@ -277,7 +315,8 @@ void Measurement::compute(const MeasureSource& source) {
     throw std::runtime_error("measure.light = " + std::to_string(light_) + ", but the lesson has " +
                              std::to_string(source.lights.size()) + " light(s): valid 0.." +
                              std::to_string(source.lights.size() - 1));
-  const Readback shaded = readBack(forceFull_ ? 1 : scale_);
+  factor_ = forceFull_ ? 1 : scale_;
+  const Readback shaded = readBack(factor_);
   ensureTruth(source);
 
   // 3. rays from the very points that were shaded
@@ -312,7 +351,7 @@ void Measurement::compute(const MeasureSource& source) {
     result_.band = measure::compareHard(technique, reference, band);
     if (result_.hasAliasing) result_.bandAliasing = measure::aliasingStats(measure::keepWhere(shaded.jacobian, band));
   }
-  compareWithLastFrame(technique, reference, shaded.position);
+  compareWithLastFrame(technique, reference, shaded.position, surface, light, redraw);
   result_.referenceImage = referenceImage(reference);
   result_.valid = true;
   uploadOverlay();
@@ -422,7 +461,10 @@ std::vector<std::pair<std::string, std::string>> Measurement::summary() const {
                     t.referenceMeanChange);
     else
       std::snprintf(buf, sizeof buf, "%.2f%% of px flip, the reference not (it flips %.2f%%)%s", t.extraFlipPct,
-                    t.referenceFlipPct, result_.reprojected ? ", world points followed" : "");
+                    t.referenceFlipPct,
+                    result_.redrawn       ? ", at the last frame's points"
+                    : result_.reprojected ? ", world points followed"
+                                          : "");
     out.push_back({"shimmer", buf});
   }
   std::snprintf(buf, sizeof buf, "%dx%d: rays %.0f ms, read-back %.0f ms%s", result_.width, result_.height,

@@ -11,12 +11,14 @@
 // Interactive by construction: recomputed only when the view or a parameter changed, at a reduced
 // resolution (measure.scale), with its cost in the header.
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "app/frame_info.hpp"
 #include "gl/attachments.hpp"
 #include "core/image.hpp"
 #include "core/light.hpp"
@@ -24,6 +26,7 @@
 #include "core/scene.hpp"
 #include "gl/objects.hpp"
 #include "gl/program.hpp"
+#include "measure/ground_truth.hpp"
 #include "measure/metrics.hpp"
 
 namespace shadowlab {
@@ -38,10 +41,6 @@ struct Legend {
   std::string title;
   std::vector<Entry> entries;
 };
-
-namespace measure {
-class GroundTruth;
-}
 
 // Draws what is not a measured surface (overlays, lines, translucent volumes) into a measured frame
 // without touching the measurement attachments 1-3, so the surfaces under it stay measured: the
@@ -80,10 +79,13 @@ struct MeasureResult {
   measure::HardShadowErrors band;
   measure::AliasingStats bandAliasing;
   // Shimmer: this frame against the one measured just before it (consecutive frames only). When
-  // the camera moved, each pixel against the previous frame's sample of the same world point
-  // (reprojected; `unmatched`: pixels whose point that frame did not see).
+  // the camera moved, this frame's shadows drawn again from the previous camera (`redrawn`: at the
+  // previous frame's very points), or where the lesson cannot, each pixel against the previous
+  // frame's sample of the same world point (`reprojected`; `unmatched`: pixels whose point that
+  // frame did not see).
   bool hasTemporal = false;
   measure::TemporalErrors temporal;
+  bool redrawn = false;
   bool reprojected = false;
   std::size_t unmatched = 0;
   std::size_t nonFiniteVisibility = 0;  // covered pixels whose V is NaN or infinite (a broken matrix)
@@ -116,11 +118,14 @@ class Measurement {
   void requestFullResolution() { forceFull_ = true; }
 
   // Before the lesson renders: the framebuffer it should draw into (the measurement target when
-  // active, else `frameFbo`). `viewProj`: the camera it draws with (the shimmer figures follow
-  // world points from frame to frame when it moves).
-  unsigned begin(unsigned frameFbo, int width, int height, const glm::mat4& viewProj = glm::mat4(1.0f));
+  // active, else `frameFbo`). `frame`: its size and the camera it draws with (the shimmer figures
+  // compare the same world points from frame to frame when it moves).
+  unsigned begin(unsigned frameFbo, const FrameInfo& frame);
   // After it rendered: copies the colour into `frameFbo`, measures if needed, draws the overlay.
-  void end(const MeasureSource& source, unsigned frameFbo, bool viewChanged);
+  // `redraw` (Lesson::redrawLit): this frame's shadows drawn again from another camera, so that the
+  // shimmer figures compare the previous frame's very points when the camera moved.
+  using Redraw = std::function<bool(const FrameInfo& frame)>;
+  void end(const MeasureSource& source, unsigned frameFbo, bool viewChanged, const Redraw& redraw = {});
 
   const MeasureResult& result() const { return result_; }
   // One-line figures for the header.
@@ -133,14 +138,15 @@ class Measurement {
   struct Readback {
     ImageF position, normal, jacobian;
   };
-  void compute(const MeasureSource& source);
+  void compute(const MeasureSource& source, const Redraw& redraw);
+  void compareWithLastFrame(const ImageF& technique, const ImageF& reference, const ImageF& position,
+                            const measure::SurfaceBuffer& surface, const Light& light, const Redraw& redraw);
+  std::optional<ImageF> techniqueFromLastCamera(const Redraw& redraw);
   Readback readBack(int factor);
   void ensureTruth(const MeasureSource& source);
   void measureAliasing(ImageF jacobian, const std::vector<std::uint8_t>& covered);
   void uploadOverlay();
   void drawOverlay(unsigned frameFbo);
-
-  void compareWithLastFrame(const ImageF& technique, const ImageF& reference, const ImageF& position);
 
   enum class Overlay { None, Error, Aliasing, Reference, Figures };
   Overlay overlay_ = Overlay::None;
@@ -168,6 +174,10 @@ class Measurement {
   std::uint64_t frame_ = 0, lastMeasured_ = 0;
   int lastLight_ = -1;
   ImageF lastTechnique_, lastReference_, lastPosition_;
+  measure::SurfaceBuffer lastSurface_;
+  Light lastLightState_;
+  int factor_ = 1;                   // the last measurement's subsampling
+  FrameInfo frameInfo_, lastFrame_;  // this frame's and the last measured frame's (size, camera)
   glm::mat4 viewProj_{1.0f}, lastViewProj_{1.0f};
 };
 

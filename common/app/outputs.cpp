@@ -80,6 +80,7 @@ nlohmann::ordered_json figures(const MeasureResult& r) {
                      {"mean_change", t.meanChange},
                      {"reference_mean_change", t.referenceMeanChange},
                      {"extra_change", t.extraChange},
+                     {"redrawn", r.redrawn},
                      {"reprojected", r.reprojected},
                      {"unmatched", r.unmatched}};
   }

@@ -223,12 +223,30 @@ CameraLightPath CameraLightPath::load(const std::string& path) {
 ReplaySpec parseReplaySpec(const std::string& value) {
   std::error_code ec;
   const auto at = value.rfind('@');
-  if (at == std::string::npos || std::filesystem::exists(value, ec)) return {value, -1.0};
+  if (at == std::string::npos || std::filesystem::exists(value, ec)) return {value};
   const std::string time = value.substr(at + 1);
-  double t = 0.0;
-  if (!parseFinite(time, t) || t < 0.0)
-    throw std::invalid_argument("'" + time + "' after '@' is not a time >= 0 in seconds (FILE@T holds the path at T)");
-  return {value.substr(0, at), t};
+  const auto dots = time.find("..");
+  ReplaySpec spec{value.substr(0, at)};
+  if (dots == std::string::npos) {
+    if (!parseFinite(time, spec.holdAt) || spec.holdAt < 0.0)
+      throw std::invalid_argument("'" + time +
+                                  "' after '@' is not a time >= 0 in seconds (FILE@T holds the path at T, "
+                                  "FILE@T0..T1 plays it from T0 to T1)");
+    return spec;
+  }
+  const std::string a = time.substr(0, dots), b = time.substr(dots + 2);
+  if (!parseFinite(a, spec.from) || !parseFinite(b, spec.to) || spec.from < 0.0 || !(spec.to > spec.from))
+    throw std::invalid_argument("'" + time +
+                                "' after '@' is not a span T0..T1 of times in seconds with 0 <= T0 < T1 "
+                                "(FILE@T0..T1 plays the path from T0 to T1 over the frames)");
+  return spec;
+}
+
+double ReplaySpec::timeAt(double duration, int frame, int frames, double clock) const {
+  if (holdAt >= 0.0) return holdAt;
+  const double start = from >= 0.0 ? from : 0.0, end = from >= 0.0 ? to : duration;
+  if (frames > 1) return start + (end - start) * double(frame) / double(frames - 1);
+  return from >= 0.0 ? std::min(start + clock, end) : clock;
 }
 
 }  // namespace shadowlab::measure

@@ -56,12 +56,19 @@ class CameraLightPath {
   std::vector<PathKey> keys_;
 };
 
-// --replay FILE[@T]: the file, and the time to hold (-1: play the whole path). A value naming an
-// existing file is that file, '@' and all; else "@T" after the last '@' is the time, a finite
-// number >= 0. Throws std::invalid_argument "'T' after '@' is not a time >= 0 in seconds".
+// --replay FILE[@T | @T0..T1]: the file, and which part of the path the frames show. A value naming
+// an existing file is that file, '@' and all; else after the last '@' "T" holds the path at time T,
+// "T0..T1" plays it from T0 to T1 (finite numbers >= 0, T1 > T0; e.g. a slow drift of a few
+// frames for shimmer). Throws std::invalid_argument naming the text and the forms it accepts.
 struct ReplaySpec {
   std::string file;
-  double holdAt = -1.0;
+  double holdAt = -1.0;  // >= 0: hold there
+  double from = -1.0;    // >= 0 (with `to`): play this span instead of the whole path
+  double to = -1.0;
+  // The path time of `frame` (of `frames`, <= 0 for a window that runs until closed; `clock`: the
+  // seconds since it started), relative to the path's first key: the whole path or the span spread
+  // over the frames, in real time in a window (a span then stops at its end).
+  double timeAt(double duration, int frame, int frames, double clock) const;
 };
 ReplaySpec parseReplaySpec(const std::string& value);
 

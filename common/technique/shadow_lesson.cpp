@@ -21,14 +21,33 @@ void ShadowLesson::shadowPasses(const ShadowContext& c, ShadowTechnique& techniq
 }
 
 void ShadowLesson::drawLit(const ShadowContext& c, ShadowTechnique& technique, const LitSettings& lit) {
+  if (!c.frame.godView) {
+    litTechnique_ = &technique;
+    litSettings_ = lit;
+  }
   if (technique.ownsLitPass()) {
     technique.renderLit(c, lit);
     return;
   }
   auto t = scope("scene");
+  clearAndDrawLit(c, technique, lit);
+}
+
+void ShadowLesson::clearAndDrawLit(const ShadowContext& c, ShadowTechnique& technique, const LitSettings& lit) {
   glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   lit_.draw(c, technique, lit);
+}
+
+// Untimed: the frame's own passes are its cost; this one only measures it.
+bool ShadowLesson::redrawLit(const FrameInfo& frame) {
+  if (!litTechnique_) return false;
+  const ShadowContext c = context(frame);
+  glBindFramebuffer(GL_FRAMEBUFFER, frame.framebuffer);
+  glViewport(0, 0, frame.width, frame.height);
+  if (litTechnique_->ownsLitPass()) litTechnique_->renderLit(c, litSettings_);
+  else clearAndDrawLit(c, *litTechnique_, litSettings_);
+  return true;
 }
 
 }  // namespace shadowlab::tech

@@ -26,6 +26,8 @@ class ShadowLesson : public Lesson {
     return {&scene_.scene(), scene_.revision(), {l.begin(), l.end()}};
   }
   void applyPathLight(const glm::vec3& position, const glm::vec3& direction) override;
+  // The last drawLit() of the viewer's frame again, from frame's camera (the shimmer figures).
+  bool redrawLit(const FrameInfo& frame) override;
 
  protected:
   // The lesson's lights, in order: light i is uLights[i] in GLSL and light<i>.* in the registry.
@@ -46,7 +48,10 @@ class ShadowLesson : public Lesson {
   LitPass lit_;
 
  private:
+  void clearAndDrawLit(const ShadowContext& c, ShadowTechnique& technique, const LitSettings& lit);
   bool pathMovesLight_;
+  ShadowTechnique* litTechnique_ = nullptr;  // the viewer's frame's last drawLit(), for redrawLit()
+  LitSettings litSettings_;
 };
 
 }  // namespace shadowlab::tech

@@ -19,6 +19,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const measure::ReplaySpec spec = measure::parseReplaySpec(input.substr(0, input.find('\n')));
     FUZZ_CHECK(spec.holdAt == -1.0 || (spec.holdAt >= 0.0 && std::isfinite(spec.holdAt)));
+    FUZZ_CHECK(spec.from == -1.0 || (spec.from >= 0.0 && spec.to > spec.from && std::isfinite(spec.to)));
+    FUZZ_CHECK(std::isfinite(spec.timeAt(2.0, 3, 7, 0.5)));
   } catch (const std::invalid_argument&) {}
   std::istringstream in(input);
   try {

@@ -56,7 +56,10 @@ TEST_CASE("measure (GPU): m from shader derivatives matches a texel mapping know
     sun.direction = {0, -1, 0};
 
     const unsigned frame = ctx->framebuffer();
-    const unsigned target = measurement.begin(frame, ctx->width(), ctx->height());
+    FrameInfo info;
+    info.width = ctx->width();
+    info.height = ctx->height();
+    const unsigned target = measurement.begin(frame, info);
     CHECK(target != frame);  // measuring renders into the framework's attachments
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, ctx->width(), ctx->height());

@@ -73,7 +73,7 @@ TEST_CASE("cli: --panel names the panel's parameters (a lesson inside a slide) a
 TEST_CASE("cli: an empty value is an error, never a silently dropped output") {
   CHECK(errorOf({"--screenshot="}) == "--screenshot needs a value, got an empty one: --screenshot FILE");
   CHECK(errorOf({"--measure="}) == "--measure needs a value, got an empty one: --measure FILE");
-  CHECK(errorOf({"--replay="}) == "--replay needs a value, got an empty one: --replay FILE[@T]");
+  CHECK(errorOf({"--replay="}) == "--replay needs a value, got an empty one: --replay FILE[@T|@T0..T1]");
   CHECK(errorOf({"--preset="}) == "--preset needs a value, got an empty one: --preset NAME");
   CHECK(errorOf({"--bench", ""}) == "--bench needs a value, got an empty one: --bench FILE");
   CHECK(errorOf({"--record="}) == "--record needs a value, got an empty one: --record FILE");

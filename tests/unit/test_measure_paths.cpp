@@ -162,7 +162,7 @@ TEST_CASE("measure.paths: huge and tiny light directions normalise (in float, 1e
   CHECK_THROWS_WITH_AS(path.add(k), doctest::Contains("is at its target"), std::invalid_argument);
 }
 
-TEST_CASE("measure.paths: --replay FILE@T: the time after the last '@', a file with '@' in its name stays whole") {
+TEST_CASE("measure.paths: --replay FILE@T and FILE@T0..T1: the time after the last '@', a file with '@' stays whole") {
   CHECK(parseReplaySpec("walk.path").file == "walk.path");
   CHECK(parseReplaySpec("walk.path").holdAt == -1.0);
   const ReplaySpec held = parseReplaySpec("runs@2/walk.path@1.5");
@@ -173,6 +173,23 @@ TEST_CASE("measure.paths: --replay FILE@T: the time after the last '@', a file w
     INFO(bad);
     CHECK_THROWS_WITH_AS(parseReplaySpec(bad), doctest::Contains("after '@' is not a time >= 0"),
                          std::invalid_argument);
+  }
+  // A span: the frames play from T0 to T1; a window plays it in real time and stops at T1.
+  const ReplaySpec span = parseReplaySpec("walk.path@0.5..0.75");
+  CHECK(span.file == "walk.path");
+  CHECK(span.holdAt == -1.0);
+  CHECK(span.timeAt(2.0, 0, 3, 0.0) == 0.5);
+  CHECK(span.timeAt(2.0, 1, 3, 0.0) == doctest::Approx(0.625));
+  CHECK(span.timeAt(2.0, 2, 3, 0.0) == 0.75);
+  CHECK(span.timeAt(2.0, 0, 0, 0.1) == doctest::Approx(0.6));
+  CHECK(span.timeAt(2.0, 0, 0, 9.0) == 0.75);
+  CHECK(parseReplaySpec("walk.path").timeAt(2.0, 4, 5, 0.0) == 2.0);  // the whole path over the frames
+  CHECK(parseReplaySpec("walk.path").timeAt(2.0, 0, 0, 1.5) == 1.5);
+  CHECK(held.timeAt(2.0, 4, 5, 3.0) == 1.5);
+  for (const char* bad : {"walk.path@1..0.5", "walk.path@1..1", "walk.path@-1..2", "walk.path@0..inf", "walk.path@..2",
+                          "walk.path@0..", "walk.path@0..1..2"}) {
+    INFO(bad);
+    CHECK_THROWS_WITH_AS(parseReplaySpec(bad), doctest::Contains("is not a span T0..T1"), std::invalid_argument);
   }
   // An existing file whose name has an '@' (and what follows is no time) is that file.
   const auto dir = std::filesystem::temp_directory_path() / "shadowlab_replay@take2";
