@@ -217,6 +217,21 @@ function(shadowlab_tool_cli_checks)
       cli_check(${tool}.flag $<TARGET_FILE:${tool}> 2 "" "${error}" --bogus)
     endif()
   endforeach()
+  # shadowlab_bench --shimmer: a span of a path that exists, under a plain name
+  if(TARGET shadowlab_bench AND TARGET lesson_01_lighting)
+    set(walk ${CMAKE_SOURCE_DIR}/bench/paths/walk.path)
+    set(bench $<TARGET_FILE:shadowlab_bench>)
+    set(l01 $<TARGET_FILE:lesson_01_lighting> --out ${CMAKE_CURRENT_BINARY_DIR}/cli/shimmer_out)
+    cli_check(shadowlab_bench.shimmer_held ${bench} 2 "" "--shimmer camera=.*walk.path@0.5: needs a span @T0..T1" ${l01}
+              --shimmer camera=${walk}@0.5)
+    cli_check(shadowlab_bench.shimmer_name ${bench} 2 "" "--shimmer '.*' is not NAME=FILE@T0..T1" ${l01}
+              --shimmer Camera=${walk}@0..1)
+    cli_check(shadowlab_bench.shimmer_file ${bench} 2 "" "--shimmer cam=nowhere.path@0..1: nowhere.path: cannot open" ${l01}
+              --shimmer cam=nowhere.path@0..1)
+    cli_check(shadowlab_bench.shimmer_span ${bench} 2 "" "is not a span T0..T1 of times" ${l01} --shimmer cam=${walk}@1..0.5)
+    cli_check(shadowlab_bench.shimmer_frames ${bench} 2 "" "--shimmer-frames: '1' is not a whole number >= 2" ${l01}
+              --shimmer-frames 1)
+  endif()
 endfunction()
 cmake_language(DEFER CALL shadowlab_tool_cli_checks)
 if(NOT SHADOWLAB_UNIT_ONLY AND EXISTS ${CMAKE_SOURCE_DIR}/bench/CMakeLists.txt)  # added after tests/

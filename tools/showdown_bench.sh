@@ -81,7 +81,19 @@ configs+=(--config "csm+warp 2048: technique=csm csm.warp=true texels=2048 trian
 # Sample distribution shadow maps with the same warp inside each cascade (sdsm 2048 is among the
 # map techniques above): the summary's SDSM table sets them against the practical cascades.
 configs+=(--config "sdsm+warp 2048: technique=sdsm sdsm.warp=true texels=2048 triangles=$triangles sdsm.reuse_maps=false")
+# Texel snapping off (the fitted frusta follow the camera by fractions of a texel): the stability
+# table sets each against its snapped self.
+for t in uniform csm sdsm; do
+  configs+=(--config "$t/nosnap 2048: technique=$t texels=2048 triangles=$triangles $t.reuse_maps=false $t.snap=false")
+done
 if ((quick)); then configs+=(--config "lispsm 4096: technique=lispsm texels=4096 triangles=$triangles lispsm.reuse_maps=false"); fi
+
+# Shimmer (every configuration of the city, terrain and forest runs): 8 consecutive frame pairs of
+# lesson 09's view of the city with the camera sliding 3 cm a frame, and with the sun turning 0.1
+# degree a frame (bench/paths/city_drift.path, sun_turn.path: 1/60 s a frame), each frame measured
+# against the one before; the soft run drifts along its own path (about 1.2 cm a frame).
+shimmer=(--shimmer "camera=$root/bench/paths/city_drift.path@0..0.1333"
+  --shimmer "sun=$root/bench/paths/sun_turn.path@0..0.1333" --shimmer-frames 9)
 
 run() {  # run NAME SCENE PATH SAMPLES [EXTRA CONFIG ARGS...]
   local name=$1 scene=$2 path=$3 n=$4
@@ -91,11 +103,11 @@ run() {  # run NAME SCENE PATH SAMPLES [EXTRA CONFIG ARGS...]
   "$bench" "$lesson" --out "$out/$name" --scenes "$scene" --path "$root/bench/paths/$path" --path-samples "$n" \
     --repeat "$repeats" --frames 2 --size "$size" --title "Lesson 10: $name, equal texels" "$@"
 }
-run city city psm_city_orbit.path "$samples" "${configs[@]}"
-run terrain terrain psm_terrain_orbit.path "$samples" "${configs[@]}"
+run city city psm_city_orbit.path "$samples" "${configs[@]}" "${shimmer[@]}"
+run terrain terrain psm_terrain_orbit.path "$samples" "${configs[@]}" "${shimmer[@]}"
 run sweep city psm_light_sweep.path "$sweep" "${configs[@]}"
 if ((!quick)); then
-  run forest forest soft_forest.path "$samples" "${configs[@]}"
+  run forest forest soft_forest.path "$samples" "${configs[@]}" "${shimmer[@]}"
   big=()
   for c in "${configs[@]}"; do big+=("${c/triangles=$triangles/triangles=1000000}"); done
   run city_1m city psm_city_orbit.path 2 "${big[@]}"
@@ -122,6 +134,7 @@ if ((!quick)); then
     --config "evsm2 blur 2: technique=evsm2 $soft_sets" --config "evsm4 blur 2: technique=evsm4 $soft_sets"
     --config "msm 16 blur 2: technique=msm $soft_sets")
 fi
-run soft showcase soft_showcase.path "$((quick ? 2 : 3))" "${soft[@]}"
+run soft showcase soft_showcase.path "$((quick ? 2 : 3))" "${soft[@]}" \
+  --shimmer "camera=$root/bench/paths/soft_showcase.path@0.25..0.26" --shimmer-frames 9
 python3 "$root/tools/showdown_summary.py" "$out" "$size" "$repeats"
 echo "showdown_bench: $out/index.html, $out/summary.md" >&2

@@ -78,6 +78,25 @@ std::vector<std::string> passNames(const std::vector<ReportRow>& rows) {
   return {names.begin(), names.end()};
 }
 
+// Shimmer: one group of columns per measured span, in the order of the spans' names.
+void shimmerColumns(const std::vector<ReportRow>& rows, std::vector<Column>& c) {
+  std::set<std::string> spans;
+  for (const ReportRow& r : rows)
+    for (const auto& [name, figures] : r.shimmer) spans.insert(name);
+  for (const std::string& span : spans) {
+    auto shimmer = [&](const std::string& name, std::function<double(const ShimmerFigures&)> f) {
+      c.push_back({name + ":" + span, true, [=](const ReportRow& r) {
+                     const auto it = r.shimmer.find(span);
+                     return it == r.shimmer.end() ? std::string() : formatNumber(f(it->second));
+                   }});
+    };
+    shimmer("shimmer_pct", [](const ShimmerFigures& s) { return s.extraFlipPct; });
+    shimmer("shimmer_max_pct", [](const ShimmerFigures& s) { return s.maxExtraFlipPct; });
+    shimmer("shimmer_reference_pct", [](const ShimmerFigures& s) { return s.referenceFlipPct; });
+    shimmer("shimmer_change", [](const ShimmerFigures& s) { return s.extraChange; });
+  }
+}
+
 std::vector<Column> columns(const std::vector<ReportRow>& rows) {
   auto num = [](double v) { return formatNumber(v); };
   auto count = [](std::uint64_t v) { return std::to_string(v); };
@@ -138,6 +157,7 @@ std::vector<Column> columns(const std::vector<ReportRow>& rows) {
     band("edge_m_mean", [=](const ReportRow& r) { return r.hasAliasing ? num(r.bandAliasing.mean) : std::string(); });
     band("edge_m_p95", [=](const ReportRow& r) { return r.hasAliasing ? num(r.bandAliasing.p95) : std::string(); });
   }
+  shimmerColumns(rows, c);
   c.push_back({"image", false, [](const ReportRow& r) { return r.imageThumbnail; }});
   c.push_back({"error_image", false, [](const ReportRow& r) { return r.errorThumbnail; }});
   return c;
@@ -405,6 +425,15 @@ std::string toJson(const std::vector<ReportRow>& rows, const std::string& title)
                        {"misclassifiedPct", finite(r.band.misclassifiedPct)},
                        {"mMean", finite(r.bandAliasing.mean)},
                        {"mP95", finite(r.bandAliasing.p95)}};
+    for (const auto& [span, f] : r.shimmer)
+      j["shimmer"][span] = {{"frames", f.frames},
+                            {"extraFlipPct", finite(f.extraFlipPct)},
+                            {"maxExtraFlipPct", finite(f.maxExtraFlipPct)},
+                            {"referenceFlipPct", finite(f.referenceFlipPct)},
+                            {"extraChange", finite(f.extraChange)},
+                            {"redrawn", f.redrawn},
+                            {"reprojected", f.reprojected},
+                            {"unmatchedPct", finite(f.unmatchedPct)}};
     j["imageThumbnail"] = r.imageThumbnail;
     j["errorThumbnail"] = r.errorThumbnail;
     list.push_back(std::move(j));

@@ -16,6 +16,20 @@
 
 namespace shadowlab::measure {
 
+// Shimmer along a short span of a path (consecutive frames, measured one against the next): the
+// share of pixels a frame whose shadow flips where the ground truth's does not, and for soft
+// shadows the mean change of visibility beyond the reference's (metrics.hpp's TemporalErrors).
+struct ShimmerFigures {
+  int frames = 0;               // frame pairs compared
+  double extraFlipPct = 0;      // mean over the pairs, % of the pixels facing the light in both
+  double maxExtraFlipPct = 0;   // the worst pair
+  double referenceFlipPct = 0;  // the ground truth's own flips (the shadow truly moving), mean
+  double extraChange = 0;       // soft: mean |dV| beyond the reference's, mean over the pairs
+  bool redrawn = false;         // the camera moved: the shadows drawn again at the last frame's very points
+  bool reprojected = false;     // the camera moved, the lesson cannot redraw: points followed by reprojection
+  double unmatchedPct = 0;      // of those, the share of facing pixels whose point was not seen before
+};
+
 struct ReportRow {
   std::string scene;
   std::string technique;   // e.g. "PCF 3x3"
@@ -39,7 +53,8 @@ struct ReportRow {
   bool hasBand = false;  // near shadow edges (the lesson's MeasureSource::edgeBand): errors, and m there
   HardShadowErrors band;
   AliasingStats bandAliasing;
-  std::string imageThumbnail;  // paths relative to the report's folder (may be empty)
+  std::map<std::string, ShimmerFigures> shimmer;  // by the span's name (e.g. "camera", "sun"), when measured
+  std::string imageThumbnail;                     // paths relative to the report's folder (may be empty)
   std::string errorThumbnail;
 
   double gpuTotalMs() const;

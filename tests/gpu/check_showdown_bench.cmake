@@ -1,7 +1,10 @@
 # tools/showdown_bench.sh --quick, lesson 10's smoke benchmark: it finishes, each path's report holds
 # its figures in the HTML (check_bench_report.cmake), and the generated summary names a technique
 # per path and budget with its margin, the Pareto front, and the sweep's plot; the soft methods' run
-# against the sphere-light reference with its table (RMSE against the noise floor) and front.
+# against the sphere-light reference with its table (RMSE against the noise floor) and front; the
+# shimmer of every configuration under a drifting camera and a turning sun (shadowlab_bench
+# --shimmer): the main table's columns, the steadiest per path and the stability table with the
+# snapped techniques against their unsnapped selves, and the soft methods' shimmer.
 # Run: cmake -DBASH=... -DSCRIPT=... -DBUILD=... -DDIR=... -DCHECK=... -P this
 file(REMOVE_RECURSE ${DIR})
 execute_process(COMMAND ${BASH} ${SCRIPT} --quick ${BUILD} ${DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -17,15 +20,15 @@ endforeach()
 file(READ ${DIR}/summary.md summary)
 file(READ ${DIR}/index.html page)
 foreach(path city terrain sweep)
-  if(NOT summary MATCHES "\\*\\*${path}, 2048\\^2 texels per light\\*\\*: least misclassified \\*\\*[a-z+]+ [0-9-]+\\*\\*")
+  if(NOT summary MATCHES "\\*\\*${path}, 2048\\^2 texels per light\\*\\*: least misclassified \\*\\*[a-z+/]+ [0-9-]+\\*\\*")
     message(FATAL_ERROR "summary.md names no least-misclassified technique for ${path}:\n${summary}")
   endif()
 endforeach()
 # the one page over every path: a row per budget, a cell per path, and the counts per technique
-if(NOT summary MATCHES "\\| 2048\\^2 \\| \\*\\*[a-z+]+ [0-9]+\\*\\* [0-9.]+ %, [0-9.]+ pts over [a-z+]+ [0-9-]+; front: [a-z]")
+if(NOT summary MATCHES "\\| 2048\\^2 \\| \\*\\*[a-z+/]+ [0-9]+\\*\\* [0-9.]+ %, [0-9.]+ pts over [a-z+/]+ [0-9-]+; front: [a-z]")
   message(FATAL_ERROR "summary.md has no one-page table of the best technique per path and budget:\n${summary}")
 endif()
-if(NOT summary MATCHES "Over the [0-9]+ \\(path, budget\\) cells: \\*\\*[a-z+]+\\*\\* least misclassified in [0-9]+, on the front in [0-9]+")
+if(NOT summary MATCHES "Over the [0-9]+ \\(path, budget\\) cells: \\*\\*[a-z+/]+\\*\\* least misclassified in [0-9]+, on the front in [0-9]+")
   message(FATAL_ERROR "summary.md does not count the cells each technique wins:\n${summary}")
 endif()
 if(NOT summary MATCHES "Pareto front \\(frame time against error\\): [a-z]")
@@ -41,6 +44,25 @@ if(NOT summary MATCHES "\\| many 16 \\| [0-9.]+ \\| [0-9.]+ \\|")
 endif()
 if(NOT summary MATCHES "\\*\\*soft, showcase\\*\\*: least RMSE \\*\\*[a-z]+ [0-9+]+\\*\\* \\(0\\.[0-9]+\\), [0-9.]+ less than [a-z]+ [0-9+]+ \\(0\\.[0-9]+\\); fastest frame [^;]+; Pareto front \\(frame time against RMSE\\): [a-z]")
   message(FATAL_ERROR "summary.md names no least-RMSE soft method with its margin and front:\n${summary}")
+endif()
+foreach(path city terrain)
+  if(NOT summary MATCHES "\\| ${path} \\| csm 2048 \\| [0-9]+ \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.e+-]+ \\| [0-9.e+-]+ \\| [0-9.e+-]+ \\| [0-9.]+ \\| [0-9.]+ \\|")
+    message(FATAL_ERROR "summary.md's table has no shimmer figures (camera, sun) for csm on ${path}:\n${summary}")
+  endif()
+  if(NOT summary MATCHES "\\*\\*${path}, 2048\\^2 texels per light\\*\\*[^\n]+; steadiest under the drifting camera [a-z+/]+ [0-9-]+ \\([0-9.]+ %\\), under the turning sun [a-z+/]+ [0-9-]+ \\([0-9.]+ %\\)\\.")
+    message(FATAL_ERROR "summary.md names no steadiest technique for ${path}:\n${summary}")
+  endif()
+  foreach(t uniform csm sdsm)
+    if(NOT summary MATCHES "- ${path}: ${t} 2048 against ${t}/nosnap 2048: drifting camera [0-9.]+ % against [0-9.]+ %[^;]*; turning sun [0-9.]+ % against [0-9.]+ %")
+      message(FATAL_ERROR "summary.md's stability section does not set ${t} against its unsnapped self on ${path}:\n${summary}")
+    endif()
+  endforeach()
+endforeach()
+if(NOT summary MATCHES "## Stability: shimmer a frame at 2048\\^2 texels per light")
+  message(FATAL_ERROR "summary.md has no stability section:\n${summary}")
+endif()
+if(NOT summary MATCHES "\\| pcf 16 \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.]+ \\| 0\\.[0-9]+ \\|")
+  message(FATAL_ERROR "summary.md's soft table has no shimmer figure for pcf 16:\n${summary}")
 endif()
 if(NOT page MATCHES "<polyline")
   message(FATAL_ERROR "index.html has no error-against-direction plot")

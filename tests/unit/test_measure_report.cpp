@@ -240,6 +240,45 @@ TEST_CASE("measure.report: figures along the frames, one line per technique, onl
   CHECK(toHtml(single, "one frame").find("class=\"series\"") == std::string::npos);
 }
 
+TEST_CASE("measure.report: shimmer figures get their columns per span, only when measured") {
+  std::vector<ReportRow> rows = {hardRow("city", "csm", 1.0, 0.5, 0.4), hardRow("city", "uniform", 1.0, 0.5, 0.5)};
+  CHECK(toCsv(rows).find("shimmer") == std::string::npos);
+  ShimmerFigures f;
+  f.frames = 8;
+  f.extraFlipPct = 0.125;
+  f.maxExtraFlipPct = 0.25;
+  f.referenceFlipPct = 0.5;
+  f.redrawn = true;
+  rows[0].shimmer["sun"] = f;
+  rows[0].shimmer["camera"] = f;
+  rows[0].shimmer["camera"].extraFlipPct = 0.0;
+  const std::string csv = toCsv(rows);
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  const std::vector<std::string> header = splitCsvLine(line);
+  const auto at = [&](const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    REQUIRE(it != header.end());
+    return std::size_t(it - header.begin());
+  };
+  CHECK(at("shimmer_pct:camera") < at("shimmer_pct:sun"));  // spans in the order of their names
+  std::getline(lines, line);
+  const std::vector<std::string> csm = splitCsvLine(line);
+  std::getline(lines, line);
+  const std::vector<std::string> uniform = splitCsvLine(line);
+  CHECK(csm[at("shimmer_pct:camera")] == "0");
+  CHECK(csm[at("shimmer_pct:sun")] == "0.125");
+  CHECK(csm[at("shimmer_max_pct:sun")] == "0.25");
+  CHECK(csm[at("shimmer_reference_pct:sun")] == "0.5");
+  CHECK(uniform[at("shimmer_pct:sun")].empty());  // not measured: no figure, not a zero
+  const auto json = nlohmann::json::parse(toJson(rows, "t"));
+  CHECK(json["rows"][0]["shimmer"]["sun"]["extraFlipPct"] == 0.125);
+  CHECK(json["rows"][0]["shimmer"]["sun"]["frames"] == 8);
+  CHECK(json["rows"][0]["shimmer"]["sun"]["redrawn"] == true);
+  CHECK_FALSE(json["rows"][1].contains("shimmer"));
+}
+
 TEST_CASE("measure.report: the progress bar draws percentage and ETA on one line") {
   CHECK(ProgressBar::render("bench", 5, 10, 4.0, 10) == "bench [=====>    ]  50% 5/10 ETA 0:04");
   CHECK(ProgressBar::render("", 10, 10, 75.0, 10) == "[==========] 100% 10/10 took 1:15");

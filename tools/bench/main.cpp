@@ -6,11 +6,17 @@
 //   shadowlab_bench build/default/bin/lesson_03_shadow_quality --out out/bench/l03
 //       --config "pcf 3x3: filter=pcf_nxn map_size=2048" --preset acne --scenes city,forest
 //       --path paths/city.path --path-samples 4 --repeat 3 --size 1280x720 --frames 8
+//       --shimmer "camera=paths/walk.path@0.50..0.51" --shimmer-frames 9
 //
 // Each configuration is a label and `--set` assignments ("label: name=value name=value"), or a
 // preset. GPU and CPU ms are the median over the repeats; the error figures come from the first
 // repeat (the render is deterministic). Repeats go round-robin over the configurations, so their
 // timings share the load of a busy machine. A progress bar shows on the terminal.
+//
+// --shimmer NAME=FILE@T0..T1 (repeatable): every (scene, configuration) also plays that short span of
+// a path over --shimmer-frames consecutive frames (a slow camera drift, the sun turning a fraction
+// of a degree a frame), each frame measured against the one before (the lesson's temporal figures);
+// the mean and worst over the frame pairs go into the configuration's rows as shimmer_*:NAME.
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -43,12 +49,15 @@ struct Options {
   std::vector<Config> configs;
   std::vector<std::string> scenes;
   int pathSamples = 1, repeat = 3, frames = 6;
+  std::vector<std::pair<std::string, std::string>> shimmer;  // name, FILE@T0..T1
+  int shimmerFrames = 9;
 };
 
 constexpr const char* kUsage =
     "usage: shadowlab_bench LESSON_PROGRAM --out DIR [--config \"label: name=value ...\"]... [--preset NAME]...\n"
     "       [--scenes a,b] [--model FILE] [--path FILE [--path-samples N]] [--repeat N] [--frames N] [--size WxH] "
-    "[--title T]\n";
+    "[--title T]\n"
+    "       [--shimmer NAME=FILE@T0..T1]... [--shimmer-frames N]\n";
 
 [[noreturn]] void usage(const std::string& error) {
   std::cerr << "shadowlab_bench: " << error << "\n" << kUsage;
@@ -60,6 +69,21 @@ int toInt(const std::string& flag, const std::string& v, int lo) {
   const long n = std::strtol(v.c_str(), &end, 10);
   if (end == v.c_str() || *end || n < lo) usage(flag + ": '" + v + "' is not a whole number >= " + std::to_string(lo));
   return int(n);
+}
+
+// --shimmer NAME=FILE@T0..T1: a name of letters, digits and '_', and a span of a path that exists.
+std::pair<std::string, std::string> shimmerSpan(const std::string& v) {
+  const auto eq = v.find('=');
+  const std::string name = v.substr(0, eq == std::string::npos ? 0 : eq);
+  if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+    usage("--shimmer '" + v + "' is not NAME=FILE@T0..T1 (NAME: lower-case letters, digits, '_')");
+  const std::string spec = v.substr(eq + 1);
+  try {
+    const measure::ReplaySpec span = measure::parseReplaySpec(spec);
+    if (span.from < 0) throw std::invalid_argument("needs a span @T0..T1 (consecutive frames of a slow move)");
+    measure::CameraLightPath::load(span.file);
+  } catch (const std::exception& e) { usage("--shimmer " + v + ": " + e.what()); }
+  return {name, spec};
 }
 
 Options parse(int argc, char** argv) {
@@ -104,10 +128,12 @@ Options parse(int argc, char** argv) {
     else if (a == "--frames") o.frames = toInt(a, value(), 1);
     else if (a == "--size") o.size = value();
     else if (a == "--title") o.title = value();
+    else if (a == "--shimmer") o.shimmer.push_back(shimmerSpan(value()));
+    else if (a == "--shimmer-frames") o.shimmerFrames = toInt(a, value(), 2);
     else
-      usage(
-          "unknown argument '" + a +
-          "'; valid: --out --config --preset --scenes --model --path --path-samples --repeat --frames --size --title");
+      usage("unknown argument '" + a +
+            "'; valid: --out --config --preset --scenes --model --path --path-samples --repeat --frames --size --title "
+            "--shimmer --shimmer-frames");
   }
   if (o.out.empty()) usage("--out DIR is required");
   if (o.configs.empty()) o.configs.push_back({"defaults", {}});
@@ -245,6 +271,56 @@ bool runRepeat(const Options& o, const fs::path& runs, Job& job, int r) {
   return true;
 }
 
+// Plays one shimmer span for (scene, configuration); false (the lesson's output on stderr) on failure.
+bool runShimmer(const Options& o, const fs::path& runs, const Job& job, const std::string& name,
+                const std::string& spec, measure::ShimmerFigures& f) {
+  const std::string stem = job.id + "_shimmer_" + name;
+  std::vector<std::string> args = {o.lesson,    "--headless",
+                                   "--size",    o.size,
+                                   "--frames",  std::to_string(o.shimmerFrames),
+                                   "--replay",  spec,
+                                   "--measure", (runs / (stem + "_%d.json")).string()};
+  if (!o.model.empty()) args.insert(args.end(), {"--model", o.model});
+  if (!job.scene.empty()) args.insert(args.end(), {"--set", "scene=" + job.scene});
+  args.insert(args.end(), job.config->args.begin(), job.config->args.end());
+  const std::string log = (runs / (stem + ".log")).string();
+  bool ok = runProcess(args, {log}) == 0;
+  double unmatched = 0;
+  for (int frame = 1; ok && frame < o.shimmerFrames; ++frame) {
+    std::ifstream in(runs / (stem + "_" + std::to_string(frame) + ".json"));
+    const auto j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.contains("temporal")) {
+      ok = false;  // every frame after the first is compared with the one before
+      break;
+    }
+    const auto& t = j["temporal"];
+    const double pct = t.at("extra_flip_pct");
+    f.extraFlipPct += pct;
+    f.maxExtraFlipPct = std::max(f.maxExtraFlipPct, pct);
+    f.referenceFlipPct += t.at("reference_flip_pct").get<double>();
+    f.extraChange += t.at("extra_change").get<double>();
+    f.redrawn = f.redrawn || t.value("redrawn", false);
+    f.reprojected = f.reprojected || t.at("reprojected").get<bool>();
+    const double pixels = t.at("pixels").get<double>() + t.at("unmatched").get<double>();
+    unmatched += pixels > 0 ? 100.0 * t.at("unmatched").get<double>() / pixels : 0.0;
+    ++f.frames;
+  }
+  if (!ok) {
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::cerr << "\nshadowlab_bench: shimmer " << name << ", " << job.row.scene << " / " << job.config->label
+              << ": no temporal figures for every frame:\n"
+              << text.str();
+    return false;
+  }
+  f.extraFlipPct /= f.frames;
+  f.referenceFlipPct /= f.frames;
+  f.extraChange /= f.frames;
+  f.unmatchedPct = unmatched / f.frames;
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -272,7 +348,8 @@ int main(int argc, char** argv) {
       }
   // Repeats go round-robin over the jobs, so that every configuration's timings see the same mix
   // of the machine's load (ratios between configurations are what the timings are good for).
-  measure::ProgressBar progress(jobs.size() * std::size_t(o.repeat), "benchmark");
+  const std::size_t shimmerRuns = o.shimmer.size() * o.scenes.size() * o.configs.size();
+  measure::ProgressBar progress(jobs.size() * std::size_t(o.repeat) + shimmerRuns, "benchmark");
   int failures = 0;
   for (int r = 0; r < o.repeat; ++r)
     for (Job& job : jobs) {
@@ -280,6 +357,20 @@ int main(int argc, char** argv) {
       failures += !runRepeat(o, runs, job, r);
       progress.advance();
     }
+  // Shimmer: once per (scene, configuration) and span, into each of its rows (the path samples').
+  for (Job& job : jobs) {
+    if (job.row.frame != 0 || job.cpu.empty()) continue;
+    for (const auto& [name, spec] : o.shimmer) {
+      measure::ShimmerFigures f;
+      if (!runShimmer(o, runs, job, name, spec, f)) {
+        ++failures;
+        continue;
+      }
+      for (Job& other : jobs)
+        if (other.scene == job.scene && other.config == job.config) other.row.shimmer[name] = f;
+    }
+    progress.advance(o.shimmer.size());
+  }
   progress.finish();
   std::vector<measure::ReportRow> rows;
   for (Job& job : jobs) {
