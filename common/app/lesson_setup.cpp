@@ -110,7 +110,7 @@ bool answerQuery(const CommandLine& cl, const LessonInfo& info, const ParamRegis
 }
 
 std::vector<Counter> keyFigures(const LessonInfo& info, const std::vector<Counter>& all, bool measured) {
-  static const char* const kMeasured[] = {"measure", "misclassified", "aliasing m", "soft error", "umbra"};
+  static const char* const kMeasured[] = {"measure", "misclassified", "aliasing m", "soft error", "umbra", "shimmer"};
   std::vector<Counter> key;
   for (const std::string& name : info.keyFigures)
     for (const Counter& c : all)

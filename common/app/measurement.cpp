@@ -275,6 +275,12 @@ void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& re
   } else if (result_.hasTemporal) {
     result_.temporal = measure::compareFrames(lastTechnique_, technique, lastReference_, reference);
   }
+  // A mean over the last 30 frames in a row: one frame's flips come and go with the texel grid.
+  if (!result_.hasTemporal) recent_.clear();
+  else recent_.push_back(result_.soft ? result_.temporal.extraChange : result_.temporal.extraFlipPct);
+  if (recent_.size() > 30) recent_.erase(recent_.begin());
+  result_.recentFrames = int(recent_.size());
+  for (const double v : recent_) result_.recentMean += v / double(recent_.size());
   lastTechnique_ = technique;
   lastReference_ = reference;
   lastPosition_ = position;
@@ -456,15 +462,13 @@ std::vector<std::pair<std::string, std::string>> Measurement::summary() const {
   }
   if (result_.hasTemporal) {  // against the previous frame
     const auto& t = result_.temporal;
+    // The mean first: one frame's flips come and go as edges cross texel boundaries.
     if (result_.soft)
-      std::snprintf(buf, sizeof buf, "mean |dV| %.4f beyond the reference's (%.4f)", t.extraChange,
-                    t.referenceMeanChange);
+      std::snprintf(buf, sizeof buf, "|dV| %.4f a frame beyond the reference's, mean of %d", result_.recentMean,
+                    result_.recentFrames);
     else
-      std::snprintf(buf, sizeof buf, "%.2f%% of px flip, the reference not (it flips %.2f%%)%s", t.extraFlipPct,
-                    t.referenceFlipPct,
-                    result_.redrawn       ? ", at the last frame's points"
-                    : result_.reprojected ? ", world points followed"
-                                          : "");
+      std::snprintf(buf, sizeof buf, "%.3f%% of px flip a frame, mean of %d (reference %.3f%%)", result_.recentMean,
+                    result_.recentFrames, t.referenceFlipPct);
     out.push_back({"shimmer", buf});
   }
   std::snprintf(buf, sizeof buf, "%dx%d: rays %.0f ms, read-back %.0f ms%s", result_.width, result_.height,

@@ -85,6 +85,8 @@ struct MeasureResult {
   // frame did not see).
   bool hasTemporal = false;
   measure::TemporalErrors temporal;
+  double recentMean = 0;  // the extra flips (soft: extra change) over the last `recentFrames` compared in a row
+  int recentFrames = 0;
   bool redrawn = false;
   bool reprojected = false;
   std::size_t unmatched = 0;
@@ -177,6 +179,7 @@ class Measurement {
   measure::SurfaceBuffer lastSurface_;
   Light lastLightState_;
   int factor_ = 1;                   // the last measurement's subsampling
+  std::vector<double> recent_;       // shimmer of the last frames compared in a row (the header's mean)
   FrameInfo frameInfo_, lastFrame_;  // this frame's and the last measured frame's (size, camera)
   glm::mat4 viewProj_{1.0f}, lastViewProj_{1.0f};
 };
