@@ -138,10 +138,12 @@ if(TARGET lesson_09_psm_fixes)
   set_tests_properties(gpu.measure.shimmer PROPERTIES LABELS gpu TIMEOUT 300)
 endif()
 
-if(TARGET lesson_03_shadow_quality AND TARGET lesson_07_hybrid_maps AND TARGET lesson_10_showdown)
+if(TARGET lesson_01_lighting AND TARGET lesson_02_shadow_maps AND TARGET lesson_03_shadow_quality
+   AND TARGET lesson_04_shadow_volumes AND TARGET lesson_10_showdown)
   add_test(NAME gpu.measure.shimmer_drift
-           COMMAND ${CMAKE_COMMAND} -DLESSON03=$<TARGET_FILE:lesson_03_shadow_quality>
-                   -DLESSON07=$<TARGET_FILE:lesson_07_hybrid_maps> -DLESSON10=$<TARGET_FILE:lesson_10_showdown>
+           COMMAND ${CMAKE_COMMAND} -DLESSON01=$<TARGET_FILE:lesson_01_lighting>
+                   -DLESSON02=$<TARGET_FILE:lesson_02_shadow_maps> -DLESSON03=$<TARGET_FILE:lesson_03_shadow_quality>
+                   -DLESSON04=$<TARGET_FILE:lesson_04_shadow_volumes> -DLESSON10=$<TARGET_FILE:lesson_10_showdown>
                    -DDRIFT=${CMAKE_SOURCE_DIR}/bench/paths/city_drift.path -DOUT_DIR=${shots}
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_shimmer_drift.cmake)
   set_tests_properties(gpu.measure.shimmer_drift PROPERTIES LABELS gpu TIMEOUT 300)

@@ -416,7 +416,7 @@ class Runner {
     lastView_ = view;
     lastRevision_ = params_.revision();
     measurement_.end(lesson_.measureSource(), frameFbo, viewChanged,
-                     [&](const FrameInfo& f) { return lesson_.redrawLit(f); });
+                     [&](const FrameInfo& f) { return lesson_.redrawLitUntimed(f); });
     fi.framebuffer = frameFbo;
     if (ab_.enabled()) {
       ab_.draw(fi, params_, presets_, lesson_, info_.measurable ? &measurement_ : nullptr,

@@ -72,6 +72,14 @@ class Lesson {
   // shimmer figures evaluate a frame's shadows at the previous frame's very points this way when
   // the camera moved. False: the lesson cannot (the figures then follow points by reprojection).
   virtual bool redrawLit(const FrameInfo& frame) { return false; }
+  // redrawLit with the timers off: the frame's own passes are its cost; this draw only measures it.
+  bool redrawLitUntimed(const FrameInfo& frame) {
+    const bool timed = timers.enabled();
+    timers.setEnabled(false);
+    const bool drawn = redrawLit(frame);
+    timers.setEnabled(timed);
+    return drawn;
+  }
 
   // Set up by the framework before init(); lessons use them freely.
   OrbitCamera camera;

@@ -39,7 +39,6 @@ void ShadowLesson::clearAndDrawLit(const ShadowContext& c, ShadowTechnique& tech
   lit_.draw(c, technique, lit);
 }
 
-// Untimed: the frame's own passes are its cost; this one only measures it.
 bool ShadowLesson::redrawLit(const FrameInfo& frame) {
   if (!litTechnique_) return false;
   const ShadowContext c = context(frame);

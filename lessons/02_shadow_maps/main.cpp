@@ -154,6 +154,7 @@ class ShadowMapLesson : public Lesson {
     const bool student = p_.impl == Impl::Student;
     const glm::mat4 textureMatrix = student ? ex02::shadowTextureMatrix(light.projection, light.view)
                                             : shadow::textureMatrix(light.projection, light.view);
+    if (!f.godView) textureMatrix_ = textureMatrix;
     debug.frustum(light.viewProj(), {1.0f, 0.9f, 0.3f, 1.0f});
     debug.name({1.0f, 0.9f, 0.3f, 1.0f}, "the light's frustum: what its map covers");
     debug.cone(p_.light.position, glm::normalize(p_.light.direction), p_.light.spotOuter, 12.0f,
@@ -243,6 +244,19 @@ class ShadowMapLesson : public Lesson {
                            : "off"}};
   }
 
+  // The shimmer figures (Lesson::redrawLit): pass 2 once more from another camera, with this frame's map.
+  bool redrawLit(const FrameInfo& f) override {
+    if (p_.view == View::ShadowMap) return false;
+    glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer);
+    glViewport(0, 0, f.width, f.height);
+    glEnable(GL_DEPTH_TEST);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    prepass_.begin(scene_, f.projection * f.view, false);
+    drawScene(f, textureMatrix_, false);
+    prepass_.end();
+    return true;
+  }
+
   void drawScene(const FrameInfo& f, const glm::mat4& textureMatrix, bool afterPrepass) {
     // Compiled for the comparison, the view and the pre-pass in use (constants in that variant).
     std::vector<std::string> defines = {"COMPARE " + std::to_string(int(p_.compare)),
@@ -329,6 +343,7 @@ class ShadowMapLesson : public Lesson {
   std::size_t shadowTriangles_ = 0;
   tech::PassKey rendered_;  // what the map holds
   bool mapReused_ = false;
+  glm::mat4 textureMatrix_{1.0f};  // the viewer's frame's (redrawLit)
 };
 
 int main(int argc, char** argv) { return runLesson<ShadowMapLesson>(argc, argv); }

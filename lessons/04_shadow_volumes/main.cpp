@@ -132,6 +132,22 @@ class ShadowVolumeLesson : public Lesson {
     const tech::ShadowContext c{f, camera, scene_, {p_.lights.begin(), p_.lights.end()}, timers, debug};
     // ==== 0. edge adjacency once per mesh, and which objects can cast a closed volume ===========
     volumes_.renderShadows(c);
+    drawFrame(c);
+    if (!f.godView) counters = volumes_.stats().counters();
+    if (const auto key = volumes_.legend(); key && !f.godView) legends.push_back(*key);
+  }
+
+  // The shimmer figures (Lesson::redrawLit): passes 1-4 once more from another camera (the volumes
+  // are exact: nothing should flip), leaving the god view's shapes as the frame left them.
+  bool redrawLit(const FrameInfo& f) override {
+    const DebugDraw shapes = debug;
+    drawFrame({f, camera, scene_, {p_.lights.begin(), p_.lights.end()}, timers, debug});
+    debug = shapes;
+    return true;
+  }
+
+ private:
+  void drawFrame(const tech::ShadowContext& c) {
     // ==== 1. depth and ambient: the scene once, its depth for every light's count ===============
     const tech::LitSettings lit{glm::vec3(p_.ambient), 0, p_.specular, p_.shininess};
     const tech::StencilVolumes::Frame frame = volumes_.beginFrame(c);  // the far plane at infinity
@@ -143,11 +159,8 @@ class ShadowVolumeLesson : public Lesson {
     }
     // ==== 4. views: volumes, wireframe, the stencil count as a heatmap, silhouettes ==============
     volumes_.finishFrame(frame);
-    if (!f.godView) counters = volumes_.stats().counters();
-    if (const auto key = volumes_.legend(); key && !f.godView) legends.push_back(*key);
   }
 
- private:
   // Real models are rarely closed: skipped, their open meshes would cast nothing. A loaded model
   // with open edges switches open_meshes to z_pass_only (the panel shows it) and says so.
   void useOpenMeshPath() {

@@ -140,16 +140,18 @@ class HybridMapsLesson : public tech::ShadowLesson {
     });
 
     // ==== 5. the scene from the eye: each lookup descends the index to the finest stored texel ====
-    auto t = scope("scene");
-    glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     const tech::LitSettings lit{glm::vec3(p_.ambient), p_.view == View::Visibility ? 1 : 0};
     const bool hybrid = p_.technique == Technique::Hybrid;
     const int shown = hybrid_.viewLight(measured_);  // the views: the measured light, or the first mapped
-    if (hybrid && (p_.view == View::Mask || p_.view == View::Steps))
+    if (hybrid && (p_.view == View::Mask || p_.view == View::Steps)) {
+      auto t = scope("scene");
+      glClearColor(0.05f, 0.06f, 0.08f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       hybrid_.drawSceneView(c, p_.view == View::Mask ? tech::HybridSceneView::Levels : tech::HybridSceneView::Steps,
                             lit, shown);
-    else lit_.draw(c, technique, lit);
+    } else {
+      drawLit(c, technique, lit);
+    }
 
     // ==== 6. the map itself, coloured by level over the light's view (view=levels) ==============
     if (hybrid && p_.view == View::Levels) {
