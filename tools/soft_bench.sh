@@ -8,7 +8,8 @@
 # samples, 3), TIMING_SIZE (640x360), TIMING_ROUNDS (3; 0: no timing runs), SWEEP (0: only the timing
 # runs), ONLY (an extended regular expression: only the configurations whose label matches it).
 # Writes OUT_DIR/<scene>_r<R>/report.{csv,json,html} (shadowlab_bench: RMSE, max error, umbra over-
-# and under-estimate, the reference's noise floor, ms per pass, the Pareto front), OUT_DIR/timing.csv
+# and under-estimate, the reference's noise floor, ms per pass, the Pareto front; on the showcase the
+# shimmer under its sphere sliding 1 cm a frame, bench/paths/showcase_light_drift.path), OUT_DIR/timing.csv
 # and OUT_DIR/summary.txt. The soft reference costs seconds a frame at full size: the sweep runs at
 # a reduced size on purpose. Figures from a software renderer (llvmpipe) rank techniques; they do not
 # predict a GPU's milliseconds.
@@ -89,10 +90,15 @@ if [[ ${SWEEP:-1} != 0 ]]; then
         [[ -z ${ONLY:-} || ${c%%:*} =~ $ONLY ]] || continue
         args+=(--config "${c%%:*}: ${c#*:} $(scene_sets "$scene") light0.radius=$r measure.samples=$samples")
       done
+      # Shimmer on the showcase: its sphere sliding 1 cm a frame over 9 frames, the camera still
+      # (the mean change of visibility a frame beyond the reference's: shimmer_change:light).
+      shimmer=()
+      [[ $scene == showcase ]] &&
+        shimmer=(--shimmer "light=$root/bench/paths/showcase_light_drift.path@0..0.1333" --shimmer-frames 9)
       echo "soft_bench: $scene, R = $r m, $(( ${#args[@]} / 2 )) configurations x $poses poses at $size" >&2
       "$bench" "$bin" --out "$out/${scene}_r$r" --title "lesson 05: $scene, sphere of radius $r m, $size" \
         --path "$root/bench/paths/soft_$scene.path" --path-samples "$poses" --repeat 1 --frames 2 --size "$size" \
-        "${args[@]}" >/dev/null
+        "${args[@]}" "${shimmer[@]}" >/dev/null
     done
   done
 fi
