@@ -67,8 +67,12 @@ void DepthTileReduction::resize(int width, int height) {
   }
 }
 
-shadow::DepthTiles DepthTileReduction::run(const ShadowContext& c, const shadow::CascadeViewer& viewer) {
+shadow::DepthTiles DepthTileReduction::run(const ShadowContext& c, const shadow::CascadeViewer& viewer, bool reuse) {
   resize(c.frame.width, c.frame.height);
+  const glm::mat4 viewProj = glm::perspective(viewer.fovY, viewer.aspect, viewer.nearZ, viewer.farZ) * viewer.view;
+  PassKey key;
+  key << c.scene.revision() << viewProj << width_ << height_;
+  if (reuse && key == reduced_) return last_;
   // ---- 0. the camera's depth: every object, alpha-tested holes discarded, as the lit pass sees it
   {
     auto t = gl::TimerScope(c.timers, "sdsm depth");
@@ -79,7 +83,6 @@ shadow::DepthTiles DepthTileReduction::run(const ShadowContext& c, const shadow:
     glDepthMask(GL_TRUE);
     glClearDepthf(1.0f);
     glClear(GL_DEPTH_BUFFER_BIT);
-    const glm::mat4 viewProj = glm::perspective(viewer.fovY, viewer.aspect, viewer.nearZ, viewer.farZ) * viewer.view;
     keep_.assign(c.scene.boxes().size(), 1);  // what cannot reach the frame is not drawn
     for (std::size_t i = 0; i < keep_.size(); ++i) keep_[i] = !shadow::boxOutsideClip(viewProj, c.scene.boxes()[i]);
     depth_.draw(c.scene, viewProj, keep_, {.alphaTest = true, .allObjects = true, .alphaLevel0 = false});
@@ -136,6 +139,8 @@ shadow::DepthTiles DepthTileReduction::run(const ShadowContext& c, const shadow:
   tiles.depths.resize(std::size_t(top.width) * std::size_t(top.height));
   for (std::size_t i = 0; i < tiles.depths.size(); ++i)
     std::memcpy(&tiles.depths[i], &words[4 * i], sizeof(glm::vec2));  // the float bits, back to floats
+  reduced_ = std::move(key);
+  last_ = tiles;
   return tiles;
 }
 
@@ -163,8 +168,8 @@ void SampleDistributionShadowMaps::render(const ShadowContext& c) {
     // A second view of the same frame (the A/B split's B half, a four-up quarter) replaces this
     // frame's tiles instead of ageing the others by a frame.
     if (!history_.empty() && history_.front().frame == c.frame.index)
-      history_.front().tiles = reduction_.run(c, viewer);
-    else history_.push_front({c.frame.index, reduction_.run(c, viewer)});
+      history_.front().tiles = reduction_.run(c, viewer, maps().params().reuseMaps);
+    else history_.push_front({c.frame.index, reduction_.run(c, viewer, maps().params().reuseMaps)});
     while (int(history_.size()) > s_.latency + 1) history_.pop_back();
   }
   CascadedShadowMaps::render(c);

@@ -20,6 +20,7 @@
 #include "cascades.hpp"
 #include "gl/objects.hpp"
 #include "technique/casters.hpp"
+#include "technique/pass_key.hpp"
 
 namespace shadowlab::tech {
 
@@ -29,7 +30,9 @@ class DepthTileReduction {
   static constexpr int kMaxTiles = 128;  // reduce until at most this many tiles a side
   void init();
   // The scene's depth from `viewer` at the frame's size, reduced and read back (passes timed).
-  shadow::DepthTiles run(const ShadowContext& c, const shadow::CascadeViewer& viewer);
+  // reuse: the last tiles, untouched, while the viewer, the frame's size and the scene are (a still
+  // camera's maps are kept: their depth distribution cannot have moved).
+  shadow::DepthTiles run(const ShadowContext& c, const shadow::CascadeViewer& viewer, bool reuse);
 
  private:
   void resize(int width, int height);
@@ -46,6 +49,8 @@ class DepthTileReduction {
   std::vector<Level> levels_;
   std::vector<char> keep_;
   int width_ = 0, height_ = 0;
+  PassKey reduced_;  // what the last tiles were reduced from
+  shadow::DepthTiles last_;
 };
 
 struct SdsmParams {

@@ -5,7 +5,8 @@
 # split over that range and fitted to the tiles, the cascades must alias less (mean m) and misclassify
 # fewer pixels than the practical ones, and the tight fit less than the same splits fitted to whole
 # slices (sdsm.tight_fit=false). A reduction that read nothing back ("nothing on screen") or tiles
-# the fit ignored fail. Run: cmake -DLESSON=... -DOUT_DIR=... -P this
+# the fit ignored fail. The tiles are kept with the maps while the camera is still. Run: cmake
+# -DLESSON=... -DOUT_DIR=... -P this
 foreach(run "csm|--set;technique=csm" "sdsm|--set;technique=sdsm" "loose|--set;technique=sdsm;--set;sdsm.tight_fit=false")
   string(REPLACE "|" ";" parts "${run}")
   list(GET parts 0 name)
@@ -42,4 +43,23 @@ if(NOT m_sdsm LESS m_csm OR NOT bad_sdsm LESS bad_csm)
 endif()
 if(NOT m_sdsm LESS m_loose OR NOT bad_sdsm LESS bad_loose)
   message(FATAL_ERROR "the tight fit (mean m ${m_sdsm}, ${bad_sdsm}) is no better than whole slices (${m_loose}, ${bad_loose})")
+endif()
+# A still camera keeps the maps, and with them the tiles: the camera's depth is drawn and reduced
+# once in three frames (the bench CSV's passes), every frame when the maps are redrawn every frame.
+foreach(reuse true false)
+  execute_process(COMMAND ${LESSON} --headless --frames 3 --size 480x270 --strict-gl --set technique=sdsm
+                          --set sdsm.reuse_maps=${reuse} --bench ${OUT_DIR}/sdsm_passes_${reuse}.csv
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "sdsm.reuse_maps=${reuse}: lesson exited ${rc}: ${err}")
+  endif()
+  file(STRINGS ${OUT_DIR}/sdsm_passes_${reuse}.csv depth_rows REGEX ",sdsm depth,")
+  file(STRINGS ${OUT_DIR}/sdsm_passes_${reuse}.csv reduction_rows REGEX ",sdsm reduction,")
+  list(LENGTH depth_rows depth_${reuse})
+  list(LENGTH reduction_rows reduction_${reuse})
+endforeach()
+if(NOT depth_true EQUAL 1 OR NOT reduction_true EQUAL 1 OR NOT depth_false EQUAL 3 OR NOT reduction_false EQUAL 3)
+  message(FATAL_ERROR "the camera's depth was drawn ${depth_true} and reduced ${reduction_true} times in 3 still "
+                      "frames with the maps kept (expected once), ${depth_false} and ${reduction_false} times with "
+                      "them redrawn (expected 3)")
 endif()
