@@ -126,7 +126,6 @@ constexpr const char* kNoTruthInBrowser = "ground truth: run the lesson natively
 
 unsigned Measurement::begin(unsigned frameFbo, const FrameInfo& frame) {
   frameInfo_ = frame;
-  viewProj_ = frame.projection * frame.view;
   const int w = frame.width, h = frame.height;
   if (active() && gl::caps().gles) result_ = {}, result_.unmeasurable = kNoTruthInBrowser;
   if (!active() || gl::caps().gles) return frameFbo;
@@ -255,21 +254,24 @@ void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& re
   result_.hasTemporal = lastMeasured_ + 1 == frame_ && lastLight_ == light_ &&
                         lastTechnique_.width == technique.width && lastTechnique_.height == technique.height &&
                         !lastTechnique_.data.empty();
-  const bool moved = result_.hasTemporal && viewProj_ != lastViewProj_;
+  const glm::mat4 viewProj = frameInfo_.projection * frameInfo_.view,
+                  lastViewProj = lastFrame_.projection * lastFrame_.view;
+  const bool moved = result_.hasTemporal && viewProj != lastViewProj;
   const std::optional<ImageF> again = moved ? techniqueFromLastCamera(redraw) : std::nullopt;
   if (again) {
     const bool lightMoved = light.position != lastLightState_.position || light.direction != lastLightState_.direction;
-    const ImageF referenceAgain = !lightMoved ? lastReference_
-                                  : result_.soft
-                                      ? truth_->softVisibility(lastSurface_, light, samples_, std::uint64_t(seed_))
-                                      : truth_->hardVisibility(lastSurface_, light);
+    ImageF traced;  // the reference at the last frame's points under this frame's light, when it moved
+    if (lightMoved)
+      traced = result_.soft ? truth_->softVisibility(lastSurface_, light, samples_, std::uint64_t(seed_))
+                            : truth_->hardVisibility(lastSurface_, light);
     result_.redrawn = true;
-    result_.temporal = measure::compareFrames(lastTechnique_, *again, lastReference_, referenceAgain);
+    result_.temporal =
+        measure::compareFrames(lastTechnique_, *again, lastReference_, lightMoved ? traced : lastReference_);
   } else if (moved) {
     result_.reprojected = true;
     const measure::ReprojectedTemporalErrors r =
-        measure::compareFramesReprojected({&lastTechnique_, &lastReference_, &lastPosition_, lastViewProj_},
-                                          {&technique, &reference, &position, viewProj_});
+        measure::compareFramesReprojected({&lastTechnique_, &lastReference_, &lastPosition_, lastViewProj},
+                                          {&technique, &reference, &position, viewProj});
     result_.temporal = r.errors;
     result_.unmatched = r.unmatched;
   } else if (result_.hasTemporal) {
@@ -286,7 +288,6 @@ void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& re
   lastPosition_ = position;
   lastSurface_ = surface;
   lastLightState_ = light;
-  lastViewProj_ = viewProj_;
   lastFrame_ = frameInfo_;
   lastMeasured_ = frame_;
   lastLight_ = light_;

@@ -181,7 +181,6 @@ class Measurement {
   int factor_ = 1;                   // the last measurement's subsampling
   std::vector<double> recent_;       // shimmer of the last frames compared in a row (the header's mean)
   FrameInfo frameInfo_, lastFrame_;  // this frame's and the last measured frame's (size, camera)
-  glm::mat4 viewProj_{1.0f}, lastViewProj_{1.0f};
 };
 
 }  // namespace shadowlab

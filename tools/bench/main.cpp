@@ -224,6 +224,14 @@ void readFigures(const nlohmann::json& j, measure::ReportRow& row) {
   }
 }
 
+// A run's log, whole (what the lesson said when it failed).
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 // One (scene, configuration, path sample): its row and the timings of its repeats.
 struct Job {
   std::string scene, id;
@@ -247,10 +255,7 @@ bool runRepeat(const Options& o, const fs::path& runs, Job& job, int r) {
   if (job.pathTime >= 0) args.insert(args.end(), {"--replay", o.path + "@" + std::to_string(job.pathTime)});
   const std::string log = (runs / (job.id + ".log")).string();
   if (runProcess(args, {log}) != 0) {
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
-    std::cerr << "\nshadowlab_bench: " << job.row.scene << " / " << job.config->label << " failed:\n" << text.str();
+    std::cerr << "\nshadowlab_bench: " << job.row.scene << " / " << job.config->label << " failed:\n" << readText(log);
     return false;
   }
   std::ifstream in(runs / (job.id + ".json"));
@@ -306,12 +311,9 @@ bool runShimmer(const Options& o, const fs::path& runs, const Job& job, const st
     ++f.frames;
   }
   if (!ok) {
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
     std::cerr << "\nshadowlab_bench: shimmer " << name << ", " << job.row.scene << " / " << job.config->label
               << ": no temporal figures for every frame:\n"
-              << text.str();
+              << readText(log);
     return false;
   }
   f.extraFlipPct /= f.frames;
@@ -359,7 +361,11 @@ int main(int argc, char** argv) {
     }
   // Shimmer: once per (scene, configuration) and span, into each of its rows (the path samples').
   for (Job& job : jobs) {
-    if (job.row.frame != 0 || job.cpu.empty()) continue;
+    if (job.row.frame != 0) continue;  // once per (scene, configuration)
+    if (job.cpu.empty()) {             // its first run failed already
+      progress.advance(o.shimmer.size());
+      continue;
+    }
     for (const auto& [name, spec] : o.shimmer) {
       measure::ShimmerFigures f;
       if (!runShimmer(o, runs, job, name, spec, f)) {
