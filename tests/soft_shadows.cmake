@@ -6,6 +6,9 @@
 #   gpu.05_soft_shadows.quad_search  PCSS's search shared by a 2x2 quad: within 10 % of the per-pixel
 #                                 search's error, its fallback without fine derivatives, and a
 #                                 quad that does not share as the control (check_quad_search.cmake)
+#   gpu.05_soft_shadows.point_light  a point light inside the scene: the sample-map techniques' cube
+#                                 of six faces, against the spot and low among the casters, VSM's
+#                                 "no cube form" as the control (check_soft_cube.cmake)
 #   gpu.05_soft_shadows.theory    the predicted half-width, the A_frac figure, the student's code
 #                                 driving them, the overlay drawn, the light mesh baked only when
 #                                 something moved (tests/gpu/check_soft_theory.cmake)
@@ -19,6 +22,8 @@ add_test(NAME gpu.05_soft_shadows.accuracy COMMAND ${CMAKE_COMMAND} -DLESSON=$<T
          -DOUT_DIR=${soft_out} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_soft_accuracy.cmake)
 add_test(NAME gpu.05_soft_shadows.forest COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows>
          -DOUT_DIR=${soft_out} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_soft_forest.cmake)
+add_test(NAME gpu.05_soft_shadows.point_light COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows>
+         -DOUT_DIR=${soft_out} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_soft_cube.cmake)
 add_test(NAME gpu.05_soft_shadows.quad_search COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows>
          -DSOURCE_DIR=${CMAKE_SOURCE_DIR} -DOUT_DIR=${soft_out} -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_quad_search.cmake)
 # The student's code drives the overlays: checked on the untouched stubs only (a student's own
@@ -35,7 +40,8 @@ endif()
 add_test(NAME gpu.05_soft_shadows.theory COMMAND ${CMAKE_COMMAND} -DLESSON=$<TARGET_FILE:lesson_05_soft_shadows>
          -DOUT_DIR=${soft_out} -DSTUBS_PRISTINE=${stubs_pristine}
          -P ${CMAKE_CURRENT_SOURCE_DIR}/gpu/check_soft_theory.cmake)
-set_tests_properties(gpu.05_soft_shadows.accuracy gpu.05_soft_shadows.forest gpu.05_soft_shadows.quad_search
+set_tests_properties(gpu.05_soft_shadows.accuracy gpu.05_soft_shadows.forest gpu.05_soft_shadows.point_light
+                     gpu.05_soft_shadows.quad_search
                      gpu.05_soft_shadows.theory PROPERTIES LABELS gpu TIMEOUT 600)
 if(TARGET shadowlab_bench)
   add_test(NAME bench.05_soft_shadows COMMAND ${CMAKE_COMMAND} -DBENCH=$<TARGET_FILE:shadowlab_bench>

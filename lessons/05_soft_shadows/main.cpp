@@ -109,7 +109,7 @@ class SoftShadowsLesson : public tech::ShadowLesson {
             true,
             120,
             {"03"},
-            {"taps", "penumbra r predicted"}};
+            {"taps", "penumbra r predicted", "light0", "light1"}};  // lightN: a cube, or no soft shadow and why
   }
 
   void init() override {

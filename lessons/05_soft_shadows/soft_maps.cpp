@@ -1,6 +1,9 @@
 #include "soft_maps.hpp"
 
 #include <cmath>
+#include <limits>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "algorithms/soft_shadows.hpp"
 #include "technique/map_pass.hpp"
@@ -76,7 +79,9 @@ void SoftMaps::ensureArray(int size, int layers) {
 }
 
 // ==== 1. the light cameras: one at the sphere's centre per light, fitted to the scene =============
-void SoftMaps::fit(const ShadowContext& c) {
+glm::mat4 faceView(const glm::vec3& position, int face) { return shadow::cubeFaceView(position, face); }
+
+void SoftMaps::fit(const ShadowContext& c, bool cubes) {
   lights_.assign(std::min<std::size_t>(c.lights.size(), kMaxLights), {});
   const shadow::CasterBoxes boxes = c.scene.casterBoxes();
   int layer = 0;
@@ -84,12 +89,22 @@ void SoftMaps::fit(const ShadowContext& c) {
     const Light& light = c.lights[i];
     SoftLight& s = lights_[i];
     std::optional<Light> spot;
+    bool cube = false;
     if (!light.enabled) s.why = "off";
     else if (light.kind == LightKind::Directional) s.why = "directional: a sphere needs a position";
     else if (light.kind == LightKind::Spot) spot = light;
-    else if (!(spot = soft::spotCovering(light, c.scene.bounds()))) s.why = "inside the scene: no one frustum";
-    if (!spot) continue;
+    else if (!(spot = soft::spotCovering(light, c.scene.bounds()))) {
+      cube = cubes;
+      if (!cube) s.why = "inside the scene: no one frustum, and filtered maps have no cube form here";
+    }
+    if (!spot && !cube) continue;
     s.radius = light.area == AreaShape::Sphere ? light.radius : 0.0f;
+    s.firstLayer = layer;
+    if (cube) {
+      fitCube(c, light, s);
+      if (s.on) layer += 6 * int(samples_.size());
+      continue;
+    }
     const glm::vec2 range =
         soft::depthRange(shadow::lightViewAlong(spot->position, spot->direction), c.scene.bounds(), p_.minNear);
     s.nearZ = std::max(p_.minNear, range.x - s.radius);
@@ -99,10 +114,41 @@ void SoftMaps::fit(const ShadowContext& c) {
     s.spot = *spot;
     s.centre = shadow::spotCamera(*spot, s.nearZ, s.farZ, boxes, true);
     s.tanHalfFov = std::tan(0.5f * shadow::spotFieldOfView(*spot));
-    s.firstLayer = layer;
     s.on = true;
     layer += int(samples_.size());
   }
+}
+
+// A point light inside the scene: six faces around it, their depth range and nearest caster the
+// widest of the six, each face's maps within the budget of one light's maps.
+void SoftMaps::fitCube(const ShadowContext& c, const Light& light, SoftLight& s) const {
+  const std::uint64_t side = std::uint64_t(mapSize()), bytes = 6 * samples_.size() * side * side * 4;
+  if (bytes > kBudgetBytes) {
+    s.why = "inside the scene: a cube of 6 x " + std::to_string(samples_.size()) + " maps of " + std::to_string(side) +
+            "^2 takes " + std::to_string(bytes >> 20) + " MiB, over the " + std::to_string(kBudgetBytes >> 20) +
+            " MiB budget of one light's maps";
+    return;
+  }
+  const shadow::CasterBoxes boxes = c.scene.casterBoxes();
+  s.nearZ = std::numeric_limits<float>::max();
+  s.farZ = 0.0f;
+  for (int f = 0; f < 6; ++f) {
+    const glm::vec2 range = soft::depthRange(faceView(light.position, f), c.scene.bounds(), p_.minNear);
+    s.nearZ = std::min(s.nearZ, range.x);
+    s.farZ = std::max(s.farZ, range.y);
+  }
+  s.nearZ = std::max(p_.minNear, s.nearZ - s.radius);
+  s.farZ = std::max(s.farZ + s.radius, s.nearZ + 0.1f);
+  s.casterNearZ = std::numeric_limits<float>::max();
+  for (int f = 0; f < 6; ++f)
+    s.casterNearZ = std::min(s.casterNearZ,
+                             soft::nearestCasterDepth(faceView(light.position, f), boxes.boxes, boxes.casts, s.nearZ));
+  s.faces = 6;
+  s.spot = light;
+  s.tanHalfFov = kCubeTanHalfFov;
+  s.centre.view = glm::translate(glm::mat4(1.0f), -light.position);
+  s.centre.projection = glm::perspective(2.0f * std::atan(kCubeTanHalfFov), 1.0f, s.nearZ, s.farZ);
+  s.on = true;
 }
 
 // ==== 2. the depth passes: one map per light and sample point on its sphere ======================
@@ -110,13 +156,16 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
                       bool renderMaps) {
   samples_.assign(samples.begin(), samples.begin() + std::min<std::size_t>(samples.size(), kMaxSamples));
   if (samples_.empty()) samples_.push_back(glm::vec3(0.0f));
-  fit(c);
+  fit(c, renderMaps);
   for (std::size_t i = 0; i < lights_.size(); ++i)
     if (!lights_[i].on && c.lights[i].enabled)
       stats.extra.push_back({"light" + std::to_string(i), "no soft shadow (" + lights_[i].why + ")"});
+    else if (lights_[i].faces == 6)
+      stats.extra.push_back({"light" + std::to_string(i),
+                             "a cube: 6 faces inside the scene, " + std::to_string(6 * samples_.size()) + " maps"});
   if (!renderMaps) return;
   int layers = 0;
-  for (const SoftLight& s : lights_) layers += s.on ? int(samples_.size()) : 0;
+  for (const SoftLight& s : lights_) layers += s.on ? s.faces * int(samples_.size()) : 0;
   const int size = mapSize();
   ensureArray(layers > 0 ? size : 1, std::max(layers, 1));
   const shadow::CasterBoxes boxes = c.scene.casterBoxes();
@@ -126,13 +175,22 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
   key << c.scene.revision() << size << arrayLayers_ << p_.offsetFactor << p_.offsetUnits;
   for (const SoftLight& s : lights_) {
     if (!s.on) continue;
-    const glm::mat3 toWorld = glm::transpose(glm::mat3(s.centre.view));
-    Light moved = s.spot;  // same axis and cone: the same rotation, moved by R s_k
-    for (const glm::vec3& sample : samples_) {
-      moved.position = s.spot.position + toWorld * (s.radius * sample);
-      cameras.push_back(shadow::spotCamera(moved, s.nearZ, s.farZ, boxes, true));
-      key << s.firstLayer << cameras.back().viewProj() << std::span<const char>(cameras.back().casters);
-      stats.culledCasters += cameras.back().culled;
+    for (int f = 0; f < s.faces; ++f) {
+      const glm::mat3 toWorld = glm::transpose(glm::mat3(s.faces == 6 ? faceView(s.spot.position, f) : s.centre.view));
+      Light moved = s.spot;  // same axis and cone: the same rotation, moved by R s_k
+      for (const glm::vec3& sample : samples_) {
+        moved.position = s.spot.position + toWorld * (s.radius * sample);
+        if (s.faces == 1) {
+          cameras.push_back(shadow::spotCamera(moved, s.nearZ, s.farZ, boxes, true));
+        } else {
+          shadow::LightCamera& face = cameras.emplace_back();
+          face.view = faceView(moved.position, f);
+          face.projection = s.centre.projection;
+          shadow::cullAgainst(face, boxes, shadow::volumeFromViewProj(face.viewProj()), true);
+        }
+        key << s.firstLayer << cameras.back().viewProj() << std::span<const char>(cameras.back().casters);
+        stats.culledCasters += cameras.back().culled;
+      }
     }
   }
   stats.bytes += std::uint64_t(arraySize_) * std::uint64_t(arraySize_) * std::uint64_t(arrayLayers_) * 4;
@@ -149,9 +207,9 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
     const SoftLight& s = lights_[i];
     if (!s.on) continue;
     auto t = gl::TimerScope(c.timers, "shadow light" + std::to_string(i));
-    for (std::size_t k = 0; k < samples_.size(); ++k) {
+    for (int k = 0; k < s.faces * int(samples_.size()); ++k) {
       const shadow::LightCamera& camera = cameras[next++];
-      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, array_.id(), 0, s.firstLayer + int(k));
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, array_.id(), 0, s.firstLayer + k);
       glClear(GL_DEPTH_BUFFER_BIT);
       stats.triangles += casters_.draw(c.scene, camera.viewProj(), camera.casters, options);
       stats.texels += std::uint64_t(size) * std::uint64_t(size);
@@ -169,6 +227,7 @@ void SoftMaps::bind(const gl::Program& p, int unit) const {
     const std::string n = "[" + std::to_string(i) + "]";
     p.set(("uSoftLayer" + n).c_str(), s ? s->firstLayer : -1);
     if (!s) continue;
+    p.set(("uSoftFaces" + n).c_str(), s->faces);
     p.set(("uSoftView" + n).c_str(), s->centre.view);
     p.set(("uSoftRadius" + n).c_str(), s->radius);
     p.set(("uSoftTanHalfFov" + n).c_str(), s->tanHalfFov);
@@ -178,6 +237,8 @@ void SoftMaps::bind(const gl::Program& p, int unit) const {
   for (std::size_t k = 0; k < samples_.size(); ++k)
     p.set(("uSoftSamples[" + std::to_string(k) + "]").c_str(), samples_[k]);
   p.set("uSoftSampleCount", int(samples_.size()));
+  for (int f = 0; f < 6; ++f)
+    p.set(("uSoftFaceTurn[" + std::to_string(f) + "]").c_str(), glm::mat3(faceView(glm::vec3(0.0f), f)));
   p.set("uSoftMapSize", float(mapSize()));
   p.set("uSoftBias", p_.bias);
   p.set("uSoftSlopeBias", p_.slopeBias);
@@ -201,8 +262,10 @@ void SoftMaps::unbind(int unit) const {
 void SoftMaps::pushShapes(const ShadowContext& c) const {
   for (const SoftLight& s : lights_)
     if (s.on) {
-      c.debug.frustum(s.centre.viewProj(), kFrustumColour);
-      c.debug.name(kFrustumColour, "a light's frustum, from the sphere's centre");
+      for (int f = 0; f < s.faces; ++f)
+        c.debug.frustum(s.faces == 1 ? s.centre.viewProj() : s.centre.projection * faceView(s.spot.position, f),
+                        kFrustumColour);
+      c.debug.name(kFrustumColour, "a light's frustum, from the sphere's centre (a cube's six inside the scene)");
     }
 }
 

@@ -2,12 +2,13 @@
 // The depth maps every soft-shadow technique of lesson 05 starts from: for each spherical light
 // (Light::area = Sphere, radius R; without an area, R = 0 and the shadows come out hard) a
 // perspective camera at the sphere's centre along the light's axis (a spot's own cone; a point
-// light's cone around the scene, soft::spotCovering), and one map per sample point on the sphere,
-// all in one GL_TEXTURE_2D_ARRAY (layer = first layer of the light + sample), so a lit shader can
-// read 64 maps of 4 lights through two texture units. A sample's camera is the centre camera moved
-// by R s_k in its own view space (s_k in the unit ball), so the shader needs only the centre view
-// and the samples. The depth pass is the course's one caster loop (CasterPass), each sample camera
-// culling its own casters (shadow::spotCamera).
+// light's cone around the scene, soft::spotCovering; a point light inside the scene, which no one
+// cone can hold, a cube of six faces as lesson 03's hard point lights), and one map per face and
+// sample point on the sphere, all in one GL_TEXTURE_2D_ARRAY (layer = first layer of the light +
+// face x samples + sample), so a lit shader can read 64 maps of 4 lights through two texture units. A sample's camera
+// is the centre camera moved by R s_k in its own view space (s_k in the unit ball), so the shader needs only the centre
+// view and the samples. The depth pass is the course's one caster loop (CasterPass), each sample camera culling its own
+// casters (shadow::spotCamera).
 //
 // GLSL: shaders/05_soft_shadows/soft_maps.glsl declares what bind() sets; a technique's visibility shader
 // includes it.
@@ -48,13 +49,22 @@ struct SoftMapParams {
 struct SoftLight {
   bool on = false;             // an enabled spot or point light with a camera around the scene
   float radius = 0;            // R (0: no spherical area)
+  int faces = 1;               // 1: one frustum; 6: a cube (a point light inside the scene)
   Light spot;                  // the light as a spot (a point light's cone around the scene)
-  shadow::LightCamera centre;  // from the sphere's centre
+  shadow::LightCamera centre;  // from the sphere's centre (a cube: unturned; face f's is faceView)
   float tanHalfFov = 1, nearZ = 0.2f, farZ = 60;
   float casterNearZ = 0.2f;  // the nearest caster along the axis (soft::nearestCasterDepth), >= nearZ
-  int firstLayer = 0;        // its samples' layers in the array
+  int firstLayer = 0;        // its faces' samples' layers in the array (face f, sample k: + f * samples + k)
   std::string why;           // when off: why (for the header)
 };
+
+// A cube face's field of view is wider than 90 degrees (tan(fov / 2) = kCubeTanHalfFov), so that a
+// filter kernel, a blocker search or a sample point R away from the centre still finds its texels
+// on the face its receiver falls on (the major axis picks the face): a seam needs no lookups on two
+// faces. The price: at equal map size, texels 1.4 times as wide as a 90-degree face's.
+constexpr float kCubeTanHalfFov = 1.4f;
+// The view of face f (shadow::cubeFaceView's order +X, -X, +Y, -Y, +Z, -Z) from `position`.
+glm::mat4 faceView(const glm::vec3& position, int face);
 
 // Poisson taps as the uniform array `name` (name[0], name[1], ...).
 void setTaps(const gl::Program& p, const std::string& name, const std::vector<glm::vec2>& taps);
@@ -68,7 +78,8 @@ class SoftMaps {
   void init();
   // Fits every light to the scene and renders one map per light and sample (samples: unit-ball
   // points in the light's view space, at most kMaxSamples). Counts into `stats`. renderMaps false:
-  // only the cameras (a technique with maps of its own, VSM and ESM, uses them and the uniforms).
+  // only the cameras (a technique with maps of its own, VSM and ESM, uses them and the uniforms;
+  // it has no cube form: a point light inside the scene gets none and the header says why).
   // When the cameras, the casters they keep, the scene and the pass's settings are those the maps
   // were drawn with, the passes are skipped (stats.reusedMaps).
   void render(const ShadowContext& c, const std::vector<glm::vec3>& samples, ShadowStats& stats,
@@ -94,7 +105,8 @@ class SoftMaps {
   SoftMapParams& params() { return p_; }
 
  private:
-  void fit(const ShadowContext& c);
+  void fit(const ShadowContext& c, bool cubes);
+  void fitCube(const ShadowContext& c, const Light& light, SoftLight& s) const;
   void ensureArray(int size, int layers);
 
   std::string label_;

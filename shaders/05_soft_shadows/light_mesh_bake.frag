@@ -16,7 +16,7 @@ layout(location = 0) out vec4 fragColor;
 
 void main() {
   vec3 p = uGridOrigin + uGridStep * vec3(floor(gl_FragCoord.xy), uGridSlice);
-  vec3 view = (uSoftView[uLight] * vec4(p, 1.0)).xyz;
+  vec3 view = softLightView(uLight, p);
   float z = -view.z;
   if (z <= uSoftDepthRange[uLight].x || z >= uSoftDepthRange[uLight].y) {
     fragColor = vec4(1.0);

@@ -14,5 +14,5 @@ float shadowVisibility(int i, vec3 worldPos, vec3 N, out vec2 texelCoords) {
   SoftReceiver r = softReceiver(i, worldPos, N);
   texelCoords = r.uv * uSoftMapSize;
   if (softOutside(i, r)) return 1.0;
-  return softSampledVisibility(i, r.view, mat3(uSoftView[i]) * N, softBias(r), SOFT_SAMPLES);
+  return softSampledVisibility(i, r.view, softLightViewDirection(i, N), softBias(r), SOFT_SAMPLES);
 }

@@ -35,7 +35,7 @@ uniform float uPlaneTolerance;
 float plateauOf(int i, vec2 uv, float zb, vec3 p) {
   float tanHalf = uSoftTanHalfFov[i];
   vec3 bView = vec3((uv - 0.5) * 2.0 * zb * tanHalf, -zb);
-  vec3 b = (uSoftViewInverse[i] * vec4(bView, 1.0)).xyz;
+  vec3 b = (uSoftViewInverse[i] * vec4(softUnturn(i, bView), 1.0)).xyz;
   vec3 L = uLights[i].position;
   if (b.y <= uPlaneHeight + 1e-3 || L.y <= b.y) return 1.0;
   vec3 shadowPoint = L + (b - L) * ((uPlaneHeight - L.y) / (b.y - L.y));
