@@ -41,7 +41,7 @@ set(web_presets_04_shadow_volumes camera_in_volume_zfail many_lights stencil_hea
 set(web_presets_06_texture_filtering moire_nearest:7 trilinear nearest_mipmap_nearest lod_bias_blur)
 # PCSS searches per pixel in WebGL2 (no fine derivatives for the quad's shared search). Presets that
 # measure (M) are left out: the ground truth runs natively only, so the page shows no error overlay.
-set(web_presets_05_soft_shadows contact_hardening pcf_fixed many_4 light_mesh esm forest two_lights)
+set(web_presets_05_soft_shadows contact_hardening pcf_fixed many_4 light_mesh esm forest two_lights point_inside)
 set(web_presets_07_hybrid_maps levels_3 view_levels pcf view_steps)
 set(web_presets_08_psm behind post_view post_behind god_view caster_leaves)
 set(web_presets_09_psm_fixes behind_inverse clip_post_view faces_always lispsm maps)
