@@ -3,6 +3,7 @@
 #include "algorithms/moment_maps.hpp"
 #include "gl/caps.hpp"
 #include "technique/map_pass.hpp"
+#include "technique/map_settings.hpp"
 #include "technique/scene_cache.hpp"
 
 namespace shadowlab::tech {
@@ -18,10 +19,10 @@ GLenum channels(GLenum internal) {
   }
 }
 
-gl::Texture floatTexture(GLenum internal, int size, const std::string& label) {
+gl::Texture floatTexture(GLenum internal, glm::ivec2 size, const std::string& label) {
   gl::Texture t = gl::makeTexture(GL_TEXTURE_2D, label);
   glBindTexture(GL_TEXTURE_2D, t.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), size, size, 0, channels(internal),
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), size.x, size.y, 0, channels(internal),
                internal == GL_RGBA16 ? GL_UNSIGNED_SHORT : GL_FLOAT, nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // filterable: the point of it
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -85,10 +86,11 @@ void FilterableMaps::declare(ParamRegistry& r, const std::string& n) {
 
 void FilterableMaps::init() {
   maps_.init();
+  maps_.setCubeCheck([this](int size) { return cubeRefusal(size); });
   casters_.build();
   blur_.build();
   vao_ = gl::makeVertexArray("filterable maps: fullscreen");
-  dummy_ = floatTexture(storedFormat(GL_RG32F), 1, "filterable maps: none");
+  dummy_ = floatTexture(storedFormat(GL_RG32F), {1, 1}, "filterable maps: none");
   const float far[2] = {1.0f, 1.0f};  // VSM: everything at t = 1; ESM reads exp(c) * exp(-c t) >= 1
   glBindTexture(GL_TEXTURE_2D, dummy_.id());
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RG, GL_FLOAT, far);
@@ -191,19 +193,47 @@ glm::vec4 FilterableMaps::farMoments() const {
   return glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
 }
 
-void FilterableMaps::ensure(Target& t, int size, const std::string& label) {
+void FilterableMaps::ensure(Target& t, int size, int faces, const std::string& label) {
   const GLenum format = storedFormat(textureFormat());
-  if (t.fbo && t.size == size && t.format == format) return;
-  t.moments = floatTexture(format, size, label + " moments");
-  t.scratch = floatTexture(format, size, label + " blur scratch");
+  const glm::ivec2 extent = atlasExtent(size, faces);
+  if (t.fbo && t.size == size && t.faces == faces && t.format == format) return;
+  t.moments = floatTexture(format, extent, label + " moments");
+  t.scratch = floatTexture(format, extent, label + " blur scratch");
   t.depth = gl::makeRenderbuffer(label + " depth");
   glBindRenderbuffer(GL_RENDERBUFFER, t.depth.id());
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, extent.x, extent.y);
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
   t.fbo = colourFbo(t.moments, &t.depth, label + " fbo");
   t.scratchFbo = colourFbo(t.scratch, nullptr, label + " blur fbo");
   t.size = size;
+  t.faces = faces;
   t.format = format;
+}
+
+// One face: size^2; a cube's six: a 3 x 2 atlas of faces (face f at column f % 3, row f / 3).
+glm::ivec2 FilterableMaps::atlasExtent(int size, int faces) {
+  return faces == 6 ? glm::ivec2(3, 2) * size : glm::ivec2(size);
+}
+
+// A cube's atlas must fit a texture's side and the budget of one light's maps (the moments, the
+// blur's scratch and the depth buffer).
+std::string FilterableMaps::cubeRefusal(int size) const {
+  const glm::ivec2 extent = atlasExtent(size, 6);
+  const std::uint64_t bytes =
+      std::uint64_t(extent.x) * std::uint64_t(extent.y) * std::uint64_t(2 * bytesPerTexel() + 4);
+  const int most = gl::caps().maxTextureSize;
+  if (most > 0 && extent.x > most) {
+    int fits = kMapSizes.front();
+    for (int s : kMapSizes)
+      if (3 * s <= most) fits = s;
+    return "a cube's 3 x 2 atlas of " + std::to_string(size) + "^2 faces is " + std::to_string(extent.x) +
+           " texels wide, over this context's " + std::to_string(most) + " (map_size " + std::to_string(fits) +
+           " at most)";
+  }
+  if (bytes > SoftMaps::kBudgetBytes)
+    return "a cube's 3 x 2 atlas of " + std::to_string(size) + "^2 faces takes " + std::to_string(bytes >> 20) +
+           " MiB, over the " + std::to_string(SoftMaps::kBudgetBytes >> 20) + " MiB budget of one light's maps";
+  return "";
 }
 
 // Separable: along x into the scratch texture, along y back into the moments.
@@ -219,8 +249,8 @@ void FilterableMaps::blur(Target& t) {
     const gl::Framebuffer& into;
     const gl::Texture& from;
     glm::vec2 direction;
-  } passes[] = {{t.scratchFbo, t.moments, {1.0f / float(t.size), 0.0f}},
-                {t.fbo, t.scratch, {0.0f, 1.0f / float(t.size)}}};
+  } passes[] = {{t.scratchFbo, t.moments, {1.0f / float(atlasExtent(t.size, t.faces).x), 0.0f}},
+                {t.fbo, t.scratch, {0.0f, 1.0f / float(atlasExtent(t.size, t.faces).y)}}};
   for (const auto& pass : passes) {
     glBindFramebuffer(GL_FRAMEBUFFER, pass.into.id());
     glBindTexture(GL_TEXTURE_2D, pass.from.id());
@@ -238,36 +268,50 @@ void FilterableMaps::render(const ShadowContext& c) {
   const int size = maps_.mapSize();
   const auto& lights = maps_.lights();
   glBindSampler(0, 0);
+  const shadow::CasterBoxes boxes = c.scene.casterBoxes();
   for (std::size_t i = 0; i < lights.size(); ++i) {
-    if (!lights[i].on) continue;
+    const SoftLight& light = lights[i];
+    if (!light.on) continue;
     Target& target = targets_[i];
-    ensure(target, size, name() + " light" + std::to_string(i));
-    stats_.culledCasters += lights[i].centre.culled;
-    stats_.bytes += std::uint64_t(size) * std::uint64_t(size) * std::uint64_t(bytesPerTexel()) * 2 + 4ull * size * size;
-    // What the moments depend on: the scene, the camera and its casters, the depth range, the
+    ensure(target, size, light.faces, name() + " light" + std::to_string(i));
+    // One camera, or a cube's six (each face a tile of the atlas).
+    std::vector<shadow::LightCamera> cameras;
+    for (int f = 0; f < light.faces; ++f)
+      cameras.push_back(light.faces == 1 ? light.centre : SoftMaps::faceCamera(light, f, light.spot.position, boxes));
+    const glm::ivec2 extent = atlasExtent(size, light.faces);
+    stats_.bytes += std::uint64_t(extent.x) * std::uint64_t(extent.y) * (std::uint64_t(bytesPerTexel()) * 2 + 4);
+    // What the moments depend on: the scene, the cameras and their casters, the depth range, the
     // kind's exponents or format, the blur.
     PassKey key;
-    key << c.scene.revision() << size << lights[i].nearZ << lights[i].farZ << p_.exponent << p_.evsmPositive
-        << p_.evsmNegative << p_.msmFormat << p_.blur << lights[i].centre.viewProj()
-        << std::span<const char>(lights[i].centre.casters);
+    key << c.scene.revision() << size << light.nearZ << light.farZ << p_.exponent << p_.evsmPositive << p_.evsmNegative
+        << p_.msmFormat << p_.blur;
+    for (const shadow::LightCamera& camera : cameras) {
+      key << camera.viewProj() << std::span<const char>(camera.casters);
+      stats_.culledCasters += camera.culled;
+    }
     const MapPass pass(c, stats_, int(i), p_.reuseMaps, std::move(key), target.rendered, target.drawn);
     if (!pass.draw()) continue;
     glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
-    glViewport(0, 0, size, size);
+    glViewport(0, 0, extent.x, extent.y);
     const glm::vec4 far = farMoments();  // t = 1: nothing in front
     glClearColor(far.x, far.y, far.z, far.w);
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     casters_.setUniforms([&](const gl::Program& p) {
-      p.set("uDepthRange", glm::vec2(lights[i].nearZ, lights[i].farZ));
+      p.set("uDepthRange", glm::vec2(light.nearZ, light.farZ));
       p.set("uExponent", esmExponent());
       p.set("uKind", int(kind_));
       p.set("uEvsm", evsmExponents());
       p.set("uMsm16", msm16());
     });
-    stats_.triangles += casters_.draw(c.scene, lights[i].centre.viewProj(), lights[i].centre.casters, {true, false});
+    for (int f = 0; f < light.faces; ++f) {
+      glViewport((f % 3) * size, (f / 3) * size, size, size);
+      stats_.triangles +=
+          casters_.draw(c.scene, cameras[std::size_t(f)].viewProj(), cameras[std::size_t(f)].casters, {true, false});
+      stats_.texels += std::uint64_t(size) * std::uint64_t(size);
+    }
+    glViewport(0, 0, extent.x, extent.y);
     blur(target);
-    stats_.texels += std::uint64_t(size) * std::uint64_t(size);
   }
   glClearColor(0, 0, 0, 1);
   glBindFramebuffer(GL_FRAMEBUFFER, c.frame.framebuffer);

@@ -10,7 +10,10 @@
 //   evsm4  and of -exp(-c- t') too (t' = 2 t - 1): a far receiver's bound much tighter
 //   msm    moment shadow maps (Peters and Klein 2015): (t, t^2, t^3, t^4) and the Hamburger bound,
 //          in 32-bit floats or their optimised 16-bit form (the same 8 bytes a texel as VSM)
-// The light camera is the sphere's centre camera (SoftMaps, without its depth maps); the depth pass
+// The light camera is the sphere's centre camera (SoftMaps, without its depth maps; a point light
+// inside the scene: a cube's six faces, drawn as the tiles of a 3 x 2 atlas, blurred together:
+// a face's tile is wider than what it is looked up for, so the blur across a tile's edge lands
+// where no lookup reads); the depth pass
 // is CasterPass with shaders/05_soft_shadows/depth_moments.frag, the blur shaders/05_soft_shadows/blur.frag.
 // GLSL: shaders/05_soft_shadows/shadow_filterable.frag.
 #include <array>
@@ -59,11 +62,14 @@ class FilterableMaps : public ShadowTechnique {
     gl::Renderbuffer depth;
     gl::Framebuffer fbo, scratchFbo;
     int size = 0;
+    int faces = 1;  // 6: a cube's faces in a 3 x 2 atlas
     GLenum format = 0;
     PassKey rendered;    // what the moments were last drawn and blurred from
     DrawnFigures drawn;  // what that cost (kept moments' figures)
   };
-  void ensure(Target& t, int size, const std::string& label);
+  void ensure(Target& t, int size, int faces, const std::string& label);
+  static glm::ivec2 atlasExtent(int size, int faces);
+  std::string cubeRefusal(int size) const;  // why a cube's atlas cannot be had ("" where it can)
   bool msm16() const { return kind_ == Kind::Msm && p_.msmFormat == MomentFormat::Unorm16; }
   GLenum textureFormat() const;
   static GLenum storedFormat(GLenum format);

@@ -81,7 +81,7 @@ void SoftMaps::ensureArray(int size, int layers) {
 // ==== 1. the light cameras: one at the sphere's centre per light, fitted to the scene =============
 glm::mat4 faceView(const glm::vec3& position, int face) { return shadow::cubeFaceView(position, face); }
 
-void SoftMaps::fit(const ShadowContext& c, bool cubes) {
+void SoftMaps::fit(const ShadowContext& c) {
   lights_.assign(std::min<std::size_t>(c.lights.size(), kMaxLights), {});
   const shadow::CasterBoxes boxes = c.scene.casterBoxes();
   int layer = 0;
@@ -93,10 +93,7 @@ void SoftMaps::fit(const ShadowContext& c, bool cubes) {
     if (!light.enabled) s.why = "off";
     else if (light.kind == LightKind::Directional) s.why = "directional: a sphere needs a position";
     else if (light.kind == LightKind::Spot) spot = light;
-    else if (!(spot = soft::spotCovering(light, c.scene.bounds()))) {
-      cube = cubes;
-      if (!cube) s.why = "inside the scene: no one frustum, and filtered maps have no cube form here";
-    }
+    else if (!(spot = soft::spotCovering(light, c.scene.bounds()))) cube = true;
     if (!spot && !cube) continue;
     s.radius = light.area == AreaShape::Sphere ? light.radius : 0.0f;
     s.firstLayer = layer;
@@ -119,6 +116,15 @@ void SoftMaps::fit(const ShadowContext& c, bool cubes) {
   }
 }
 
+shadow::LightCamera SoftMaps::faceCamera(const SoftLight& s, int face, const glm::vec3& position,
+                                         const shadow::CasterBoxes& boxes) {
+  shadow::LightCamera camera;
+  camera.view = faceView(position, face);
+  camera.projection = s.centre.projection;
+  shadow::cullAgainst(camera, boxes, shadow::volumeFromViewProj(camera.viewProj()), true);
+  return camera;
+}
+
 // A point light inside the scene: six faces around it, their depth range and nearest caster the
 // widest of the six, each face's maps within the budget of one light's maps.
 void SoftMaps::fitCube(const ShadowContext& c, const Light& light, SoftLight& s) const {
@@ -129,6 +135,11 @@ void SoftMaps::fitCube(const ShadowContext& c, const Light& light, SoftLight& s)
             " MiB budget of one light's maps";
     return;
   }
+  if (cubeCheck_)
+    if (std::string refused = cubeCheck_(mapSize()); !refused.empty()) {
+      s.why = "inside the scene: " + refused;
+      return;
+    }
   const shadow::CasterBoxes boxes = c.scene.casterBoxes();
   s.nearZ = std::numeric_limits<float>::max();
   s.farZ = 0.0f;
@@ -156,7 +167,7 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
                       bool renderMaps) {
   samples_.assign(samples.begin(), samples.begin() + std::min<std::size_t>(samples.size(), kMaxSamples));
   if (samples_.empty()) samples_.push_back(glm::vec3(0.0f));
-  fit(c, renderMaps);
+  fit(c);
   for (std::size_t i = 0; i < lights_.size(); ++i)
     if (!lights_[i].on && c.lights[i].enabled)
       stats.extra.push_back({"light" + std::to_string(i), "no soft shadow (" + lights_[i].why + ")"});
@@ -180,14 +191,8 @@ void SoftMaps::render(const ShadowContext& c, const std::vector<glm::vec3>& samp
       Light moved = s.spot;  // same axis and cone: the same rotation, moved by R s_k
       for (const glm::vec3& sample : samples_) {
         moved.position = s.spot.position + toWorld * (s.radius * sample);
-        if (s.faces == 1) {
-          cameras.push_back(shadow::spotCamera(moved, s.nearZ, s.farZ, boxes, true));
-        } else {
-          shadow::LightCamera& face = cameras.emplace_back();
-          face.view = faceView(moved.position, f);
-          face.projection = s.centre.projection;
-          shadow::cullAgainst(face, boxes, shadow::volumeFromViewProj(face.viewProj()), true);
-        }
+        cameras.push_back(s.faces == 1 ? shadow::spotCamera(moved, s.nearZ, s.farZ, boxes, true)
+                                       : faceCamera(s, f, moved.position, boxes));
         key << s.firstLayer << cameras.back().viewProj() << std::span<const char>(cameras.back().casters);
         stats.culledCasters += cameras.back().culled;
       }

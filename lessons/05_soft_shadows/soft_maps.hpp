@@ -13,6 +13,7 @@
 // GLSL: shaders/05_soft_shadows/soft_maps.glsl declares what bind() sets; a technique's visibility shader
 // includes it.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -78,8 +79,7 @@ class SoftMaps {
   void init();
   // Fits every light to the scene and renders one map per light and sample (samples: unit-ball
   // points in the light's view space, at most kMaxSamples). Counts into `stats`. renderMaps false:
-  // only the cameras (a technique with maps of its own, VSM and ESM, uses them and the uniforms;
-  // it has no cube form: a point light inside the scene gets none and the header says why).
+  // only the cameras (a technique with maps of its own, VSM and ESM, uses them and the uniforms).
   // When the cameras, the casters they keep, the scene and the pass's settings are those the maps
   // were drawn with, the passes are skipped (stats.reusedMaps).
   void render(const ShadowContext& c, const std::vector<glm::vec3>& samples, ShadowStats& stats,
@@ -99,13 +99,20 @@ class SoftMaps {
   // is refused up front like any bad value (exit 2), naming the figure and what fits.
   void checkBudget(ParamRegistry& r, const std::string& n, const int* samples) const;
   const std::vector<SoftLight>& lights() const { return lights_; }
+  // Face `face` of a cube light's camera from `position` (its centre, or a sample point on it),
+  // casters culled to that face.
+  static shadow::LightCamera faceCamera(const SoftLight& s, int face, const glm::vec3& position,
+                                        const shadow::CasterBoxes& boxes);
+  // A technique with maps of its own refuses a cube it cannot hold: `check(mapSize)` returns why
+  // ("" where it fits), and such a light gets no soft shadow, the header saying why.
+  void setCubeCheck(std::function<std::string(int)> check) { cubeCheck_ = std::move(check); }
   const std::vector<glm::vec3>& samples() const { return samples_; }
   int mapSize() const;
   const SoftMapParams& params() const { return p_; }
   SoftMapParams& params() { return p_; }
 
  private:
-  void fit(const ShadowContext& c, bool cubes);
+  void fit(const ShadowContext& c);
   void fitCube(const ShadowContext& c, const Light& light, SoftLight& s) const;
   void ensureArray(int size, int layers);
 
@@ -118,6 +125,7 @@ class SoftMaps {
   gl::Framebuffer fbo_;
   int arraySize_ = 0, arrayLayers_ = 0;
   gl::Sampler compare_, raw_;
+  std::function<std::string(int)> cubeCheck_;
   PassKey rendered_;    // what the maps were last drawn from
   DrawnFigures drawn_;  // what they cost then (kept maps' figures)
 };

@@ -11,10 +11,11 @@
 //   MSM   (#define MSM, MSM16) the Hamburger 4MSM bound from four moments, three Dirac deltas
 #include "05_soft_shadows/soft_maps.glsl"
 
-uniform sampler2D uMoments[MAX_LIGHTS];
+uniform sampler2D uMoments[MAX_LIGHTS];  // a cube's: its six faces in a 3 x 2 atlas
 
 // GLSL ES 3.00 (WebGL2) indexes an array of samplers with constants only: a switch there.
-vec4 momentsAt(int i, vec2 uv) {
+vec4 momentsAt(int i, vec2 faceUv) {
+  vec2 uv = uSoftFaces[i] == 6 ? (vec2(float(softFace % 3), float(softFace / 3)) + faceUv) / vec2(3.0, 2.0) : faceUv;
 #ifdef SHADOWLAB_GLES
   switch (i) {
     case 0: return texture(uMoments[0], uv);
