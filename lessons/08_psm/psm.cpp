@@ -116,7 +116,9 @@ void PerspectiveShadowMaps::planLight(const ShadowContext& c, int i, const psm::
     if (l.keep[j]) l.casterBoxes.push_back(c.scene.boxes()[j]);
   if (p_.cullCasters) stats_.culledCasters += culled;
   else l.keep.assign(c.scene.casts().begin(), c.scene.casts().end());
-  l.planner.plan(camera, h, receivers_, c.scene.boxes(), l.casterBoxes, switches());
+  psm::PsmSwitches s = switches();
+  s.screenHeight = std::max(1, c.frame.height);
+  l.planner.plan(camera, h, receivers_, c.scene.boxes(), l.casterBoxes, s);
   l.planned = true;
   addCounters(i);
 }
@@ -153,7 +155,16 @@ void PerspectiveShadowMaps::planLights(const ShadowContext& c) {
   receivers_ = receiverCache_.get(c.scene, p_.receiverTiles);
   lights_.resize(kPsmLights);
   const psm::CameraFrustum camera = viewerFrustum(c);
+  // The fall-back predicts m where the camera's pixels land: 16 x 9 rays into the scene, cast again
+  // only when the scene or the camera moved.
+  PassKey seen;
+  seen << c.scene.revision() << camera.viewProj;
+  if (!(seen == seenKey_)) {
+    psm::screenSceneSamples(camera, c.scene.scene(), 16, 9, seen_);
+    seenKey_ = std::move(seen);
+  }
   for (int i = 0; i < kPsmLights; ++i) {
+    lights_[std::size_t(i)].planner.setSeen(seen_);
     if (i < int(c.lights.size())) planLight(c, i, camera);
     else lights_[std::size_t(i)].planned = false;
   }
@@ -191,7 +202,8 @@ void PerspectiveShadowMaps::addCounters(int i) {
     char b[96];
     const double ratio = plan.warped.meanAliasing / plan.uniform.meanAliasing;
     if (std::isfinite(ratio))
-      std::snprintf(b, sizeof b, "%.2fx the uniform map's%s", ratio, plan.fallback ? ": the uniform map" : "");
+      std::snprintf(b, sizeof b, "%.3g, %.2fx the uniform map's%s", plan.warped.meanAliasing, ratio,
+                    plan.fallback ? ": the uniform map" : "");
     else std::snprintf(b, sizeof b, "unbounded: receivers with no texel%s", plan.fallback ? ": the uniform map" : "");
     stats_.extra.push_back({n + "warp's predicted m", b});
   }

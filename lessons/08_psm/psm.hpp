@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "algorithms/psm/psm_plan.hpp"
+#include "technique/pass_key.hpp"
 #include "technique/post_projective_view.hpp"
 #include "projective_maps.hpp"
 #include "technique/technique.hpp"
@@ -103,6 +104,8 @@ class PerspectiveShadowMaps : public ShadowTechnique, public PostProjectiveSubje
   std::vector<PerLight> lights_;
   ReceiverVolumes receiverCache_;
   std::span<const Aabb> receivers_;
+  std::vector<psm::SurfaceSample> seen_;  // the surfaces the camera sees: the fall-back's prediction
+  PassKey seenKey_;                       // the scene and camera they were cast for
   ShadowStats stats_;
 };
 

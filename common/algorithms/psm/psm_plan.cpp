@@ -98,11 +98,11 @@ void PsmPlanner::chooseFallback(const PsmSwitches& s, const CameraFrustum& camer
   const glm::dmat4 uniform =
       fitLispsm(plan_.camera, -glm::dvec3(light), world_, s.options.depthRange, std::numeric_limits<double>::infinity())
           .worldToClip;
-  const glm::dmat4& view = camera.view;
-  screenSamples(camera, receivers, 16, 9, samples_);
-  plan_.warped = predictTexelDensity(view, samples_, {warped.data(), std::size_t(plan_.mapCount)},
-                                     faceMapSize(s.mapSide, plan_.mapCount), light);
-  plan_.uniform = predictTexelDensity(view, samples_, {&uniform, 1}, s.mapSide, light);
+  if (seen_.empty()) screenSurfaceSamples(camera, receivers, 16, 9, samples_);
+  else samples_.assign(seen_.begin(), seen_.end());
+  plan_.warped = predictAliasing(camera, s.screenHeight, samples_, {warped.data(), std::size_t(plan_.mapCount)},
+                                 faceMapSize(s.mapSide, plan_.mapCount), light);
+  plan_.uniform = predictAliasing(camera, s.screenHeight, samples_, {&uniform, 1}, s.mapSide, light);
   if (!s.uniformFallback || plan_.uniform.points == 0) return;
   if (!(plan_.warped.meanAliasing > s.fallbackRatio * plan_.uniform.meanAliasing)) return;
   LightCamera c;

@@ -48,6 +48,7 @@ struct PsmSwitches {
   bool uniformFallback = false;
   double fallbackRatio = 1.0;
   int mapSide = 2048;
+  int screenHeight = 720;                             // the camera's pixels high (the predicted m is per pixel)
   PsmOptions options;                                 // depth range, the Auto switch's cone limit, near fraction, steps
   double singleMapMaxHalfAngle = 1.5620696805349117;  // 89.5 degrees: the widest single map (faces Never)
   // A light this close to parallel to the near plane (|h.w| <= tolerance |h.xyz|) is taken as a
@@ -110,6 +111,9 @@ class PsmPlanner {
   // original fits to all of them); casters: the potential casters' boxes (for the slide).
   const PsmPlan& plan(const CameraFrustum& camera, const glm::dvec4& light, std::span<const Aabb> receivers,
                       std::span<const Aabb> objects, std::span<const Aabb> casters, const PsmSwitches& switches);
+  // The surfaces the camera sees (screenSceneSamples), for the fall-back's prediction from the next
+  // plan() on; none: the prediction samples the receiver volumes (screenSurfaceSamples).
+  void setSeen(std::span<const SurfaceSample> seen) { seen_.assign(seen.begin(), seen.end()); }
   const PsmPlan& result() const { return plan_; }
   std::span<const glm::dvec3> worldKeyPoints() const { return world_; }  // what the light camera is fitted to
   std::span<const glm::dvec3> postKeyPoints() const { return post_; }    // the same in plan().camera's space
@@ -119,7 +123,8 @@ class PsmPlanner {
   void fitFaces(const PsmSwitches& s);
   void chooseFallback(const PsmSwitches& s, const CameraFrustum& camera, const glm::dvec4& light,
                       std::span<const Aabb> receivers);
-  std::vector<glm::dvec3> world_, post_, scratch_, samples_;
+  std::vector<glm::dvec3> world_, post_, scratch_;
+  std::vector<SurfaceSample> samples_, seen_;
   PsmPlan plan_;
 };
 
