@@ -96,7 +96,7 @@ set(web_hidden "GL_ARB_geometry_shader4,GL_ARB_texture_border_clamp,GL_ARB_depth
 # PCSS's own search per pixel (16 taps, rotated per pixel) instead of a quarter of them shared by the quad.
 set(web_bounds_06_texture_filtering --bound wrap_modes=2,2.5)
 set(web_bounds_05_soft_shadows --bound default=0.8,0.6 --bound contact_hardening=0.5,0.5 --bound forest=2.5,1
-                               --bound two_lights=0.7,0.5 --bound error_overlay=2.6,1.7)
+                               --bound two_lights=0.7,0.5 --bound error_overlay=2.6,1.7 --bound point_inside=2.6,0.9)
 set(web_bounds_10_showdown --bound soft_pcss=0.8,0.6)
 foreach(lesson IN ITEMS 02_shadow_maps 03_shadow_quality 04_shadow_volumes 05_soft_shadows 06_texture_filtering
                         07_hybrid_maps 08_psm 09_psm_fixes 10_showdown)
