@@ -155,11 +155,15 @@ void PerspectiveShadowMaps::planLights(const ShadowContext& c) {
   receivers_ = receiverCache_.get(c.scene, p_.receiverTiles);
   lights_.resize(kPsmLights);
   const psm::CameraFrustum camera = viewerFrustum(c);
-  // The fall-back predicts m where the camera's pixels land: 16 x 9 rays into the scene, cast again
-  // only when the scene or the camera moved.
+  // The fall-back (a directional light's) predicts m where the camera's pixels land: 16 x 9 rays
+  // into the scene, cast only for a directional light and again only when the scene or the camera moved.
+  bool directional = false;
+  for (int i = 0; i < kPsmLights && i < int(c.lights.size()); ++i)
+    directional =
+        directional || (c.lights[std::size_t(i)].enabled && c.lights[std::size_t(i)].kind == LightKind::Directional);
   PassKey seen;
   seen << c.scene.revision() << camera.viewProj;
-  if (!(seen == seenKey_)) {
+  if (directional && !(seen == seenKey_)) {
     psm::screenSceneSamples(camera, c.scene.scene(), 16, 9, seen_);
     seenKey_ = std::move(seen);
   }
