@@ -70,9 +70,10 @@ Measurement::Measurement() = default;
 Measurement::~Measurement() = default;
 
 void Measurement::declare(ParamRegistry& r) {
-  r.addChoice("measure.overlay", &overlay_, {"none", "error", "aliasing", "reference", "figures"},
+  r.addChoice("measure.overlay", &overlay_, {"none", "error", "aliasing", "reference", "figures", "shimmer"},
               "compare with ground truth (Embree rays from the shaded points): leaks red, false shadows blue; "
-              "figures: the header's figures over the lit picture, no overlay")
+              "figures: the header's figures over the lit picture, no overlay; shimmer: yellow where the shadow "
+              "flipped from frame to frame and the ground truth's did not, fading over about 30 frames")
       .hotkey = "M";
   // The lesson's lights are declared before (lightN.kind): the range is theirs, so a light the
   // lesson lacks is refused like every other bad value (exit 2), overlay or not.
@@ -258,6 +259,7 @@ void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& re
                   lastViewProj = lastFrame_.projection * lastFrame_.view;
   const bool moved = result_.hasTemporal && viewProj != lastViewProj;
   const std::optional<ImageF> again = moved ? techniqueFromLastCamera(redraw) : std::nullopt;
+  std::vector<std::uint8_t> flipped;  // the extra flips, pixel by pixel (not through reprojection)
   if (again) {
     const bool lightMoved = light.position != lastLightState_.position || light.direction != lastLightState_.direction;
     ImageF traced;  // the reference at the last frame's points under this frame's light, when it moved
@@ -265,8 +267,8 @@ void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& re
       traced = result_.soft ? truth_->softVisibility(lastSurface_, light, samples_, std::uint64_t(seed_))
                             : truth_->hardVisibility(lastSurface_, light);
     result_.redrawn = true;
-    result_.temporal =
-        measure::compareFrames(lastTechnique_, *again, lastReference_, lightMoved ? traced : lastReference_);
+    result_.temporal = measure::compareFrames(lastTechnique_, *again, lastReference_,
+                                              lightMoved ? traced : lastReference_, 0.5f, &flipped);
   } else if (moved) {
     result_.reprojected = true;
     const measure::ReprojectedTemporalErrors r =
@@ -275,8 +277,9 @@ void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& re
     result_.temporal = r.errors;
     result_.unmatched = r.unmatched;
   } else if (result_.hasTemporal) {
-    result_.temporal = measure::compareFrames(lastTechnique_, technique, lastReference_, reference);
+    result_.temporal = measure::compareFrames(lastTechnique_, technique, lastReference_, reference, 0.5f, &flipped);
   }
+  fadeShimmer(flipped, technique.data.size());
   // A mean over the last 30 frames in a row: one frame's flips come and go with the texel grid.
   if (!result_.hasTemporal) recent_.clear();
   else recent_.push_back(result_.soft ? result_.temporal.extraChange : result_.temporal.extraFlipPct);
@@ -291,6 +294,17 @@ void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& re
   lastFrame_ = frameInfo_;
   lastMeasured_ = frame_;
   lastLight_ = light_;
+}
+
+// The shimmer overlay's heat: this frame's extra flips at 1, earlier ones fading by kShimmerFade a
+// measured frame (a tenth left after 30). Redrawn, the flips sit at the previous frame's pixels: a
+// slow camera moves less than a pixel a frame. Reprojected (a lesson that cannot redraw), nothing
+// new lights up; a break in the run of compared frames starts it again.
+void Measurement::fadeShimmer(const std::vector<std::uint8_t>& flipped, std::size_t pixels) {
+  constexpr float kShimmerFade = 0.93f;
+  if (!result_.hasTemporal || shimmerHeat_.size() != pixels) shimmerHeat_.assign(pixels, 0.0f);
+  for (std::size_t i = 0; i < pixels; ++i)
+    shimmerHeat_[i] = i < flipped.size() && flipped[i] ? 1.0f : shimmerHeat_[i] * kShimmerFade;
 }
 
 // This frame's shadows drawn from the last measured frame's camera into the measurement target,
@@ -365,9 +379,12 @@ void Measurement::compute(const MeasureSource& source, const Redraw& redraw) {
 }
 
 void Measurement::uploadOverlay() {
+  Image8 shimmer;
+  if (overlay_ == Overlay::Shimmer) shimmer = measure::shimmerHeatmap(shimmerHeat_, result_.width, result_.height);
   const Image8* shown = overlay_ == Overlay::Figures     ? nullptr
                         : overlay_ == Overlay::Aliasing  ? (result_.hasAliasing ? &result_.aliasingHeatmap : nullptr)
                         : overlay_ == Overlay::Reference ? &result_.referenceImage
+                        : overlay_ == Overlay::Shimmer   ? &shimmer
                                                          : &result_.errorHeatmap;
   // The heatmaps' and the visibility's bytes are what to show: no sRGB decode on the way.
   if (shown) overlayTexture_ = gl::uploadTexture(*shown, "measurement overlay", false, gl::ColorData::Linear);
@@ -412,6 +429,9 @@ std::optional<Legend> Measurement::legend() const {
     return Legend{"error against ground truth",
                   {{toColor(measure::kLeakColor), "light leak: lit, should be shadowed"},
                    {toColor(measure::kFalseShadowColor), "false shadow: shadowed, should be lit"}}};
+  if (overlay_ == Overlay::Shimmer)
+    return Legend{"shimmer from frame to frame",
+                  {{toColor(measure::kShimmerColor), "flipped, the ground truth did not"}}};
   if (overlay_ == Overlay::Aliasing) {
     Legend l{"aliasing m: screen pixels per shadow texel", {}};
     for (const auto& [m, label] :

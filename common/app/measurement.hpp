@@ -144,13 +144,14 @@ class Measurement {
   void compareWithLastFrame(const ImageF& technique, const ImageF& reference, const ImageF& position,
                             const measure::SurfaceBuffer& surface, const Light& light, const Redraw& redraw);
   std::optional<ImageF> techniqueFromLastCamera(const Redraw& redraw);
+  void fadeShimmer(const std::vector<std::uint8_t>& flipped, std::size_t pixels);
   Readback readBack(int factor);
   void ensureTruth(const MeasureSource& source);
   void measureAliasing(ImageF jacobian, const std::vector<std::uint8_t>& covered);
   void uploadOverlay();
   void drawOverlay(unsigned frameFbo);
 
-  enum class Overlay { None, Error, Aliasing, Reference, Figures };
+  enum class Overlay { None, Error, Aliasing, Reference, Figures, Shimmer };
   Overlay overlay_ = Overlay::None;
   int light_ = 0;
   int scale_ = 2;
@@ -180,6 +181,7 @@ class Measurement {
   Light lastLightState_;
   int factor_ = 1;                   // the last measurement's subsampling
   std::vector<double> recent_;       // shimmer of the last frames compared in a row (the header's mean)
+  std::vector<float> shimmerHeat_;   // the shimmer overlay: 1 where a pixel flipped this frame, fading after
   FrameInfo frameInfo_, lastFrame_;  // this frame's and the last measured frame's (size, camera)
 };
 

@@ -230,7 +230,8 @@ struct FlipCount {
   TemporalErrors e;
   double change = 0, referenceChange = 0, extra = 0;
   float litThreshold = 0.5f;
-  void add(float t0, float t1, float r0, float r1) {
+  // True when the technique flips here and the reference does not.
+  bool add(float t0, float t1, float r0, float r1) {
     ++e.pixels;
     const bool flip = (t0 >= litThreshold) != (t1 >= litThreshold);
     const bool referenceFlip = (r0 >= 0.5f) != (r1 >= 0.5f);
@@ -241,6 +242,7 @@ struct FlipCount {
     change += d;
     referenceChange += dr;
     extra += std::max(d - dr, 0.0);
+    return flip && !referenceFlip;
   }
   TemporalErrors done() {
     if (e.pixels) {
@@ -258,15 +260,17 @@ struct FlipCount {
 }  // namespace
 
 TemporalErrors compareFrames(const ImageF& techniqueBefore, const ImageF& technique, const ImageF& referenceBefore,
-                             const ImageF& reference, float litThreshold) {
+                             const ImageF& reference, float litThreshold, std::vector<std::uint8_t>* extraAt) {
   checkPair(technique, reference, "compareFrames");
   checkPair(techniqueBefore, referenceBefore, "compareFrames");
   checkPair(technique, techniqueBefore, "compareFrames");
   FlipCount count{.litThreshold = litThreshold};
+  if (extraAt) extraAt->assign(reference.data.size(), 0);
   for (std::size_t i = 0; i < reference.data.size(); ++i) {
     const float r0 = referenceBefore.data[i], r1 = reference.data[i];
     if (!(r0 >= 0.0f) || !(r1 >= 0.0f)) continue;
-    count.add(techniqueBefore.data[i], technique.data[i], r0, r1);
+    const bool extra = count.add(techniqueBefore.data[i], technique.data[i], r0, r1);
+    if (extraAt) (*extraAt)[i] = extra;
   }
   return count.done();
 }
@@ -340,6 +344,19 @@ Image8 hardErrorHeatmap(const ImageF& technique, const ImageF& reference, float 
     else if (!techLit && refLit) put(out, i, kFalseShadowColor);
     else put(out, i, refLit ? Rgb8{200, 200, 200} : Rgb8{110, 110, 110});
   }
+  return out;
+}
+
+Image8 shimmerHeatmap(const std::vector<float>& heat, int width, int height) {
+  if (width < 0 || height < 0 || heat.size() != std::size_t(width) * std::size_t(height))
+    throw std::invalid_argument("shimmerHeatmap: " + std::to_string(heat.size()) + " values for " +
+                                std::to_string(width) + "x" + std::to_string(height) + " pixels");
+  Image8 out = blank(width, height);
+  for (std::size_t i = 0; i < heat.size(); ++i)
+    if (heat[i] > 0.0f) {
+      put(out, i, kShimmerColor);
+      out.data[4 * i + 3] = std::uint8_t(std::lround(255.0f * std::min(heat[i], 1.0f)));
+    }
   return out;
 }
 

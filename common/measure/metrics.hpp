@@ -95,8 +95,11 @@ struct TemporalErrors {
   double meanChange = 0, referenceMeanChange = 0;  // mean |dV| of the technique and of the reference
   double extraChange = 0;                          // mean max(|dV| - |dV_reference|, 0)
 };
+// `extraAt`, when given, becomes one byte a pixel: 1 where the technique flips and the reference does
+// not (the pixels the shimmer overlay lights up), else 0.
 TemporalErrors compareFrames(const ImageF& techniqueBefore, const ImageF& technique, const ImageF& referenceBefore,
-                             const ImageF& reference, float litThreshold = 0.5f);
+                             const ImageF& reference, float litThreshold = 0.5f,
+                             std::vector<std::uint8_t>* extraAt = nullptr);
 
 // The same figures under a moving camera, where a pixel sees another world point each frame: each
 // pixel is compared with the previous frame's pixel that saw ITS point (the point projected with the
@@ -123,6 +126,11 @@ ReprojectedTemporalErrors compareFramesReprojected(const FrameSamples& before, c
 inline constexpr Rgb8 kLeakColor{255, 48, 32};          // lit, should be shadowed
 inline constexpr Rgb8 kFalseShadowColor{40, 110, 255};  // shadowed, should be lit
 // Agreement is grey: lit 200, shadowed 110; not facing 50; background transparent black.
+inline constexpr Rgb8 kShimmerColor{255, 214, 0};  // the shimmer overlay: flipped, the reference did not
+// The shimmer overlay: kShimmerColor where `heat` (one value a pixel, top row first) is above 0, its
+// alpha the heat (1: flipped this frame, fading after); transparent elsewhere, so the lit picture
+// shows through. Throws std::invalid_argument when heat holds not width x height values.
+Image8 shimmerHeatmap(const std::vector<float>& heat, int width, int height);
 Image8 hardErrorHeatmap(const ImageF& technique, const ImageF& reference, float litThreshold = 0.5f);
 // Signed soft error: too bright toward kLeakColor, too dark toward kFalseShadowColor, saturating at
 // |error| = fullScale; a zero error shows the reference's visibility in grey.

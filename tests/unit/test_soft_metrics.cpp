@@ -1,6 +1,10 @@
 // measure.metrics for soft shadows: the umbra over- and under-estimate next to the RMSE (lesson 05).
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
 #include "measure/ground_truth.hpp"
 #include "measure/metrics.hpp"
 
@@ -73,4 +77,28 @@ TEST_CASE("measure.metrics: shimmer is a flip between two frames that the refere
   const TemporalErrors still = compareFrames(tech, tech, ref, ref);
   CHECK(still.flips == 0);
   CHECK(still.extraChange == 0.0);
+}
+
+TEST_CASE("measure.metrics: the shimmer overlay lights the pixels that flip where the reference does not") {
+  // The same six pixels: the shimmering pixel (2) and 0.4 -> 0.7 across the lit threshold (4) are
+  // the extra flips; the true edge (1), the missed flip (3) and the pixel not facing before (5) are not.
+  const ImageF refBefore = row({1.0f, 1.0f, 1.0f, 0.0f, 0.6f, kNotFacing});
+  const ImageF ref = row({1.0f, 0.0f, 1.0f, 1.0f, 0.7f, 1.0f});
+  const ImageF techBefore = row({1.0f, 1.0f, 1.0f, 0.0f, 0.4f, 0.0f});
+  const ImageF tech = row({1.0f, 0.0f, 0.0f, 0.0f, 0.7f, 1.0f});
+  std::vector<std::uint8_t> at = {9, 9};  // replaced whole, whatever it held
+  const TemporalErrors e = compareFrames(techBefore, tech, refBefore, ref, 0.5f, &at);
+  CHECK(at == std::vector<std::uint8_t>{0, 0, 1, 0, 1, 0});
+  CHECK(std::size_t(std::count(at.begin(), at.end(), 1)) == e.extraFlips);
+  // Heat 1 is opaque yellow, a faded 0.5 half transparent, 0 leaves the picture alone.
+  const Image8 overlay = shimmerHeatmap({1.0f, 0.5f, 0.0f}, 3, 1);
+  CHECK(overlay.channels == 4);
+  CHECK(overlay.data[0] == kShimmerColor.r);
+  CHECK(overlay.data[1] == kShimmerColor.g);
+  CHECK(overlay.data[2] == kShimmerColor.b);
+  CHECK(overlay.data[3] == 255);
+  CHECK(overlay.data[7] == 128);
+  CHECK(overlay.data[11] == 0);
+  CHECK_THROWS_WITH_AS(shimmerHeatmap({1.0f, 0.5f}, 3, 1), "shimmerHeatmap: 2 values for 3x1 pixels",
+                       std::invalid_argument);
 }
