@@ -63,4 +63,23 @@ Image8 readPixels(GLuint fbo, int width, int height) {
   return img;
 }
 
+Texture makeTexelGrid(GLenum internal, GLenum format, GLenum type, int width, int height, const std::string& label,
+                      const void* data) {
+  Texture t = makeTexture(GL_TEXTURE_2D, label);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), width, height, 0, format, type, data);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return t;
+}
+
+void bindTexelUnit(int unit, GLuint texture) {
+  glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glBindSampler(GLuint(unit), 0);
+}
+
 }  // namespace shadowlab::gl

@@ -20,6 +20,13 @@ enum class ColorData { Srgb, Linear };
 Texture uploadTexture(const Image8& image, const std::string& label, bool mipmaps = true,
                       ColorData color = ColorData::Srgb);
 
+// A 2D texture read texel by texel (texelFetch): nearest filtering, one level, `data` uploaded
+// rows of 4-byte alignment (nullptr: storage only). Lesson 07's hybrid grids, lesson 10's depth tiles.
+Texture makeTexelGrid(GLenum internal, GLenum format, GLenum type, int width, int height, const std::string& label,
+                      const void* data = nullptr);
+// Binds the 2D `texture` on `unit` with no sampler object: texelFetch reads the texture's own state.
+void bindTexelUnit(int unit, GLuint texture);
+
 // Reads the colour attachment 0 of `fbo` (0: the default framebuffer) into a top-row-first image.
 Image8 readPixels(GLuint fbo, int width, int height);
 

@@ -3,29 +3,10 @@
 #include <stdexcept>
 
 #include "gl/caps.hpp"
+#include "gl/texture.hpp"
 
 namespace shadowlab::tech {
 namespace {
-
-gl::Texture makeGrid(GLenum internal, GLenum format, GLenum type, int width, int height, const std::string& label,
-                     const void* data = nullptr) {
-  gl::Texture t = gl::makeTexture(GL_TEXTURE_2D, label);
-  glBindTexture(GL_TEXTURE_2D, t.id());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), width, height, 0, format, type, data);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  return t;
-}
-
-// Binds `texture` on `unit` with no sampler object (texelFetch reads the texture's own state).
-void bindUnit(int unit, GLuint texture) {
-  glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-  glBindTexture(GL_TEXTURE_2D, texture);
-  glBindSampler(GLuint(unit), 0);
-}
 
 // The words of a width x height unsigned-integer texture (GL_RED_INTEGER: R32UI, one a texel;
 // GL_RGBA_INTEGER: RGBA32UI, four). Without glGetTexImage (WebGL2) through a framebuffer, as a
@@ -73,7 +54,7 @@ void HybridBuilder::init() {
   vao_ = gl::makeVertexArray(label_ + ": passes");
   fbo_ = gl::makeFramebuffer(label_ + ": passes");
   const std::uint32_t zero[4] = {0, 0, 0, 0};
-  dummyUint_ = makeGrid(GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, 1, 1, label_ + ": no counts", zero);
+  dummyUint_ = gl::makeTexelGrid(GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, 1, 1, label_ + ": no counts", zero);
 }
 
 // ---- textures ---------------------------------------------------------------------------------------
@@ -96,7 +77,7 @@ void allocateRecords(HybridMapGpu& map, std::uint32_t records, const std::string
                              " rows, more than GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize));
   if (rows == map.recordRows && map.records) return;
   map.recordRows = rows;
-  map.records = makeGrid(GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, row, rows, label + ": records");
+  map.records = gl::makeTexelGrid(GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, row, rows, label + ": records");
 }
 
 }  // namespace
@@ -122,9 +103,9 @@ void HybridBuilder::allocate(HybridMapGpu& map, int size, int levels) {
       l.size = hybrid::halvedSize(map.pyramid.back().size);
       const std::string n = label_ + ": level " + std::to_string(map.pyramid.size());
       if (int(map.pyramid.size()) <= levels)
-        l.values = makeGrid(GL_R32F, GL_RED, GL_FLOAT, l.size, l.size, n + " merge grid");
-      l.counts = makeGrid(GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, l.size, l.size, n + " counts");
-      l.starts = makeGrid(GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, l.size, l.size, n + " record starts");
+        l.values = gl::makeTexelGrid(GL_R32F, GL_RED, GL_FLOAT, l.size, l.size, n + " merge grid");
+      l.counts = gl::makeTexelGrid(GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, l.size, l.size, n + " counts");
+      l.starts = gl::makeTexelGrid(GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, l.size, l.size, n + " record starts");
       map.workBytes += std::uint64_t(l.size) * std::uint64_t(l.size) * ((l.values ? 4 : 0) + 16 + 4);
       map.pyramid.push_back(std::move(l));
     }
@@ -132,7 +113,7 @@ void HybridBuilder::allocate(HybridMapGpu& map, int size, int levels) {
   const int rootSize = map.pyramid[std::size_t(levels)].size;
   if (rootSize != map.rootSize || !map.root) {
     map.rootSize = rootSize;
-    map.root = makeGrid(GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, rootSize, rootSize, label_ + ": root grid");
+    map.root = gl::makeTexelGrid(GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, rootSize, rootSize, label_ + ": root grid");
   }
 }
 
@@ -168,8 +149,8 @@ void HybridBuilder::sweep(const gl::ShadowMap& depth, const hybrid::MergeRule& r
     const HybridMapGpu::Level& child = map.pyramid[std::size_t(k) - 1];
     const HybridMapGpu::Level& l = map.pyramid[std::size_t(k)];
     attach({l.values.id(), l.counts.id()}, l.size, l.size);
-    bindUnit(0, k == 1 ? depth.texture.id() : child.values.id());
-    bindUnit(1, k == 1 ? dummyUint_.id() : child.counts.id());
+    gl::bindTexelUnit(0, k == 1 ? depth.texture.id() : child.values.id());
+    gl::bindTexelUnit(1, k == 1 ? dummyUint_.id() : child.counts.id());
     merge_.set("uLevel", k);
     merge_.set("uChildSize", child.size);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -184,7 +165,7 @@ void HybridBuilder::countAndStarts(HybridMapGpu& map) {
   count_.set("uChildCounts", 0);
   for (int k = map.levels + 1; k <= top; ++k) {
     attach({p[std::size_t(k)].counts.id()}, p[std::size_t(k)].size, p[std::size_t(k)].size);
-    bindUnit(0, p[std::size_t(k) - 1].counts.id());
+    gl::bindTexelUnit(0, p[std::size_t(k) - 1].counts.id());
     count_.set("uChildSize", p[std::size_t(k) - 1].size);
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
@@ -200,9 +181,9 @@ void HybridBuilder::countAndStarts(HybridMapGpu& map) {
     const HybridMapGpu::Level& l = p[std::size_t(k)];
     attach({l.starts.id()}, l.size, l.size);
     const bool owns = k + 1 <= map.levels;
-    bindUnit(0, parent.starts.id());
-    bindUnit(1, owns ? parent.values.id() : 0);
-    bindUnit(2, l.counts.id());
+    gl::bindTexelUnit(0, parent.starts.id());
+    gl::bindTexelUnit(1, owns ? parent.values.id() : 0);
+    gl::bindTexelUnit(2, l.counts.id());
     starts_.set("uParentOwns", owns);
     starts_.set("uSize", l.size);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -221,8 +202,8 @@ void HybridBuilder::writeRoot(const gl::ShadowMap& depth, HybridMapGpu& map) {
   rootPass_.set("uStarts", 1);
   rootPass_.set("uHasRecords", map.levels >= 1);
   const HybridMapGpu::Level& l = map.pyramid[std::size_t(map.levels)];
-  bindUnit(0, map.levels >= 1 ? l.values.id() : depth.texture.id());
-  bindUnit(1, map.levels >= 1 ? l.starts.id() : dummyUint_.id());
+  gl::bindTexelUnit(0, map.levels >= 1 ? l.values.id() : depth.texture.id());
+  gl::bindTexelUnit(1, map.levels >= 1 ? l.starts.id() : dummyUint_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -241,10 +222,10 @@ void HybridBuilder::writeRecords(const gl::ShadowMap& depth, HybridMapGpu& map) 
   for (int k = 1; k <= map.levels; ++k) {
     const HybridMapGpu::Level& l = map.pyramid[std::size_t(k)];
     const HybridMapGpu::Level& child = map.pyramid[std::size_t(k) - 1];
-    bindUnit(0, l.values.id());
-    bindUnit(1, l.starts.id());
-    bindUnit(2, k == 1 ? depth.texture.id() : child.values.id());
-    bindUnit(3, k == 1 ? dummyUint_.id() : child.starts.id());
+    gl::bindTexelUnit(0, l.values.id());
+    gl::bindTexelUnit(1, l.starts.id());
+    gl::bindTexelUnit(2, k == 1 ? depth.texture.id() : child.values.id());
+    gl::bindTexelUnit(3, k == 1 ? dummyUint_.id() : child.starts.id());
     recordsPass_.set("uLevel", k);
     recordsPass_.set("uSize", l.size);
     recordsPass_.set("uChildSize", child.size);
@@ -283,7 +264,7 @@ void HybridBuilder::build(const gl::ShadowMap& depth, const hybrid::MergeRule& r
     writeRoot(depth, map);
     writeRecords(depth, map);
   });
-  for (int u = 0; u < 4; ++u) bindUnit(u, 0);
+  for (int u = 0; u < 4; ++u) gl::bindTexelUnit(u, 0);
   glActiveTexture(GL_TEXTURE0);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
@@ -293,8 +274,8 @@ void HybridBuilder::upload(const hybrid::HybridMap& source, HybridMapGpu& map) {
   map.sourceSize = source.sourceSize;
   map.levels = source.levels;
   map.rootSize = source.rootSize;
-  map.root = makeGrid(GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, source.rootSize, source.rootSize,
-                      "hybrid map: root grid (uploaded)", source.root.data());
+  map.root = gl::makeTexelGrid(GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, source.rootSize, source.rootSize,
+                               "hybrid map: root grid (uploaded)", source.root.data());
   map.recordCount = std::uint32_t(source.records.size());
   allocateRecords(map, map.recordCount, "hybrid map (uploaded)");
   if (map.records) {

@@ -7,30 +7,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "algorithms/shadow_math.hpp"
+#include "gl/texture.hpp"
 #include "gl/timer.hpp"
 
 namespace shadowlab::tech {
-namespace {
-
-void bindUnit(int unit, GLuint texture) {
-  glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-  glBindTexture(GL_TEXTURE_2D, texture);
-  glBindSampler(GLuint(unit), 0);  // texelFetch reads the texture's own state
-}
-
-gl::Texture makeTexture2D(GLenum internal, GLenum format, GLenum type, int width, int height,
-                          const std::string& label) {
-  gl::Texture t = gl::makeTexture(GL_TEXTURE_2D, label);
-  glBindTexture(GL_TEXTURE_2D, t.id());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), width, height, 0, format, type, nullptr);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  return t;
-}
-
-}  // namespace
 
 void DepthTileReduction::init() {
   depth_.build();
@@ -50,7 +30,7 @@ void DepthTileReduction::resize(int width, int height) {
   width_ = width;
   height_ = height;
   depthTexture_ =
-      makeTexture2D(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, width, height, "sdsm: camera depth");
+      gl::makeTexelGrid(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, width, height, "sdsm: camera depth");
   glBindFramebuffer(GL_FRAMEBUFFER, depthFbo_.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depthTexture_.id(), 0);
   const GLenum none = GL_NONE;
@@ -61,7 +41,7 @@ void DepthTileReduction::resize(int width, int height) {
   int w = (width + kTile - 1) / kTile, h = (height + kTile - 1) / kTile, pixels = kTile;
   for (;;) {
     const std::string label = "sdsm: tiles of " + std::to_string(pixels) + " pixels";
-    levels_.push_back({makeTexture2D(GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, w, h, label), w, h, pixels});
+    levels_.push_back({gl::makeTexelGrid(GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, w, h, label), w, h, pixels});
     if (w <= kMaxTiles && h <= kMaxTiles) break;
     w = (w + 1) / 2, h = (h + 1) / 2, pixels *= 2;
   }
@@ -103,20 +83,20 @@ shadow::DepthTiles DepthTileReduction::run(const ShadowContext& c, const shadow:
       const gl::Program& p = k == 0 ? tiles_ : reduce_;
       p.use();
       if (k == 0) {
-        bindUnit(0, depthTexture_.id());
+        gl::bindTexelUnit(0, depthTexture_.id());
         p.set("uDepth", 0);
         p.set("uSize", glm::ivec2(width_, height_));
         p.set("uTile", kTile);
         p.set("uNear", viewer.nearZ);
         p.set("uFar", viewer.farZ);
       } else {
-        bindUnit(0, levels_[k - 1].texture.id());
+        gl::bindTexelUnit(0, levels_[k - 1].texture.id());
         p.set("uTiles", 0);
         p.set("uSize", glm::ivec2(levels_[k - 1].width, levels_[k - 1].height));
       }
       glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    bindUnit(0, 0);
+    gl::bindTexelUnit(0, 0);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
   }
