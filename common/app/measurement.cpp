@@ -259,7 +259,9 @@ void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& re
                   lastViewProj = lastFrame_.projection * lastFrame_.view;
   const bool moved = result_.hasTemporal && viewProj != lastViewProj;
   const std::optional<ImageF> again = moved ? techniqueFromLastCamera(redraw) : std::nullopt;
-  std::vector<std::uint8_t> flipped;  // the extra flips, pixel by pixel (not through reprojection)
+  // The extra flips pixel by pixel, for the shimmer overlay only (not through reprojection).
+  std::vector<std::uint8_t> flipped;
+  std::vector<std::uint8_t>* flippedAt = overlay_ == Overlay::Shimmer ? &flipped : nullptr;
   if (again) {
     const bool lightMoved = light.position != lastLightState_.position || light.direction != lastLightState_.direction;
     ImageF traced;  // the reference at the last frame's points under this frame's light, when it moved
@@ -268,7 +270,7 @@ void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& re
                             : truth_->hardVisibility(lastSurface_, light);
     result_.redrawn = true;
     result_.temporal = measure::compareFrames(lastTechnique_, *again, lastReference_,
-                                              lightMoved ? traced : lastReference_, 0.5f, &flipped);
+                                              lightMoved ? traced : lastReference_, 0.5f, flippedAt);
   } else if (moved) {
     result_.reprojected = true;
     const measure::ReprojectedTemporalErrors r =
@@ -277,9 +279,10 @@ void Measurement::compareWithLastFrame(const ImageF& technique, const ImageF& re
     result_.temporal = r.errors;
     result_.unmatched = r.unmatched;
   } else if (result_.hasTemporal) {
-    result_.temporal = measure::compareFrames(lastTechnique_, technique, lastReference_, reference, 0.5f, &flipped);
+    result_.temporal = measure::compareFrames(lastTechnique_, technique, lastReference_, reference, 0.5f, flippedAt);
   }
-  fadeShimmer(flipped, technique.data.size());
+  if (flippedAt) fadeShimmer(flipped, technique.data.size());
+  else shimmerHeat_.clear();
   // A mean over the last 30 frames in a row: one frame's flips come and go with the texel grid.
   if (!result_.hasTemporal) recent_.clear();
   else recent_.push_back(result_.soft ? result_.temporal.extraChange : result_.temporal.extraFlipPct);
